@@ -1,0 +1,42 @@
+#pragma once
+// Subcommand registration. Each subcommand lives in its own Cmd*.cpp and registers itself on
+// the root CLI11 app; the shared Context carries the global options and the loaded config.
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "AppConfig.hpp"
+
+namespace slamroute::cli {
+
+struct Context {
+  std::string config_file;             ///< --config FILE.yaml
+  std::optional<std::uint64_t> seed;   ///< --seed N (overrides the config's seed)
+  std::string log_level = "info";      ///< --log-level
+  AppConfig cfg;
+  /// Loads the config file (if any), applies --seed and --log-level. Call first in callbacks.
+  void load();
+};
+
+/// Thrown by commands that do not exist yet; main() prints it and exits with code 2.
+struct NotImplemented : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void registerNetworkInfo(CLI::App& app, Context& ctx);
+void registerConfig(CLI::App& app, Context& ctx);
+void registerSurvey(CLI::App& app, Context& ctx);
+void registerBuildGraph(CLI::App& app, Context& ctx);
+void registerPlan(CLI::App& app, Context& ctx);
+void registerDrive(CLI::App& app, Context& ctx);
+void registerEvaluate(CLI::App& app, Context& ctx);
+void registerCompare(CLI::App& app, Context& ctx);
+void registerRun(CLI::App& app, Context& ctx);
+
+/// The shipped default city (networks/default_city/default_city.net.xml).
+std::string defaultNetPath();
+
+}  // namespace slamroute::cli

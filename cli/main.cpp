@@ -1,0 +1,76 @@
+// slamroute: plans the drives of mapping vehicles through cities. See README.md.
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "Commands.hpp"
+#include "slamroute/core/ConfigIO.hpp"
+#include "slamroute/core/Log.hpp"
+
+namespace slamroute::cli {
+
+void Context::load() {
+  setLogLevel(parseLogLevel(log_level));
+  if (!config_file.empty()) {
+    if (!std::filesystem::exists(config_file))
+      throw std::runtime_error(config_file + ": config file not found");
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(config_file);
+    } catch (const YAML::Exception& e) {
+      throw std::runtime_error(config_file + ": not valid YAML (" + e.msg + ")");
+    }
+    config::loadYaml(root, cfg, config_file);
+  }
+  if (seed) cfg.seed = *seed;
+}
+
+std::string defaultNetPath() {
+  namespace fs = std::filesystem;
+  const fs::path rel = fs::path("networks") / "default_city" / "default_city.net.xml";
+  // Prefer a checkout-relative path, then the source tree the binary was built from.
+  for (const fs::path base : {fs::current_path(), fs::path(SLAMROUTE_SOURCE_DIR)}) {
+    if (fs::exists(base / rel)) return (base / rel).string();
+  }
+  return (fs::path(SLAMROUTE_SOURCE_DIR) / rel).string();
+}
+
+}  // namespace slamroute::cli
+
+int main(int argc, char** argv) {
+  using namespace slamroute;
+  CLI::App app{"slamroute: plan, drive and evaluate LiDAR mapping routes through cities"};
+  app.set_version_flag("--version", std::string("slamroute ") + SLAMROUTE_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();
+  cli::Context ctx;
+  app.add_option("--config", ctx.config_file, "YAML config file (see `slamroute config --dump`)");
+  app.add_option("--seed", ctx.seed, "random seed (same seed, same output)");
+  app.add_option("--log-level", ctx.log_level, "debug|info|warn|error|quiet")
+      ->check(CLI::IsMember({"debug", "info", "warn", "error", "quiet"}));
+
+  cli::registerNetworkInfo(app, ctx);
+  cli::registerConfig(app, ctx);
+  cli::registerSurvey(app, ctx);
+  cli::registerBuildGraph(app, ctx);
+  cli::registerPlan(app, ctx);
+  cli::registerDrive(app, ctx);
+  cli::registerEvaluate(app, ctx);
+  cli::registerCompare(app, ctx);
+  cli::registerRun(app, ctx);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const cli::NotImplemented& e) {
+    std::cerr << "slamroute: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "slamroute: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

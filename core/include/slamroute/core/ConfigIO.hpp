@@ -1,0 +1,125 @@
+#pragma once
+// YAML dump/load for plain config structs, without repeating field lists.
+//
+// A config struct opts in with a free function found by ADL, listing every field once:
+//
+//   template <class V> void visitFields(V& v, MyConfig& c) {
+//     v.field("inner_radius_m", c.inner_radius_m, "hollow cylinder inner radius [m]");
+//     v.section("lidar", c.lidar);   // nested struct with its own visitFields
+//   }
+//
+// dumpYaml() writes every field with its default and comment; loadYaml() overrides only the keys
+// present and rejects unknown keys (a typo in a config file is an error, not a silent default).
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace slamroute::config {
+
+class Dumper {
+ public:
+  explicit Dumper(std::ostringstream& os, int indent = 0) : os_(os), indent_(indent) {}
+
+  template <class T>
+  void field(const char* key, T& value, const char* comment) {
+    pad();
+    os_ << key << ": " << format(value);
+    if (comment && *comment) os_ << "  # " << comment;
+    os_ << "\n";
+  }
+  template <class S>
+  void section(const char* key, S& sub) {
+    pad();
+    os_ << key << ":\n";
+    Dumper inner(os_, indent_ + 2);
+    visitFields(inner, sub);
+  }
+
+ private:
+  void pad() { os_ << std::string(static_cast<std::size_t>(indent_), ' '); }
+  static std::string format(bool b) { return b ? "true" : "false"; }
+  static std::string format(const std::string& s) { return "\"" + s + "\""; }
+  template <class T>
+  static std::string format(const std::vector<T>& v) {
+    std::ostringstream o;
+    o << "[";
+    for (std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << format(v[i]);
+    o << "]";
+    return o.str();
+  }
+  template <class T>
+  static std::string format(const T& v) {
+    std::ostringstream o;
+    o.precision(10);
+    o << v;
+    return o.str();
+  }
+  std::ostringstream& os_;
+  int indent_;
+};
+
+class Loader {
+ public:
+  Loader(const YAML::Node& node, std::string where) : node_(node), where_(std::move(where)) {}
+
+  template <class T>
+  void field(const char* key, T& value, const char*) {
+    seen_.push_back(key);
+    const YAML::Node n = node_[key];
+    if (!n) return;
+    try {
+      value = n.as<T>();
+    } catch (const YAML::Exception&) {
+      throw std::invalid_argument(where_ + ": key '" + key + "' has a value of the wrong type");
+    }
+  }
+  template <class S>
+  void section(const char* key, S& sub) {
+    seen_.push_back(key);
+    const YAML::Node n = node_[key];
+    if (!n) return;
+    if (!n.IsMap()) throw std::invalid_argument(where_ + ": '" + key + "' must be a mapping");
+    Loader inner(n, where_ + ":" + key);
+    visitFields(inner, sub);
+    inner.checkUnknown();
+  }
+  void checkUnknown() const {
+    for (const auto& kv : node_) {
+      const auto k = kv.first.as<std::string>();
+      bool known = false;
+      for (const auto& s : seen_) known = known || s == k;
+      if (!known) throw std::invalid_argument(where_ + ": unknown key '" + k + "'");
+    }
+  }
+
+ private:
+  YAML::Node node_;
+  std::string where_;
+  std::vector<std::string> seen_;
+};
+
+/// Full YAML text of a config struct with its current values and comments.
+template <class C>
+std::string dumpYaml(C cfg) {
+  std::ostringstream os;
+  Dumper d(os);
+  visitFields(d, cfg);
+  return os.str();
+}
+
+/// Overrides the fields present in `node`. `where` names the source (file) for error messages.
+template <class C>
+void loadYaml(const YAML::Node& node, C& cfg, const std::string& where) {
+  if (!node || node.IsNull()) return;
+  if (!node.IsMap()) throw std::invalid_argument(where + ": expected a YAML mapping");
+  Loader l(node, where);
+  visitFields(l, cfg);
+  l.checkUnknown();
+}
+
+}  // namespace slamroute::config

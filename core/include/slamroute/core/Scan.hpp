@@ -1,0 +1,78 @@
+#pragma once
+// LiDAR scans and the scan-source interface the evaluator reads from. A drive either saves
+// scans as KITTI .bin files (KittiScanSource) or lets the simulator regenerate them on demand
+// (simulate::SimulatedScanSource); the evaluator sees only ScanSource.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace slamroute {
+
+/// Geometry of a spinning multi-beam LiDAR.
+struct LidarSpec {
+  int channels = 64;               ///< rings
+  double vfov_up_deg = 10.0;       ///< upper edge of the vertical field [deg]
+  double vfov_down_deg = -30.0;    ///< lower edge [deg]
+  int horizontal_samples = 1800;   ///< azimuth steps per revolution
+  double max_range_m = 100.0;
+  double min_range_m = 1.0;
+  double mount_height_m = 1.8;     ///< sensor above the road [m]
+};
+template <class V>
+void visitFields(V& v, LidarSpec& c) {
+  v.field("channels", c.channels, "rings");
+  v.field("vfov_up_deg", c.vfov_up_deg, "upper edge of vertical field [deg]");
+  v.field("vfov_down_deg", c.vfov_down_deg, "lower edge of vertical field [deg]");
+  v.field("horizontal_samples", c.horizontal_samples, "azimuth steps per revolution");
+  v.field("max_range_m", c.max_range_m, "max range [m]");
+  v.field("min_range_m", c.min_range_m, "min range [m]");
+  v.field("mount_height_m", c.mount_height_m, "sensor height above road [m]");
+}
+/// Named presets: "paper" (64 ch, +10/-30 deg, 100 m), "vlp16", "hdl32". Throws on unknown.
+LidarSpec lidarPreset(const std::string& name);
+
+struct ScanPoint {
+  float x = 0, y = 0, z = 0;  ///< sensor frame [m]
+  float intensity = 0;
+  int ring = -1;              ///< -1 when unknown (e.g. read from KITTI .bin)
+};
+struct Scan {
+  double t = 0.0;
+  std::vector<ScanPoint> points;
+};
+
+class ScanSource {
+ public:
+  virtual ~ScanSource() = default;
+  virtual std::size_t size() const = 0;
+  virtual double time(std::size_t i) const = 0;
+  /// Throws std::runtime_error naming the scan when it cannot be produced (missing file, …).
+  virtual Scan scan(std::size_t i) const = 0;
+  virtual LidarSpec spec() const = 0;
+};
+
+/// KITTI velodyne layout: DIR/NNNNNN.bin (float32 x,y,z,intensity) + DIR/times.txt.
+void writeKittiScan(const std::filesystem::path& path, const Scan& scan);
+Scan readKittiScan(const std::filesystem::path& path);
+
+class KittiScanSource : public ScanSource {
+ public:
+  /// `dir` holds NNNNNN.bin and times.txt. Ring indices are recovered from the elevation angle.
+  KittiScanSource(std::filesystem::path dir, LidarSpec spec);
+  std::size_t size() const override { return times_.size(); }
+  double time(std::size_t i) const override { return times_.at(i); }
+  Scan scan(std::size_t i) const override;
+  LidarSpec spec() const override { return spec_; }
+
+ private:
+  std::filesystem::path dir_;
+  LidarSpec spec_;
+  std::vector<double> times_;
+};
+
+/// Ring index of a point from its elevation angle for a sensor with evenly spaced beams.
+int ringFromElevation(const LidarSpec& spec, double x, double y, double z);
+
+}  // namespace slamroute

@@ -1,0 +1,167 @@
+// RoadGraph exports for people and GIS tools: GeoJSON, GraphML (Boost's writer) and a PNG map.
+// Boost.Graph's GraphML writer trips GCC 12's -Wmaybe-uninitialized inside Boost itself.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/graphml.hpp>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/RoadGraph.hpp"
+
+namespace slamroute {
+using nlohmann::json;
+
+void RoadGraph::writeGeoJson(const std::filesystem::path& path) const {
+  // Coordinates are the net's projected metres (x east, y north), not WGS84 degrees.
+  json fc = {{"type", "FeatureCollection"}, {"features", json::array()}};
+  for (const auto& n : nodes) {
+    fc["features"].push_back(
+        {{"type", "Feature"},
+         {"geometry", {{"type", "Point"}, {"coordinates", {n.pos.x(), n.pos.y(), n.pos.z()}}}},
+         {"properties", {{"kind", "node"}, {"id", n.id}, {"sumo_junction", n.sumo_junction}}}});
+  }
+  for (const auto& e : edges) {
+    json coords = json::array();
+    for (const auto& p : e.polyline) coords.push_back({p.x(), p.y(), p.z()});
+    if (coords.size() < 2) {
+      const auto& a = nodes[static_cast<std::size_t>(e.u)].pos;
+      const auto& b = nodes[static_cast<std::size_t>(e.v)].pos;
+      coords = json::array({{a.x(), a.y(), a.z()}, {b.x(), b.y(), b.z()}});
+    }
+    fc["features"].push_back({{"type", "Feature"},
+                              {"geometry", {{"type", "LineString"}, {"coordinates", coords}}},
+                              {"properties",
+                               {{"kind", "edge"},
+                                {"id", e.id},
+                                {"u", e.u},
+                                {"v", e.v},
+                                {"length", e.length_m},
+                                {"weight", e.weight},
+                                {"street", e.street},
+                                {"sumo_edges", e.sumo_edges}}}});
+  }
+  writeFileAtomic(path, fc.dump(1) + "\n");
+}
+
+void RoadGraph::writeGraphML(const std::filesystem::path& path) const {
+  struct V {
+    double x = 0, y = 0, z = 0;
+    std::string junction;
+  };
+  struct E {
+    int id = 0;
+    double length = 0, weight = 0;
+    int street = 0;
+    std::string sumo_edges;
+  };
+  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, V, E>;
+  G g(nodes.size());
+  for (const auto& n : nodes) g[static_cast<std::size_t>(n.id)] = {n.pos.x(), n.pos.y(), n.pos.z(), n.sumo_junction};
+  for (const auto& e : edges) {
+    std::string se;
+    for (const auto& s : e.sumo_edges) se += (se.empty() ? "" : " ") + s;
+    boost::add_edge(static_cast<std::size_t>(e.u), static_cast<std::size_t>(e.v),
+                    E{e.id, e.length_m, e.weight, e.street, se}, g);
+  }
+  boost::dynamic_properties dp;
+  dp.property("x", boost::get(&V::x, g));
+  dp.property("y", boost::get(&V::y, g));
+  dp.property("z", boost::get(&V::z, g));
+  dp.property("sumo_junction", boost::get(&V::junction, g));
+  dp.property("id", boost::get(&E::id, g));
+  dp.property("length", boost::get(&E::length, g));
+  dp.property("weight", boost::get(&E::weight, g));
+  dp.property("street", boost::get(&E::street, g));
+  dp.property("sumo_edges", boost::get(&E::sumo_edges, g));
+  std::ostringstream os;
+  boost::write_graphml(os, g, dp, true);
+  writeFileAtomic(path, os.str());
+}
+
+void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& attribute,
+                          const std::vector<double>& values, int width_px) const {
+  std::vector<double> val(edges.size(), 0.0);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (!values.empty()) {
+      val[i] = i < values.size() ? values[i] : std::numeric_limits<double>::quiet_NaN();
+    } else if (attribute == "length") {
+      val[i] = edges[i].length_m;
+    } else {
+      val[i] = edges[i].weight;
+    }
+  }
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+  auto grow = [&](const Point3& p) {
+    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+  };
+  for (const auto& n : nodes) grow(n.pos);
+  for (const auto& e : edges)
+    for (const auto& p : e.polyline) grow(p);
+  if (nodes.empty()) xmin = ymin = 0, xmax = ymax = 1;
+  const double margin = 40, bar = 70;
+  const double span = std::max({xmax - xmin, ymax - ymin, 1.0});
+  const double scale = (width_px - 2 * margin - bar) / span;
+  const int height = static_cast<int>((ymax - ymin) * scale + 2 * margin + 30);
+  cv::Mat img(std::max(height, 200), width_px, CV_8UC3, cv::Scalar(255, 255, 255));
+  auto px = [&](const Point3& p) {
+    return cv::Point(static_cast<int>(margin + (p.x() - xmin) * scale),
+                     static_cast<int>(img.rows - margin - (p.y() - ymin) * scale));
+  };
+  double vmin = 1e300, vmax = -1e300;
+  for (double v : val)
+    if (std::isfinite(v)) vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+  if (!(vmax > vmin)) vmax = vmin + 1.0;
+  cv::Mat lut(1, 256, CV_8UC1);
+  for (int i = 0; i < 256; ++i) lut.at<uchar>(i) = static_cast<uchar>(i);
+  cv::Mat colours;
+  cv::applyColorMap(lut, colours, cv::COLORMAP_VIRIDIS);
+  auto colour = [&](double v) {
+    if (!std::isfinite(v)) return cv::Scalar(180, 180, 180);
+    const int k = std::clamp(static_cast<int>(255.0 * (v - vmin) / (vmax - vmin)), 0, 255);
+    const cv::Vec3b c = colours.at<cv::Vec3b>(0, k);
+    return cv::Scalar(c[0], c[1], c[2]);
+  };
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto& e = edges[i];
+    std::vector<cv::Point> pts;
+    if (e.polyline.size() >= 2) {
+      for (const auto& p : e.polyline) pts.push_back(px(p));
+    } else {
+      pts = {px(nodes[static_cast<std::size_t>(e.u)].pos), px(nodes[static_cast<std::size_t>(e.v)].pos)};
+    }
+    cv::polylines(img, pts, false, colour(val[i]), 3, cv::LINE_AA);
+  }
+  for (const auto& n : nodes) cv::circle(img, px(n.pos), 4, cv::Scalar(40, 40, 40), -1, cv::LINE_AA);
+  // Colour bar with the value range.
+  const int bx = width_px - static_cast<int>(bar) + 10, by0 = static_cast<int>(margin), by1 = img.rows - static_cast<int>(margin);
+  for (int y = by0; y <= by1; ++y) {
+    const double v = vmax - (vmax - vmin) * (y - by0) / std::max(1, by1 - by0);
+    cv::line(img, {bx, y}, {bx + 15, y}, colour(v));
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", vmax);
+  cv::putText(img, buf, {bx - 5, by0 - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0));
+  std::snprintf(buf, sizeof buf, "%.3g", vmin);
+  cv::putText(img, buf, {bx - 5, by1 + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0));
+  cv::putText(img, attribute, {static_cast<int>(margin), 22}, cv::FONT_HERSHEY_SIMPLEX, 0.6,
+              cv::Scalar(0, 0, 0));
+  // Scale bar: 100 m.
+  const int sb = static_cast<int>(100.0 * scale);
+  cv::line(img, {static_cast<int>(margin), img.rows - 15}, {static_cast<int>(margin) + sb, img.rows - 15},
+           cv::Scalar(0, 0, 0), 2);
+  cv::putText(img, "100 m", {static_cast<int>(margin) + sb + 6, img.rows - 10}, cv::FONT_HERSHEY_SIMPLEX,
+              0.4, cv::Scalar(0, 0, 0));
+  std::vector<uchar> png;
+  if (!cv::imencode(".png", img, png)) throw std::runtime_error(path.string() + ": PNG encoding failed");
+  writeFileAtomic(path, std::string(png.begin(), png.end()));
+}
+
+}  // namespace slamroute

@@ -1,0 +1,203 @@
+// Reader for SUMO .net.xml(.gz) files (pugixml): junctions, edges, lanes, connections, location.
+#include "slamroute/core/SumoNet.hpp"
+
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute {
+namespace {
+
+std::vector<std::string> splitWords(const char* s) {
+  std::vector<std::string> out;
+  std::istringstream in(s ? s : "");
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+/// "x,y x,y,z …" (SUMO mixes 2D and 3D points); z defaults to 0.
+Polyline parseShape(const char* s, const std::string& where) {
+  Polyline pl;
+  for (const auto& tok : splitWords(s)) {
+    double v[3] = {0.0, 0.0, 0.0};
+    int n = 0;
+    std::size_t start = 0;
+    while (start <= tok.size() && n < 3) {
+      const std::size_t comma = tok.find(',', start);
+      const std::string part = tok.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      try {
+        std::size_t used = 0;
+        v[n++] = std::stod(part, &used);
+        if (used != part.size()) throw std::invalid_argument(part);
+      } catch (const std::exception&) {
+        throw std::invalid_argument(where + ": bad shape point '" + tok + "'");
+      }
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (n < 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+      throw std::invalid_argument(where + ": bad shape point '" + tok + "'");
+    pl.emplace_back(v[0], v[1], v[2]);
+  }
+  return pl;
+}
+
+}  // namespace
+
+bool passengerAllowed(const std::vector<std::string>& allow,
+                      const std::vector<std::string>& disallow) {
+  auto has = [](const std::vector<std::string>& v, const char* c) {
+    return std::find(v.begin(), v.end(), c) != v.end();
+  };
+  // SUMO semantics: `allow` (if given) lists the only classes permitted; else `disallow` lists
+  // the excluded ones; "all" stands for every class. Unknown (newer) classes are simply ignored.
+  if (!allow.empty()) return has(allow, "passenger") || has(allow, "all");
+  if (!disallow.empty()) return !(has(disallow, "passenger") || has(disallow, "all"));
+  return true;
+}
+
+bool SumoLane::allowsPassenger() const { return passengerAllowed(allow, disallow); }
+
+bool SumoEdge::allowsPassenger() const {
+  return std::any_of(lanes.begin(), lanes.end(), [](const SumoLane& l) { return l.allowsPassenger(); });
+}
+
+double SumoEdge::length() const {
+  if (lanes.empty()) return polylineLength(shape);
+  double s = 0.0;
+  for (const auto& l : lanes) s += l.length_m;
+  return s / static_cast<double>(lanes.size());
+}
+
+double SumoEdge::speed() const {
+  double s = 0.0;
+  for (const auto& l : lanes) s = std::max(s, l.speed_mps);
+  return s;
+}
+
+const SumoEdge* SumoNet::findEdge(const std::string& id) const {
+  auto it = edge_index.find(id);
+  return it == edge_index.end() ? nullptr : &edges[it->second];
+}
+
+const SumoJunction* SumoNet::findJunction(const std::string& id) const {
+  auto it = junction_index.find(id);
+  return it == junction_index.end() ? nullptr : &junctions[it->second];
+}
+
+bool SumoNet::turnAllowed(const std::string& from, const std::string& to) const {
+  auto it = turns_.find(from);
+  if (it == turns_.end()) return false;
+  return std::find(it->second.begin(), it->second.end(), to) != it->second.end();
+}
+
+struct SumoNetBuilder {
+  static void addTurn(SumoNet& net, const std::string& from, const std::string& to) {
+    auto& v = net.turns_[from];
+    if (std::find(v.begin(), v.end(), to) == v.end()) v.push_back(to);
+  }
+};
+
+SumoNet SumoNet::read(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::string data = readMaybeGzip(path);
+  pugi::xml_document doc;
+  const pugi::xml_parse_result res = doc.load_buffer(data.data(), data.size());
+  if (!res)
+    throw std::invalid_argument(name + ": not valid XML (" + res.description() + " at byte " +
+                                std::to_string(res.offset) + ")");
+  const pugi::xml_node root = doc.child("net");
+  if (!root) throw std::invalid_argument(name + ": not a SUMO network (no <net> root element)");
+
+  SumoNet net;
+  net.source = path;
+  if (auto loc = root.child("location")) {
+    const auto off = splitWords(loc.attribute("netOffset").as_string());
+    if (!off.empty()) {
+      const auto pl = parseShape(loc.attribute("netOffset").as_string(), name + " <location>");
+      if (!pl.empty()) net.location.net_offset = pl.front().head<2>();
+    }
+    net.location.conv_boundary = loc.attribute("convBoundary").as_string();
+    net.location.orig_boundary = loc.attribute("origBoundary").as_string();
+    net.location.proj_parameter = loc.attribute("projParameter").as_string();
+  }
+
+  for (auto e : root.children("edge")) {
+    SumoEdge edge;
+    edge.id = e.attribute("id").as_string();
+    edge.function = e.attribute("function").as_string();
+    if (edge.isInternal() || (!edge.id.empty() && edge.id[0] == ':')) continue;
+    const std::string where = name + ": edge '" + edge.id + "'";
+    edge.from = e.attribute("from").as_string();
+    edge.to = e.attribute("to").as_string();
+    edge.type = e.attribute("type").as_string();
+    edge.priority = e.attribute("priority").as_int(-1);
+    for (auto l : e.children("lane")) {
+      SumoLane lane;
+      lane.id = l.attribute("id").as_string();
+      lane.index = l.attribute("index").as_int();
+      lane.length_m = l.attribute("length").as_double();
+      lane.speed_mps = l.attribute("speed").as_double();
+      lane.width_m = l.attribute("width").as_double(3.2);
+      lane.allow = splitWords(l.attribute("allow").as_string());
+      lane.disallow = splitWords(l.attribute("disallow").as_string());
+      lane.shape = parseShape(l.attribute("shape").as_string(), where);
+      edge.lanes.push_back(std::move(lane));
+    }
+    if (edge.lanes.empty()) throw std::invalid_argument(where + " has no lanes");
+    if (e.attribute("shape")) {
+      edge.shape = parseShape(e.attribute("shape").as_string(), where);
+    } else {
+      edge.shape = edge.lanes[edge.lanes.size() / 2].shape;
+    }
+    net.edge_index[edge.id] = net.edges.size();
+    net.edges.push_back(std::move(edge));
+  }
+
+  for (auto j : root.children("junction")) {
+    SumoJunction jn;
+    jn.type = j.attribute("type").as_string();
+    if (jn.type == "internal") continue;
+    jn.id = j.attribute("id").as_string();
+    jn.pos = Point3(j.attribute("x").as_double(), j.attribute("y").as_double(),
+                    j.attribute("z").as_double(0.0));
+    jn.inc_lanes = splitWords(j.attribute("incLanes").as_string());
+    net.junction_index[jn.id] = net.junctions.size();
+    net.junctions.push_back(std::move(jn));
+  }
+
+  for (auto c : root.children("connection")) {
+    SumoConnection con;
+    con.from = c.attribute("from").as_string();
+    con.to = c.attribute("to").as_string();
+    const SumoEdge* fe = net.findEdge(con.from);
+    const SumoEdge* te = net.findEdge(con.to);
+    if (!fe || !te) continue;  // internal-lane connections
+    con.from_lane = c.attribute("fromLane").as_int();
+    con.to_lane = c.attribute("toLane").as_int();
+    con.dir = c.attribute("dir").as_string();
+    con.via = c.attribute("via").as_string();
+    bool passenger = false;
+    for (const auto& l : fe->lanes)
+      if (l.index == con.from_lane) passenger = l.allowsPassenger();
+    for (const auto& l : te->lanes)
+      if (l.index == con.to_lane) passenger = passenger && l.allowsPassenger();
+    if (c.attribute("allow") || c.attribute("disallow"))
+      passenger = passenger && passengerAllowed(splitWords(c.attribute("allow").as_string()),
+                                                splitWords(c.attribute("disallow").as_string()));
+    if (passenger) SumoNetBuilder::addTurn(net, con.from, con.to);
+    net.connections.push_back(std::move(con));
+  }
+
+  if (net.edges.empty() && net.junctions.empty())
+    throw std::invalid_argument(name + ": SUMO network has no edges and no junctions");
+  return net;
+}
+
+}  // namespace slamroute

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package slamroute needs to build, test and run. Idempotent: quiet and
+# fast when everything is already there. Needs root (or sudo) and apt.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config ccache git python3
+  sumo sumo-tools                       # SUMO binaries, libsumo (libsumocpp.so + headers), tools
+  libeigen3-dev libboost-graph-dev libpcl-dev libopencv-dev libembree-dev liblemon-dev
+  libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
+  libtbb-dev libpugixml-dev zlib1g-dev mpi-default-dev
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+  echo "setup: done"
+fi
+
+# libsumo looks for its data files under SUMO_HOME; the Debian package puts them here.
+if [ -z "${SUMO_HOME:-}" ] && [ -d /usr/share/sumo ]; then
+  export SUMO_HOME=/usr/share/sumo
+fi
