@@ -151,11 +151,10 @@ SumoNet SumoNet::read(const std::filesystem::path& path) {
       edge.lanes.push_back(std::move(lane));
     }
     if (edge.lanes.empty()) throw std::invalid_argument(where + " has no lanes");
-    if (e.attribute("shape")) {
-      edge.shape = parseShape(e.attribute("shape").as_string(), where);
-    } else {
-      edge.shape = edge.lanes[edge.lanes.size() / 2].shape;
-    }
+    // Always the centre lane's shape (where cars drive): netconvert writes an edge's own shape
+    // attribute only for custom-shaped edges, and there it is the road's centreline, shared by
+    // both directions.
+    edge.shape = edge.lanes[edge.lanes.size() / 2].shape;
     net.edge_index[edge.id] = net.edges.size();
     net.edges.push_back(std::move(edge));
   }

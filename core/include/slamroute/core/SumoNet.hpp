@@ -36,7 +36,7 @@ struct SumoEdge {
   std::string type;
   int priority = -1;
   std::vector<SumoLane> lanes;
-  Polyline shape;  ///< the edge's own shape attribute, else the centre lane's shape
+  Polyline shape;  ///< the centre lane's shape (travel direction)
   bool isInternal() const { return !function.empty() && function != "normal"; }
   bool allowsPassenger() const;  ///< any lane allows passenger cars
   double length() const;         ///< mean lane length [m]

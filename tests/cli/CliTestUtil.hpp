@@ -1,0 +1,44 @@
+#pragma once
+// Runs the slamroute binary in a shell and captures its output and exit code.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace slamroute::test {
+
+struct CliResult {
+  int code = -1;
+  std::string out;  ///< stdout and stderr interleaved
+};
+
+inline CliResult runCli(const std::string& args) {
+  const std::string cmd = std::string(SLAMROUTE_BINARY) + " " + args + " 2>&1";
+  CliResult r;
+  FILE* p = ::popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+inline std::filesystem::path cliTempDir(const std::string& name) {
+  const auto dir = std::filesystem::path(SLAMROUTE_TEST_TMP) / ("cli_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline int countLines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace slamroute::test

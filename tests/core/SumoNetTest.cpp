@@ -1,0 +1,139 @@
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cstring>
+
+#include "TestUtil.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/DriveGraph.hpp"
+#include "slamroute/core/SumoNet.hpp"
+
+namespace slamroute {
+namespace {
+
+// A tiny net written by hand: junctions A-B-C in a line, two-way A-B, one-way B->C, a bus-only
+// edge C->A, mixed 2D/3D shapes, an unknown newer vehicle class and projection "!".
+const char* kTinyNet = R"(<?xml version="1.0"?>
+<net version="1.9">
+  <location netOffset="0.00,0.00" convBoundary="0,0,200,0" origBoundary="0,0,200,0" projParameter="!"/>
+  <edge id=":B_0" function="internal"><lane id=":B_0_0" index="0" speed="10" length="5" shape="99,0 101,0"/></edge>
+  <edge id="AB" from="A" to="B" priority="1">
+    <lane id="AB_0" index="0" speed="13.89" length="100" shape="0,-1.6,0 50,-1.6 100,-1.6,2.5"/>
+  </edge>
+  <edge id="BA" from="B" to="A" priority="1">
+    <lane id="BA_0" index="0" speed="13.89" length="100" shape="100,1.6 0,1.6"/>
+  </edge>
+  <edge id="BC" from="B" to="C" priority="1">
+    <lane id="BC_0" index="0" speed="13.89" length="100" disallow="pedestrian cable_car" shape="100,0 200,0"/>
+  </edge>
+  <edge id="CA" from="C" to="A" priority="1">
+    <lane id="CA_0" index="0" speed="13.89" length="200" allow="bus cable_car" shape="200,5 0,5"/>
+  </edge>
+  <junction id="A" type="priority" x="0" y="0" incLanes="BA_0 CA_0" intLanes="" shape=""/>
+  <junction id="B" type="priority" x="100" y="0" z="2.5" incLanes="AB_0" intLanes=":B_0_0" shape=""/>
+  <junction id="C" type="dead_end" x="200" y="0" incLanes="BC_0" intLanes="" shape=""/>
+  <junction id=":B_0_0" type="internal" x="100" y="0" incLanes="" intLanes=""/>
+  <connection from="AB" to="BC" fromLane="0" toLane="0" via=":B_0_0" dir="s" state="M"/>
+  <connection from="AB" to="BA" fromLane="0" toLane="0" dir="t" state="M"/>
+  <connection from=":B_0" to="BC" fromLane="0" toLane="0" dir="s" state="M"/>
+</net>
+)";
+
+TEST(SumoNet, ReadsJunctionsEdgesShapesAndTurns) {
+  const auto dir = test::tempDir("sumonet_tiny");
+  test::writeText(dir / "tiny.net.xml", kTinyNet);
+  const SumoNet net = SumoNet::read(dir / "tiny.net.xml");
+  EXPECT_EQ(net.junctions.size(), 3u);  // the internal junction is skipped
+  EXPECT_EQ(net.edges.size(), 4u);      // the internal edge is skipped
+  EXPECT_EQ(net.location.proj_parameter, "!");
+  const SumoEdge* ab = net.findEdge("AB");
+  ASSERT_NE(ab, nullptr);
+  ASSERT_EQ(ab->lanes[0].shape.size(), 3u);
+  EXPECT_DOUBLE_EQ(ab->lanes[0].shape[2].z(), 2.5);  // 3D point
+  EXPECT_DOUBLE_EQ(ab->lanes[0].shape[1].z(), 0.0);  // 2D point in the same shape
+  EXPECT_DOUBLE_EQ(net.findJunction("B")->pos.z(), 2.5);
+  EXPECT_TRUE(net.findEdge("BC")->allowsPassenger());   // disallow list without passenger
+  EXPECT_FALSE(net.findEdge("CA")->allowsPassenger());  // bus only (+ an unknown class)
+  EXPECT_TRUE(net.turnAllowed("AB", "BC"));
+  EXPECT_TRUE(net.turnAllowed("AB", "BA"));
+  EXPECT_FALSE(net.turnAllowed("BA", "AB"));
+}
+
+TEST(SumoNet, DriveGraphAndStrongComponent) {
+  const auto dir = test::tempDir("sumonet_tiny_dg");
+  test::writeText(dir / "tiny.net.xml", kTinyNet);
+  const SumoNet net = SumoNet::read(dir / "tiny.net.xml");
+  const NetworkInfo info = networkInfo(net);
+  EXPECT_EQ(info.junctions, 3u);
+  EXPECT_EQ(info.passenger_edges, 3u);  // AB, BA, BC
+  EXPECT_EQ(info.lscc_junctions, 2u);   // A <-> B; C is a one-way dead end
+  EXPECT_EQ(info.lscc_edges, 2u);
+  EXPECT_NEAR(info.total_length_m, 300.0, 1e-9);
+}
+
+TEST(SumoNet, ReadsGzip) {
+  const auto dir = test::tempDir("sumonet_gz");
+  const auto gz = dir / "tiny.net.xml.gz";
+  gzFile f = gzopen(gz.c_str(), "wb");
+  gzwrite(f, kTinyNet, static_cast<unsigned>(std::strlen(kTinyNet)));
+  gzclose(f);
+  EXPECT_EQ(SumoNet::read(gz).edges.size(), 4u);
+  // Truncated gzip: a clear error naming the file.
+  const std::string raw = readFile(gz);
+  test::writeText(dir / "cut.net.xml.gz", raw.substr(0, raw.size() / 2));
+  try {
+    SumoNet::read(dir / "cut.net.xml.gz");
+    FAIL() << "truncated gzip accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("cut.net.xml.gz"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("gzip"), std::string::npos) << e.what();
+  }
+}
+
+void expectError(const std::filesystem::path& p, const std::string& fragment) {
+  try {
+    const SumoNet net = SumoNet::read(p);
+    networkInfo(net);
+    FAIL() << p << " accepted";
+  } catch (const std::exception& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(p.filename().string()), std::string::npos) << msg;
+    EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "error must be one line: " << msg;
+  }
+}
+
+TEST(SumoNet, BadInputsGiveOneLineErrors) {
+  const auto dir = test::tempDir("sumonet_bad");
+  expectError(dir / "missing.net.xml", "not found");
+  test::writeText(dir / "text.net.xml", "this is not xml <<<");
+  expectError(dir / "text.net.xml", "not valid XML");
+  test::writeText(dir / "other.net.xml", "<?xml version=\"1.0\"?><routes><vehicle id=\"a\"/></routes>");
+  expectError(dir / "other.net.xml", "not a SUMO network");
+  test::writeText(dir / "walk.net.xml",
+                  "<net><edge id=\"w\" from=\"a\" to=\"b\"><lane id=\"w_0\" index=\"0\" speed=\"2\" "
+                  "length=\"10\" allow=\"pedestrian\" shape=\"0,0 10,0\"/></edge>"
+                  "<junction id=\"a\" type=\"dead_end\" x=\"0\" y=\"0\"/>"
+                  "<junction id=\"b\" type=\"dead_end\" x=\"10\" y=\"0\"/></net>");
+  expectError(dir / "walk.net.xml", "no edge open to passenger cars");
+  test::writeText(dir / "shape.net.xml",
+                  "<net><edge id=\"e\" from=\"a\" to=\"b\"><lane id=\"e_0\" index=\"0\" speed=\"2\" "
+                  "length=\"10\" shape=\"0,0 ten,0\"/></edge></net>");
+  expectError(dir / "shape.net.xml", "bad shape point");
+}
+
+TEST(SumoNet, SharedNetworksHaveTheKnownCounts) {
+  const NetworkInfo bo = networkInfo(SumoNet::read(test::sharedNet("bologna")));
+  EXPECT_EQ(bo.junctions, 112u);
+  EXPECT_EQ(bo.passenger_edges, 164u);
+  EXPECT_EQ(bo.lscc_junctions, 80u);
+  EXPECT_EQ(bo.lscc_edges, 133u);
+  const NetworkInfo in = networkInfo(SumoNet::read(test::sharedNet("ingolstadt")));
+  EXPECT_EQ(in.junctions, 381u);
+  EXPECT_EQ(in.passenger_edges, 853u);
+  EXPECT_EQ(in.lscc_junctions, 377u);
+  EXPECT_EQ(in.lscc_edges, 847u);
+}
+
+}  // namespace
+}  // namespace slamroute
