@@ -1,14 +1,51 @@
-// `slamroute evaluate`. Not built yet: the owning module's issue replaces this file.
+// `slamroute evaluate --drive DIR --out DIR2`: paper §3.3 — LeGO-LOAM-style SLAM on a drive's
+// scans, then ATE/RPE/per-edge/map metrics against the drive's ground truth.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
 #include "Commands.hpp"
+#include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/Evaluate.hpp"
+#include "slamroute/simulate/SimulatedScanSource.hpp"
 
 namespace slamroute::cli {
 
 void registerEvaluate(CLI::App& app, Context& ctx) {
+  struct Opts {
+    std::string drive, out;
+    double segment_m = -1.0;
+    bool no_loop_closure = false;
+  };
+  auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("evaluate", "Run LiDAR SLAM on a drive and measure the error (paper 3.3)");
-  sub->allow_extras();
-  sub->callback([&ctx] {
+  sub->add_option("--drive", o->drive, "drive folder written by `slamroute drive`")->required();
+  sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")->required();
+  sub->add_option("--segment", o->segment_m, "extra RPE segment length [m] (default: config)");
+  sub->add_flag("--no-loop-closure", o->no_loop_closure, "disable loop closure");
+  sub->callback([&ctx, o] {
     ctx.load();
-    throw NotImplemented("evaluate: not implemented yet");
+    namespace fs = std::filesystem;
+    evaluate::Config cfg = ctx.cfg.evaluate;
+    if (o->segment_m > 0) cfg.rpe_segment_m = o->segment_m;
+    if (o->no_loop_closure) cfg.loop_closure = false;
+    const fs::path drive(o->drive);
+    if (!fs::is_directory(drive)) throw std::invalid_argument(o->drive + ": not a drive folder");
+    if (!fs::exists(drive / drive_files::kGroundTruth))
+      throw std::invalid_argument(o->drive + ": no " + drive_files::kGroundTruth + " (not a drive folder?)");
+    const LidarSpec spec = evaluate::readSensorSpec(drive / drive_files::kSensor);
+    std::unique_ptr<ScanSource> source;
+    if (fs::is_directory(drive / drive_files::kScanDir)) {
+      source = std::make_unique<KittiScanSource>(drive / drive_files::kScanDir, spec);
+    } else {
+      logInfo("evaluate: no scans/ in the drive, regenerating scans with the simulator");
+      source = std::make_unique<simulate::SimulatedScanSource>(drive);
+    }
+    logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + o->drive);
+    const nlohmann::json j = evaluate::evaluateDrive(drive, *source, o->out, cfg);
+    std::cout << "ATE rmse " << j["ate_rmse_m"] << " m, RPE " << j["rpe_trans_pct"] << " %, loop closures "
+              << j["loop_closures"] << ", route " << j["route_length_m"] << " m -> " << o->out << "\n";
   });
 }
 

@@ -1,14 +1,88 @@
-// `slamroute plan`. Not built yet: the owning module's issue replaces this file.
+// `slamroute plan (--graph GRAPH.json | --net NET) --planner P --out ROUTE.json`: paper §3.2 and
+// the baseline planners. With --net (or when the graph's edges carry SUMO edges) it also writes
+// ROUTE.rou.xml next to ROUTE.json.
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
 #include "Commands.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/core/RoadGraph.hpp"
+#include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/rl/Planners.hpp"
 
 namespace slamroute::cli {
 
+namespace {
+
+/// --start accepts a node id or (for nets) a SUMO junction id.
+int resolveStart(const RoadGraph& g, const std::string& s) {
+  for (const auto& n : g.nodes)
+    if (!n.sumo_junction.empty() && n.sumo_junction == s) return n.id;
+  try {
+    std::size_t used = 0;
+    const int id = std::stoi(s, &used);
+    if (used == s.size()) return id;
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("--start: '" + s + "' is neither a node id nor a junction id");
+}
+
+}  // namespace
+
 void registerPlan(CLI::App& app, Context& ctx) {
+  struct Opts {
+    std::string graph, net, planner, out, start, reward, goal;
+  };
+  auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("plan", "Plan a mapping route on a graph or net (paper 3.2)");
-  sub->allow_extras();
-  sub->callback([&ctx] {
+  auto* g_opt = sub->add_option("--graph", o->graph, "road graph (graph.json)");
+  auto* n_opt = sub->add_option("--net", o->net, "SUMO network (.net.xml[.gz]); also writes .rou.xml");
+  g_opt->excludes(n_opt);
+  sub->add_option("--planner", o->planner, "qlearning | random | tsp | postman (default: rl.planner)");
+  sub->add_option("--out", o->out, "output route (route.json)")->required();
+  sub->add_option("--start", o->start, "start node id (or SUMO junction id)");
+  sub->add_option("--reward", o->reward, "qlearning reward: full | accuracy (default: rl.reward)");
+  sub->add_option("--goal", o->goal, "coverage goal: nodes | edges (default: rl.goal)");
+  sub->callback([&ctx, o] {
     ctx.load();
-    throw NotImplemented("plan: not implemented yet");
+    if (o->graph.empty() && o->net.empty())
+      throw std::invalid_argument("plan: give --graph GRAPH.json or --net NET");
+    rl::Config cfg = ctx.cfg.rl;
+    if (!o->planner.empty()) cfg.planner = o->planner;
+    if (!o->reward.empty()) cfg.reward = o->reward;
+    if (!o->goal.empty()) cfg.goal = o->goal;
+    RoadGraph g;
+    std::string where;
+    if (!o->net.empty()) {
+      g = RoadGraph::fromSumoNet(SumoNet::read(o->net), /*lscc_only=*/false);
+      where = o->net;
+    } else {
+      g = RoadGraph::readJson(o->graph);
+      where = o->graph;
+    }
+    if (!o->start.empty()) cfg.start_node = resolveStart(g, o->start);
+    const Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
+    const std::filesystem::path out(o->out);
+    r.writeJson(out);
+    std::filesystem::path rou;
+    if (!r.sumo_edges.empty()) {
+      rou = out;
+      rou.replace_extension(".rou.xml");
+      r.writeRouXml(rou);
+    } else if (!o->net.empty()) {
+      throw std::runtime_error("plan: the route has no SUMO edges; cannot write the .rou.xml");
+    }
+    const auto extra = nlohmann::json::parse(r.extra_json);
+    std::cout << std::fixed << std::setprecision(1) << r.planner << ": " << r.edges.size()
+              << " edges, " << r.length_m / 1000.0 << " km, node coverage " << r.node_coverage_pct
+              << " %, edge coverage " << r.edge_coverage_pct << " %, " << r.loop_closures
+              << " loop closures, illegal turns " << extra.value("illegal_turns", 0) << ", "
+              << std::setprecision(2) << r.planning_seconds << " s"
+              << (r.completed_by_shortest_paths ? " (completed by shortest paths)" : "") << "\n"
+              << "wrote " << out.string() << (rou.empty() ? "" : " and " + rou.string()) << "\n";
   });
 }
 

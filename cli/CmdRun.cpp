@@ -1,14 +1,156 @@
-// `slamroute run`. Not built yet: the owning module's issue replaces this file.
+// `slamroute run`: the whole pipeline on a net (default: the shipped city) and report.md.
+// survey -> build-graph (validated against the net) -> plan with each planner -> make each route
+// legal for SUMO -> drive each -> evaluate each -> report. SUMO steps run as child processes
+// (libsumo: one simulation per process), two at a time on this 2-core target.
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
 #include "Commands.hpp"
+#include "Report.hpp"
+#include "Subprocess.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/SumoRoute.hpp"
 
 namespace slamroute::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+/// Global options passed on to every child so they see the same config and seed.
+std::vector<std::string> globalArgs(const Context& ctx) {
+  std::vector<std::string> a{"--seed", std::to_string(ctx.cfg.seed), "--log-level",
+                             ctx.log_level == "debug" ? "debug" : "info"};
+  if (!ctx.config_file.empty()) {
+    a.push_back("--config");
+    a.push_back(fs::absolute(ctx.config_file).string());
+  }
+  return a;
+}
+
+Step step(const Context& ctx, const std::string& label, std::vector<std::string> args,
+          const fs::path& log) {
+  std::vector<std::string> full = globalArgs(ctx);
+  full.insert(full.end(), args.begin(), args.end());
+  return {label, full, log};
+}
+
+}  // namespace
 
 void registerRun(CLI::App& app, Context& ctx) {
-  auto* sub = app.add_subcommand("run", "The whole pipeline on a net (default: the shipped city)");
-  sub->allow_extras();
-  sub->callback([&ctx] {
+  struct Opts {
+    std::string net, out, planners = "qlearning,random,postman";
+    int jobs = 2;
+    bool save_scans = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* sub = app.add_subcommand("run", "The whole pipeline on a net (default: the shipped city) + report.md");
+  sub->add_option("--net", o->net, "SUMO network (default: networks/default_city/default_city.net.xml)");
+  sub->add_option("--out", o->out, "output folder (default: out/<net name>)");
+  sub->add_option("--planners", o->planners, "comma-separated planners to compare")->capture_default_str();
+  sub->add_option("--jobs", o->jobs, "steps run at once (each SUMO step is its own process)")
+      ->capture_default_str()->check(CLI::Range(1, 64));
+  sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
+  sub->callback([&ctx, o] {
     ctx.load();
-    throw NotImplemented("run: not implemented yet");
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    const std::string net_path = o->net.empty() ? defaultNetPath() : o->net;
+    const SumoNet net = SumoNet::read(net_path);  // fail early, one line, on a bad net
+    std::string stem = fs::path(net_path).filename().string();
+    stem = stem.substr(0, stem.find('.'));
+    const fs::path out = fs::absolute(o->out.empty() ? fs::path("out") / stem : fs::path(o->out));
+    const auto planners = splitList(o->planners);
+    if (planners.empty()) throw std::invalid_argument("run: --planners is empty");
+    fs::create_directories(out / "logs");
+    const std::string net_abs = fs::absolute(net_path).string();
+    std::vector<std::pair<std::string, double>> times;
+    auto record = [&](const std::vector<Step>& steps, const std::vector<StepResult>& res) {
+      for (std::size_t i = 0; i < steps.size(); ++i) times.emplace_back(steps[i].label, res[i].seconds);
+    };
+
+    logInfo("[1/6] survey of " + net_abs);
+    std::vector<Step> s1{step(ctx, "survey", {"survey", "--net", net_abs, "--out", (out / "survey").string()},
+                              out / "logs" / "survey.log")};
+    record(s1, runSteps(s1, 1));
+
+    logInfo("[2/6] road graph from the survey");
+    const fs::path graph = out / "graph" / "graph.json";
+    std::vector<Step> s2{step(ctx, "build-graph",
+                              {"build-graph", "--survey", (out / "survey").string(), "--net", net_abs,
+                               "--out", graph.string()},
+                              out / "logs" / "build-graph.log")};
+    record(s2, runSteps(s2, 1));
+
+    logInfo("[3/6] planning: " + o->planners);
+    std::vector<Step> s3;
+    for (const auto& p : planners)
+      s3.push_back(step(ctx, "plan " + p,
+                        {"plan", "--graph", graph.string(), "--planner", p, "--out",
+                         (out / "routes" / (p + ".json")).string()},
+                        out / "logs" / ("plan-" + p + ".log")));
+    record(s3, runSteps(s3, o->jobs));
+    // Routes planned on the trace-built graph know its turns only loosely: join consecutive SUMO
+    // edges with the shortest legal detour where SUMO forbids the turn, so SUMO can drive them.
+    for (const auto& p : planners) {
+      const fs::path rp = out / "routes" / (p + ".json");
+      Route r = Route::readJson(rp);
+      if (r.sumo_edges.empty())
+        throw std::runtime_error(rp.string() + ": route has no SUMO edges (graph not matched to the net?)");
+      const LegalRoute legal = legalizeSumoRoute(net, r.sumo_edges);
+      if (legal.repaired_transitions > 0) {
+        std::ostringstream note;
+        note << (r.notes.empty() ? "" : r.notes + "; ") << "SUMO route: " << legal.repaired_transitions
+             << " transitions joined by legal detours (+" << static_cast<int>(legal.added_length_m) << " m)";
+        r.notes = note.str();
+        r.sumo_edges = legal.edges;
+        r.writeJson(rp);
+      }
+      r.writeRouXml(out / "routes" / (p + ".rou.xml"));
+    }
+
+    logInfo("[4/6] driving each route in SUMO with traffic");
+    std::vector<Step> s4;
+    for (const auto& p : planners) {
+      std::vector<std::string> a{"drive", "--net", net_abs, "--route", (out / "routes" / (p + ".json")).string(),
+                                 "--out", (out / "drives" / p).string()};
+      if (o->save_scans) a.push_back("--save-scans");
+      s4.push_back(step(ctx, "drive " + p, a, out / "logs" / ("drive-" + p + ".log")));
+    }
+    record(s4, runSteps(s4, o->jobs));
+
+    logInfo("[5/6] LiDAR SLAM on each drive");
+    std::vector<Step> s5;
+    for (const auto& p : planners)
+      s5.push_back(step(ctx, "evaluate " + p,
+                        {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
+                        out / "logs" / ("evaluate-" + p + ".log")));
+    record(s5, runSteps(s5, o->jobs));
+
+    logInfo("[6/6] report");
+    ReportInputs in;
+    in.net = net_abs;
+    in.out = out;
+    in.survey_dir = out / "survey";
+    in.graph_json = graph;
+    in.planners = planners;
+    in.command = "slamroute run --net " + net_abs + " --out " + out.string() + " --planners " + o->planners +
+                 " --seed " + std::to_string(ctx.cfg.seed);
+    in.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    in.step_seconds = times;
+    writeReport(in);
+    logInfo("report: " + (out / "report.md").string());
   });
 }
 

@@ -1,43 +1,10 @@
 // slamroute: plans the drives of mapping vehicles through cities. See README.md.
 #include <CLI/CLI.hpp>
 
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "Commands.hpp"
-#include "slamroute/core/ConfigIO.hpp"
 #include "slamroute/core/Log.hpp"
-
-namespace slamroute::cli {
-
-void Context::load() {
-  setLogLevel(parseLogLevel(log_level));
-  if (!config_file.empty()) {
-    if (!std::filesystem::exists(config_file))
-      throw std::runtime_error(config_file + ": config file not found");
-    YAML::Node root;
-    try {
-      root = YAML::LoadFile(config_file);
-    } catch (const YAML::Exception& e) {
-      throw std::runtime_error(config_file + ": not valid YAML (" + e.msg + ")");
-    }
-    config::loadYaml(root, cfg, config_file);
-  }
-  if (seed) cfg.seed = *seed;
-}
-
-std::string defaultNetPath() {
-  namespace fs = std::filesystem;
-  const fs::path rel = fs::path("networks") / "default_city" / "default_city.net.xml";
-  // Prefer a checkout-relative path, then the source tree the binary was built from.
-  for (const fs::path base : {fs::current_path(), fs::path(SLAMROUTE_SOURCE_DIR)}) {
-    if (fs::exists(base / rel)) return (base / rel).string();
-  }
-  return (fs::path(SLAMROUTE_SOURCE_DIR) / rel).string();
-}
-
-}  // namespace slamroute::cli
 
 int main(int argc, char** argv) {
   using namespace slamroute;

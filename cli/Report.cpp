@@ -1,0 +1,232 @@
+#include "Report.hpp"
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/RoadGraph.hpp"
+#include "slamroute/core/Route.hpp"
+
+namespace slamroute::cli {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::vector<double> ranks(const std::vector<double>& x) {
+  std::vector<std::size_t> idx(x.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+  std::vector<double> r(x.size());
+  for (std::size_t i = 0; i < idx.size();) {
+    std::size_t j = i;
+    while (j + 1 < idx.size() && x[idx[j + 1]] == x[idx[i]]) ++j;
+    const double mean_rank = 0.5 * static_cast<double>(i + j) + 1.0;
+    for (std::size_t k = i; k <= j; ++k) r[idx[k]] = mean_rank;
+    i = j + 1;
+  }
+  return r;
+}
+
+json readJsonOr(const fs::path& p, json fallback = json::object()) {
+  if (!fs::exists(p)) return fallback;
+  try {
+    return json::parse(readFile(p));
+  } catch (const std::exception&) {
+    return fallback;
+  }
+}
+
+std::string fmt(double v, int prec = 2) {
+  if (!std::isfinite(v)) return "–";
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(prec) << v;
+  return o.str();
+}
+
+std::string num(const json& j, const char* key, int prec = 2, double scale = 1.0) {
+  if (!j.contains(key) || !j[key].is_number()) return "–";
+  return fmt(j[key].get<double>() * scale, prec);
+}
+
+/// Per SUMO edge: length-weighted mean drift [%] over every planner's drive.
+std::map<std::string, std::pair<double, double>> pooledDrift(const fs::path& out,
+                                                             const std::vector<std::string>& planners) {
+  std::map<std::string, std::pair<double, double>> acc;  // edge -> (sum drift*len, sum len)
+  for (const auto& p : planners) {
+    std::ifstream in(out / "eval" / p / "per_edge.csv");
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      std::vector<std::string> c;
+      std::stringstream ss(line);
+      std::string f;
+      while (std::getline(ss, f, ',')) c.push_back(f);
+      if (c.size() < 7) continue;
+      try {
+        const double len = std::stod(c[3]), drift = std::stod(c[6]);
+        if (!std::isfinite(drift) || len < 20.0) continue;  // short pieces: drift is noise
+        acc[c[0]].first += drift * len;
+        acc[c[0]].second += len;
+      } catch (const std::exception&) {
+      }
+    }
+  }
+  return acc;
+}
+
+void scatterPng(const fs::path& path, const std::vector<double>& x, const std::vector<double>& y,
+                const std::string& xlabel, const std::string& ylabel) {
+  const int W = 640, H = 480, m = 60;
+  cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
+  if (x.empty()) return;
+  const auto [xmin, xmax] = std::minmax_element(x.begin(), x.end());
+  const auto [ymin, ymax] = std::minmax_element(y.begin(), y.end());
+  const double x0 = *xmin, x1 = std::max(*xmax, *xmin + 1e-9), y0 = 0.0, y1 = std::max(*ymax, 1e-9);
+  (void)ymin;
+  cv::rectangle(img, {m, m / 2}, {W - m / 2, H - m}, cv::Scalar(0, 0, 0));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const int px = m + static_cast<int>((x[i] - x0) / (x1 - x0) * (W - 1.5 * m));
+    const int py = H - m - static_cast<int>((y[i] - y0) / (y1 - y0) * (H - 1.5 * m));
+    cv::circle(img, {px, py}, 4, cv::Scalar(180, 90, 30), -1, cv::LINE_AA);
+  }
+  auto text = [&](const std::string& s, cv::Point p) {
+    cv::putText(img, s, p, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  };
+  text(xlabel, {W / 2 - 80, H - 15});
+  text(ylabel, {5, 20});
+  text(fmt(x0, 2), {m - 10, H - m + 18});
+  text(fmt(x1, 2), {W - m, H - m + 18});
+  text(fmt(y1, 1), {5, m / 2 + 5});
+  text("0", {m - 15, H - m});
+  std::vector<uchar> buf;
+  cv::imencode(".png", img, buf);
+  writeFileAtomic(path, std::string(buf.begin(), buf.end()));
+}
+
+}  // namespace
+
+double spearman(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::size_t n = a.size();
+  if (n < 3 || b.size() != n) return std::numeric_limits<double>::quiet_NaN();
+  const auto ra = ranks(a), rb = ranks(b);
+  const double ma = std::accumulate(ra.begin(), ra.end(), 0.0) / n;
+  const double mb = std::accumulate(rb.begin(), rb.end(), 0.0) / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sab += (ra[i] - ma) * (rb[i] - mb);
+    saa += (ra[i] - ma) * (ra[i] - ma);
+    sbb += (rb[i] - mb) * (rb[i] - mb);
+  }
+  if (saa <= 0 || sbb <= 0) return std::numeric_limits<double>::quiet_NaN();
+  return sab / std::sqrt(saa * sbb);
+}
+
+void writeReport(const ReportInputs& in) {
+  const fs::path rep = in.out / "report";
+  fs::create_directories(rep);
+  const RoadGraph graph = RoadGraph::readJson(in.graph_json);
+  const json gmeta = json::parse(graph.metadata_json.empty() ? "{}" : graph.metadata_json);
+  const json survey = readJsonOr(in.survey_dir / "survey.json");
+
+  std::ostringstream md;
+  md << "# slamroute report\n\n"
+     << "Net: `" << in.net << "`  \nCommand: `" << in.command << "`  \nTotal time: "
+     << fmt(in.total_seconds, 1) << " s\n\n";
+
+  // --- survey and graph
+  md << "## Road graph (paper §3.1)\n\n";
+  if (!survey.empty())
+    md << "Survey: " << survey.dump() << "\n\n";
+  md << "Extracted graph: " << graph.nodes.size() << " nodes, " << graph.edges.size()
+     << " directed edges, " << fmt(graph.totalLength() / 1000.0, 2) << " km.\n\n";
+  if (!gmeta.empty()) {
+    md << "| validation against the SUMO net | value |\n|---|---|\n";
+    for (const auto& [k, v] : gmeta.items())
+      if (v.is_number() || v.is_string() || v.is_boolean()) md << "| " << k << " | " << v.dump() << " |\n";
+    md << "\n";
+  }
+  graph.renderPng(rep / "graph_weights.png", "edge weight (depth-normal spread score)");
+  md << "![graph with edge weights](report/graph_weights.png)\n\n";
+
+  // --- routes and SLAM results
+  md << "## Routes and SLAM results (paper §3.2, §3.3)\n\n"
+     << "| planner | route length [km] | edge coverage [%] | node coverage [%] | predicted loop "
+        "closures | predicted final log-det cov | planning [s] | ATE RMSE [m] | ATE mean [m] | RPE "
+        "[%] | loop closures found | map error mean / p95 [m] |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& p : in.planners) {
+    const json r = readJsonOr(in.out / "routes" / (p + ".json"));
+    const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
+    std::string map_err = "–";
+    if (m.contains("map_error_mean_m"))
+      map_err = num(m, "map_error_mean_m", 3) + " / " + num(m, "map_error_p95_m", 3);
+    md << "| " << p << " | " << num(r, "length_m", 2, 1e-3) << " | " << num(r, "edge_coverage_pct", 1)
+       << " | " << num(r, "node_coverage_pct", 1) << " | " << num(r, "loop_closures", 0) << " | "
+       << num(r, "final_logdet_cov", 2) << " | " << num(r, "planning_seconds", 3) << " | "
+       << num(m, "ate_rmse_m", 3) << " | " << num(m, "ate_mean_m", 3) << " | "
+       << num(m, "rpe_trans_pct", 2) << " | " << num(m, "loop_closures", 0) << " | " << map_err
+       << " |\n";
+  }
+  md << "\n";
+  for (const auto& p : in.planners) {
+    md << "### " << p << "\n\n";
+    const fs::path rj = in.out / "routes" / (p + ".json");
+    if (fs::exists(rj)) {
+      const Route route = Route::readJson(rj);
+      std::vector<double> times(graph.edges.size(), std::numeric_limits<double>::quiet_NaN());
+      for (int e : route.edges)
+        if (e >= 0 && static_cast<std::size_t>(e) < times.size())
+          times[static_cast<std::size_t>(e)] = std::isfinite(times[static_cast<std::size_t>(e)])
+                                                   ? times[static_cast<std::size_t>(e)] + 1
+                                                   : 1;
+      graph.renderPng(rep / ("route_" + p + ".png"), p + ": times each edge is driven (grey: never)", times);
+      md << "![" << p << " route](report/route_" << p << ".png)\n\n";
+      if (!route.notes.empty()) md << "Planner notes: " << route.notes << "\n\n";
+    }
+    const fs::path ev = in.out / "eval" / p;
+    if (fs::exists(ev))
+      for (const auto& f : fs::directory_iterator(ev))
+        if (f.path().extension() == ".png")
+          md << "![" << p << " " << f.path().stem().string() << "](eval/" << p << "/"
+             << f.path().filename().string() << ")\n\n";
+  }
+
+  // --- the paper's premise: does the depth-image weight predict LiDAR drift?
+  md << "## Does the edge weight predict LiDAR drift?\n\n";
+  const auto drift = pooledDrift(in.out, in.planners);
+  std::vector<double> w, d;
+  for (const auto& e : graph.edges)
+    for (const auto& se : e.sumo_edges) {
+      auto it = drift.find(se);
+      if (it == drift.end() || it->second.second <= 0) continue;
+      w.push_back(e.weight);
+      d.push_back(it->second.first / it->second.second);
+    }
+  const double rho = spearman(w, d);
+  md << "Spearman rank correlation between an edge's depth-image weight and the measured "
+        "translational drift on it (pooled over all drives, pieces >= 20 m): **rho = "
+     << fmt(rho, 3) << "** over n = " << w.size()
+     << " SUMO edges. The paper's premise predicts rho < 0 (a higher weight, i.e. more varied "
+        "surface normals, should mean less drift).\n\n";
+  if (!w.empty()) {
+    scatterPng(rep / "weight_vs_drift.png", w, d, "edge weight", "drift [%]");
+    md << "![weight vs drift](report/weight_vs_drift.png)\n\n";
+  }
+
+  md << "## Step times\n\n| step | seconds |\n|---|---|\n";
+  for (const auto& [name, s] : in.step_seconds) md << "| " << name << " | " << fmt(s, 1) << " |\n";
+  writeFileAtomic(in.out / "report.md", md.str());
+}
+
+}  // namespace slamroute::cli

@@ -1,0 +1,101 @@
+#include "Subprocess.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "slamroute/core/Log.hpp"
+
+extern char** environ;
+
+namespace slamroute::cli {
+namespace {
+
+std::string lastLine(const std::filesystem::path& log) {
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    // Progress lines use '\r'; keep the text after the last one.
+    const auto r = line.find_last_of('\r');
+    if (r != std::string::npos) line = line.substr(r + 1);
+    if (line.find_first_not_of(" \t") != std::string::npos) last = line;
+  }
+  return last;
+}
+
+pid_t spawnStep(const Step& s) {
+  std::filesystem::create_directories(s.log.parent_path());
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, s.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  const std::string exe = selfExe();
+  std::vector<std::string> argv_s{exe};
+  argv_s.insert(argv_s.end(), s.args.begin(), s.args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) throw std::runtime_error("cannot start '" + s.label + "': " + std::to_string(rc));
+  return pid;
+}
+
+}  // namespace
+
+std::string selfExe() {
+  char buf[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+  if (n <= 0) throw std::runtime_error("cannot find the slamroute binary (/proc/self/exe)");
+  buf[n] = '\0';
+  return buf;
+}
+
+std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<StepResult> results(steps.size());
+  std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
+  std::size_t next = 0;
+  std::string failure;
+  while (next < steps.size() || !running.empty()) {
+    while (failure.empty() && next < steps.size() && static_cast<int>(running.size()) < std::max(1, jobs)) {
+      logInfo("  started  " + steps[next].label);
+      running[spawnStep(steps[next])] = {next, Clock::now()};
+      ++next;
+    }
+    if (running.empty()) break;
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, 0);
+    if (pid < 0) throw std::runtime_error("waiting for pipeline steps failed");
+    auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const auto [idx, start] = it->second;
+    running.erase(it);
+    StepResult& r = results[idx];
+    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " (%.1f s)", r.seconds);
+    if (r.exit_code == 0) {
+      logInfo("  finished " + steps[idx].label + buf);
+    } else if (failure.empty()) {
+      failure = steps[idx].label + " failed: " + lastLine(steps[idx].log) + " (log: " +
+                steps[idx].log.string() + ")";
+    }
+    if (!failure.empty()) next = steps.size();  // start nothing new; wait for the rest
+  }
+  if (!failure.empty()) throw std::runtime_error(failure);
+  return results;
+}
+
+}  // namespace slamroute::cli
