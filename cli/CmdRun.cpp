@@ -7,12 +7,11 @@
 #include <sstream>
 
 #include "Commands.hpp"
+#include "Pipeline.hpp"
 #include "Report.hpp"
 #include "Subprocess.hpp"
 #include "slamroute/core/Log.hpp"
-#include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoNet.hpp"
-#include "slamroute/core/SumoRoute.hpp"
 
 namespace slamroute::cli {
 namespace fs = std::filesystem;
@@ -26,24 +25,6 @@ std::vector<std::string> splitList(const std::string& s) {
   while (std::getline(ss, item, ','))
     if (!item.empty()) out.push_back(item);
   return out;
-}
-
-/// Global options passed on to every child so they see the same config and seed.
-std::vector<std::string> globalArgs(const Context& ctx) {
-  std::vector<std::string> a{"--seed", std::to_string(ctx.cfg.seed), "--log-level",
-                             ctx.log_level == "debug" ? "debug" : "info"};
-  if (!ctx.config_file.empty()) {
-    a.push_back("--config");
-    a.push_back(fs::absolute(ctx.config_file).string());
-  }
-  return a;
-}
-
-Step step(const Context& ctx, const std::string& label, std::vector<std::string> args,
-          const fs::path& log) {
-  std::vector<std::string> full = globalArgs(ctx);
-  full.insert(full.end(), args.begin(), args.end());
-  return {label, full, log};
 }
 
 }  // namespace
@@ -81,13 +62,13 @@ void registerRun(CLI::App& app, Context& ctx) {
     };
 
     logInfo("[1/6] survey of " + net_abs);
-    std::vector<Step> s1{step(ctx, "survey", {"survey", "--net", net_abs, "--out", (out / "survey").string()},
+    std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_abs, "--out", (out / "survey").string()},
                               out / "logs" / "survey.log")};
     record(s1, runSteps(s1, 1));
 
     logInfo("[2/6] road graph from the survey");
     const fs::path graph = out / "graph" / "graph.json";
-    std::vector<Step> s2{step(ctx, "build-graph",
+    std::vector<Step> s2{childStep(ctx, "build-graph",
                               {"build-graph", "--survey", (out / "survey").string(), "--net", net_abs,
                                "--out", graph.string()},
                               out / "logs" / "build-graph.log")};
@@ -96,29 +77,12 @@ void registerRun(CLI::App& app, Context& ctx) {
     logInfo("[3/6] planning: " + o->planners);
     std::vector<Step> s3;
     for (const auto& p : planners)
-      s3.push_back(step(ctx, "plan " + p,
+      s3.push_back(childStep(ctx, "plan " + p,
                         {"plan", "--graph", graph.string(), "--planner", p, "--out",
                          (out / "routes" / (p + ".json")).string()},
                         out / "logs" / ("plan-" + p + ".log")));
     record(s3, runSteps(s3, o->jobs));
-    // Routes planned on the trace-built graph know its turns only loosely: join consecutive SUMO
-    // edges with the shortest legal detour where SUMO forbids the turn, so SUMO can drive them.
-    for (const auto& p : planners) {
-      const fs::path rp = out / "routes" / (p + ".json");
-      Route r = Route::readJson(rp);
-      if (r.sumo_edges.empty())
-        throw std::runtime_error(rp.string() + ": route has no SUMO edges (graph not matched to the net?)");
-      const LegalRoute legal = legalizeSumoRoute(net, r.sumo_edges);
-      if (legal.repaired_transitions > 0) {
-        std::ostringstream note;
-        note << (r.notes.empty() ? "" : r.notes + "; ") << "SUMO route: " << legal.repaired_transitions
-             << " transitions joined by legal detours (+" << static_cast<int>(legal.added_length_m) << " m)";
-        r.notes = note.str();
-        r.sumo_edges = legal.edges;
-        r.writeJson(rp);
-      }
-      r.writeRouXml(out / "routes" / (p + ".rou.xml"));
-    }
+    for (const auto& p : planners) makeRouteDrivable(net, out / "routes" / (p + ".json"));
 
     logInfo("[4/6] driving each route in SUMO with traffic");
     std::vector<Step> s4;
@@ -126,14 +90,14 @@ void registerRun(CLI::App& app, Context& ctx) {
       std::vector<std::string> a{"drive", "--net", net_abs, "--route", (out / "routes" / (p + ".json")).string(),
                                  "--out", (out / "drives" / p).string()};
       if (o->save_scans) a.push_back("--save-scans");
-      s4.push_back(step(ctx, "drive " + p, a, out / "logs" / ("drive-" + p + ".log")));
+      s4.push_back(childStep(ctx, "drive " + p, a, out / "logs" / ("drive-" + p + ".log")));
     }
     record(s4, runSteps(s4, o->jobs));
 
     logInfo("[5/6] LiDAR SLAM on each drive");
     std::vector<Step> s5;
     for (const auto& p : planners)
-      s5.push_back(step(ctx, "evaluate " + p,
+      s5.push_back(childStep(ctx, "evaluate " + p,
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));
     record(s5, runSteps(s5, o->jobs));

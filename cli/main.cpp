@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   cli::registerEvaluate(app, ctx);
   cli::registerCompare(app, ctx);
   cli::registerRun(app, ctx);
+  cli::registerExperiment(app, ctx);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,204 @@
+// `slamroute experiment paper`: the paper's §4 tables, reproduced over several seeds.
+//   Table 1: ATE of the Q-learning route vs a random route.
+//   Table 2: full reward vs accuracy-only reward (ATE and coverage).
+//   Table 3: planning time vs number of nodes for qlearning, tsp and postman.
+// Tables 1-2 run the real pipeline (one survey + graph, then per seed: plan, drive with traffic
+// seeded by that seed, LiDAR SLAM); Table 3 plans on synthetic city graphs in-process.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "Commands.hpp"
+#include "Pipeline.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/SyntheticCity.hpp"
+#include "slamroute/rl/Planners.hpp"
+
+namespace slamroute::cli {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Variant {
+  std::string name, planner, reward;
+};
+const std::vector<Variant> kVariants = {
+    {"qlearning", "qlearning", "full"}, {"random", "random", "full"}, {"qlearning_accuracy", "qlearning", "accuracy"}};
+
+struct Stat {
+  std::vector<double> v;
+  std::string str(int prec) const {
+    if (v.empty()) return "–";
+    const double m = std::accumulate(v.begin(), v.end(), 0.0) / v.size();
+    double s = 0;
+    for (double x : v) s += (x - m) * (x - m);
+    s = v.size() > 1 ? std::sqrt(s / (v.size() - 1)) : 0.0;
+    std::ostringstream o;
+    o << std::fixed << std::setprecision(prec) << m << " ± " << s;
+    return o.str();
+  }
+};
+
+json readJsonFile(const fs::path& p) {
+  try {
+    return json::parse(readFile(p));
+  } catch (const std::exception&) {
+    return json::object();
+  }
+}
+
+std::string table3(const std::vector<int>& sizes, std::uint64_t seed, const rl::Config& base) {
+  std::ostringstream md;
+  md << "| planner | nodes | edges | planning time [s] | route length [km] | node coverage [%] | note |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (int n : sizes) {
+    SyntheticCityConfig sc;
+    sc.nodes = n;
+    const RoadGraph g = syntheticCity(sc, seed);
+    for (const char* p : {"qlearning", "tsp", "postman"}) {
+      rl::Config cfg = base;
+      cfg.planner = p;
+      logInfo("  table 3: " + std::string(p) + " on " + std::to_string(n) + " nodes");
+      try {
+        const Route r = rl::plan(g, cfg, seed, "synthetic city " + std::to_string(n));
+        md << "| " << p << " | " << n << " | " << g.edges.size() << " | " << std::fixed << std::setprecision(3)
+           << r.planning_seconds << " | " << std::setprecision(2) << r.length_m / 1000.0 << " | "
+           << std::setprecision(1) << r.node_coverage_pct << " | "
+           << (r.heuristic ? "heuristic" : "exact/optimal") << " |\n";
+      } catch (const std::exception& e) {
+        md << "| " << p << " | " << n << " | " << g.edges.size() << " | – | – | – | " << e.what() << " |\n";
+      }
+    }
+  }
+  return md.str();
+}
+
+}  // namespace
+
+void registerExperiment(CLI::App& app, Context& ctx) {
+  struct Opts {
+    std::string which, net, out = "out/experiment_paper";
+    int seeds = 5, jobs = 2;
+    std::vector<int> sizes{50, 100, 500, 2000};
+    bool table3_only = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* sub = app.add_subcommand("experiment", "Reproduce the paper's tables (§4) over several seeds");
+  sub->add_option("which", o->which, "experiment name: paper")->required()->check(CLI::IsMember({"paper"}));
+  sub->add_option("--net", o->net, "SUMO network (default: the shipped city)");
+  sub->add_option("--out", o->out, "output folder")->capture_default_str();
+  sub->add_option("--seeds", o->seeds, "seeds per comparison (1..N)")->capture_default_str()->check(CLI::Range(1, 100));
+  sub->add_option("--jobs", o->jobs, "steps run at once")->capture_default_str()->check(CLI::Range(1, 64));
+  sub->add_option("--sizes", o->sizes, "graph sizes for Table 3")->capture_default_str();
+  sub->add_flag("--table3-only", o->table3_only, "only the planning-time table (no SUMO, no SLAM)");
+  sub->callback([&ctx, o] {
+    ctx.load();
+    const auto t0 = std::chrono::steady_clock::now();
+    const fs::path out = fs::absolute(o->out);
+    fs::create_directories(out / "logs");
+    std::ostringstream md;
+    md << "# The paper's tables, reproduced\n\nCommand: `slamroute --seed " << ctx.cfg.seed
+       << " experiment paper --out " << o->out << " --seeds " << o->seeds
+       << (o->table3_only ? " --table3-only" : "") << "`\n\n";
+
+    if (!o->table3_only) {
+      const std::string net_path = fs::absolute(o->net.empty() ? defaultNetPath() : o->net).string();
+      const SumoNet net = SumoNet::read(net_path);
+      md << "Net: `" << net_path << "`\n\n";
+      logInfo("[1/4] survey and road graph");
+      std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_path, "--out", (out / "survey").string()},
+                                     out / "logs" / "survey.log")};
+      runSteps(s1, 1);
+      const fs::path graph = out / "graph" / "graph.json";
+      std::vector<Step> s2{childStep(ctx, "build-graph",
+                                     {"build-graph", "--survey", (out / "survey").string(), "--net", net_path,
+                                      "--out", graph.string()},
+                                     out / "logs" / "build-graph.log")};
+      runSteps(s2, 1);
+
+      logInfo("[2/4] planning " + std::to_string(o->seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
+      std::vector<Step> plans, drives, evals;
+      for (int s = 1; s <= o->seeds; ++s)
+        for (const auto& v : kVariants) {
+          const std::string id = v.name + "_s" + std::to_string(s);
+          plans.push_back(childStep(ctx, "plan " + id,
+                                    {"plan", "--graph", graph.string(), "--planner", v.planner, "--reward", v.reward,
+                                     "--out", (out / "routes" / (id + ".json")).string()},
+                                    out / "logs" / ("plan-" + id + ".log"), s));
+          drives.push_back(childStep(ctx, "drive " + id,
+                                     {"drive", "--net", net_path, "--route", (out / "routes" / (id + ".json")).string(),
+                                      "--out", (out / "drives" / id).string()},
+                                     out / "logs" / ("drive-" + id + ".log"), s));
+          evals.push_back(childStep(ctx, "evaluate " + id,
+                                    {"evaluate", "--drive", (out / "drives" / id).string(), "--out",
+                                     (out / "eval" / id).string()},
+                                    out / "logs" / ("evaluate-" + id + ".log"), s));
+        }
+      runSteps(plans, o->jobs);
+      for (int s = 1; s <= o->seeds; ++s)
+        for (const auto& v : kVariants) makeRouteDrivable(net, out / "routes" / (v.name + "_s" + std::to_string(s) + ".json"));
+      logInfo("[3/4] driving and LiDAR SLAM");
+      runSteps(drives, o->jobs);
+      runSteps(evals, o->jobs);
+
+      std::map<std::string, std::map<std::string, Stat>> st;
+      for (int s = 1; s <= o->seeds; ++s)
+        for (const auto& v : kVariants) {
+          const std::string id = v.name + "_s" + std::to_string(s);
+          const json r = readJsonFile(out / "routes" / (id + ".json"));
+          const json m = readJsonFile(out / "eval" / id / "metrics.json");
+          auto add = [&](const json& j, const char* k, const std::string& key) {
+            if (j.contains(k) && j[k].is_number()) st[v.name][key].v.push_back(j[k].get<double>());
+          };
+          add(m, "ate_rmse_m", "ate_rmse");
+          add(m, "ate_mean_m", "ate_mean");
+          add(m, "rpe_trans_pct", "rpe");
+          add(m, "loop_closures", "lc");
+          add(r, "length_m", "len");
+          add(r, "edge_coverage_pct", "cov");
+          add(r, "node_coverage_pct", "ncov");
+        }
+      auto row = [&](const std::string& v) {
+        auto& x = st[v];
+        std::ostringstream o2;
+        o2 << "| " << v << " | " << x["ate_mean"].str(3) << " | " << x["ate_rmse"].str(3) << " | " << x["rpe"].str(2)
+           << " | " << x["lc"].str(1) << " | " << Stat{[&] {
+                auto l = x["len"].v;
+                for (auto& e : l) e /= 1000.0;
+                return l;
+              }()}.str(2)
+           << " | " << x["cov"].str(1) << " | " << x["ncov"].str(1) << " |\n";
+        return o2.str();
+      };
+      const std::string head =
+          "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | street coverage [%] | node coverage [%] |\n"
+          "|---|---|---|---|---|---|---|---|\n";
+      md << "## Table 1: Q-learning vs random route (mean ± std over " << o->seeds << " seeds)\n\n"
+         << "Paper: proposed 0.4006 m vs random 0.5745 m average trajectory error (−30 %).\n\n"
+         << head << row("qlearning") << row("random") << "\n";
+      md << "## Table 2: full reward vs accuracy-only reward\n\n"
+         << "Paper: accuracy-only had the lower error (0.1645 m vs 0.4006 m) but covered about half the area.\n\n"
+         << head << row("qlearning") << row("qlearning_accuracy") << "\n";
+    }
+
+    logInfo("[4/4] planning time vs graph size");
+    md << "## Table 3: planning time vs number of nodes (synthetic city graphs, seed " << ctx.cfg.seed << ")\n\n"
+       << "Paper (Q-learning / TSP): 50 nodes 19.28 s / 3.28 s, 100 nodes 31.25 s / 15.58 s, 500 nodes "
+          "163.61 s / > 4000 s.\n\n"
+       << table3(o->sizes, ctx.cfg.seed, ctx.cfg.rl);
+    md << "\nTotal time: " << std::fixed << std::setprecision(0)
+       << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+    writeFileAtomic(out / "paper_tables.md", md.str());
+    logInfo("tables: " + (out / "paper_tables.md").string());
+  });
+}
+
+}  // namespace slamroute::cli

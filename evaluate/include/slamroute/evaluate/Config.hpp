@@ -1,0 +1,147 @@
+#pragma once
+// Parameters of the evaluate module (paper §3.3: LeGO-LOAM odometry + mapping + loop closure and
+// the trajectory / map metrics). Defaults follow LeGO-LOAM (Shan & Englot 2018) where the paper
+// is silent. YAML section "evaluate:".
+#include <string>
+#include <vector>
+
+namespace slamroute::evaluate {
+
+struct Config {
+  // --- range image (LeGO-LOAM "imageProjection") ---
+  bool use_ring_field = true;        ///< use ScanPoint.ring when >= 0, else ring from elevation
+  bool ring_zero_is_bottom = true;   ///< ring 0 is the lowest beam (KITTI/Velodyne order)
+  double min_range_m = 1.0;          ///< points closer than this are dropped [m]
+  // --- ground segmentation ---
+  double ground_max_elevation_deg = -1.0;  ///< only beams below this elevation can be ground [deg]
+  double ground_angle_deg = 10.0;    ///< max slope between vertically adjacent points [deg]
+  double sensor_mount_angle_deg = 0.0;  ///< sensor pitch on the vehicle [deg]
+  // --- range-image clustering ---
+  double segment_theta_deg = 60.0;   ///< BFS joins neighbours whose beta angle exceeds this [deg]
+  int min_cluster_points = 30;       ///< clusters at least this big are kept
+  int min_line_cluster_points = 5;   ///< ... or at least this big spanning min_cluster_rings rings
+  int min_cluster_rings = 3;         ///< rings a small (pole-like) cluster must span
+  int ground_column_stride = 5;      ///< keep every n-th ground point for features (LeGO: 5)
+  // --- features (LeGO-LOAM "featureAssociation") ---
+  int feature_sectors = 6;           ///< sectors per ring
+  int curvature_half_window = 5;     ///< neighbours on each side for the curvature
+  double edge_curvature = 0.1;       ///< curvature above this: edge candidate
+  double surf_curvature = 0.1;       ///< curvature below this: planar candidate
+  int sharp_per_sector = 2;          ///< sharpest points per sector (scan-to-scan source)
+  int less_sharp_per_sector = 20;    ///< edge points per sector (map / scan-to-scan target)
+  int flat_per_sector = 4;           ///< flattest ground points per sector (scan-to-scan source)
+  double occlusion_gap_m = 0.3;      ///< range jump marking occluded neighbours [m]
+  double less_flat_voxel_m = 0.4;    ///< voxel size for the less-flat cloud [m]
+  // --- scan-to-scan odometry ---
+  bool two_step_odometry = true;     ///< planar -> z/roll/pitch, then edges -> x/y/yaw (LeGO)
+  int odom_iterations = 15;          ///< Gauss-Newton iterations per step
+  double odom_max_nn_m = 1.5;        ///< correspondence search radius scan-to-scan [m]
+  // --- scan-to-map ---
+  int map_iterations = 10;           ///< Gauss-Newton iterations scan-to-map
+  double map_max_nn_m = 1.0;         ///< correspondence search radius scan-to-map [m]
+  double map_edge_voxel_m = 0.2;     ///< voxel for edge features (source and local map) [m]
+  double map_surf_voxel_m = 0.4;     ///< voxel for planar features (source and local map) [m]
+  int map_max_source_edges = 1500;   ///< edge features per scan used for mapping (strided)
+  int map_max_source_planes = 2500;  ///< planar features per scan used for mapping (strided)
+  double local_map_update_m = 2.0;   ///< rebuild the local map after this much motion [m]
+  double keyframe_distance_m = 1.0; ///< new keyframe after this much motion [m]
+  double keyframe_angle_deg = 10.0;  ///< ... or this much rotation [deg]
+  int local_map_keyframes = 40;      ///< recent keyframes in the local map
+  double local_map_radius_m = 60.0;  ///< and only those within this radius [m]
+  double huber_m = 0.1;              ///< robust kernel width for residuals [m]
+  // --- reliability ---
+  int min_valid_points = 500;        ///< fewer valid points: the scan is unusable
+  int min_edge_features = 10;        ///< fewer edge matches: unreliable
+  int min_plane_features = 50;       ///< fewer plane matches: unreliable
+  double degeneracy_min_eig = 0.02;  ///< min normalised eigenvalue of the translation block
+  // --- loop closure + pose graph ---
+  bool loop_closure = true;          ///< enable ICP loop closure
+  double loop_radius_m = 7.0;        ///< search radius around the new keyframe [m]
+  double loop_min_time_gap_s = 30.0; ///< candidate must be older than this [s]
+  int loop_submap_keyframes = 10;    ///< keyframes each side of the candidate in its submap
+  double loop_voxel_m = 0.4;         ///< voxel for ICP clouds [m]
+  int loop_icp_iterations = 30;      ///< point-to-plane ICP iterations
+  double loop_icp_max_corr_m = 2.0;  ///< ICP correspondence distance (shrinks to a third) [m]
+  double loop_fitness_m2 = 0.09;     ///< accept if mean squared inlier distance below [m^2]
+  double loop_min_inlier_ratio = 0.5;  ///< ... and at least this share of points matched
+  double loop_cooldown_s = 5.0;      ///< min time between two accepted closures [s]
+  double graph_odom_sigma_m = 0.05;  ///< pose-graph odometry edge sigma (translation) [m]
+  double graph_odom_sigma_rad = 0.005;  ///< pose-graph odometry edge sigma (rotation) [rad]
+  double graph_loop_sigma_m = 0.1;   ///< loop edge sigma (translation) [m]
+  double graph_loop_sigma_rad = 0.01;   ///< loop edge sigma (rotation) [rad]
+  // --- map output + accuracy ---
+  double map_voxel_m = 0.2;          ///< voxel of map.pcd [m]
+  double map_accuracy_max_m = 2.0;   ///< distances are clamped here (points off the world) [m]
+  // --- metrics ---
+  double assoc_max_dt_s = 0.02;      ///< timestamp association tolerance [s]
+  std::vector<double> rpe_lengths_m = {100, 200, 300, 400, 500, 600, 700, 800};  ///< KITTI [m]
+  double rpe_segment_m = 50.0;       ///< extra user segment length for RPE [m]
+  int rpe_step_frames = 10;          ///< start a segment every n frames (KITTI: 10)
+  int plot_size_px = 1000;           ///< plot width and height [px]
+};
+
+template <class V>
+void visitFields(V& v, Config& c) {
+  v.field("use_ring_field", c.use_ring_field, "use ScanPoint.ring when >= 0");
+  v.field("ring_zero_is_bottom", c.ring_zero_is_bottom, "ring 0 is the lowest beam");
+  v.field("min_range_m", c.min_range_m, "points closer are dropped [m]");
+  v.field("ground_max_elevation_deg", c.ground_max_elevation_deg, "beams below can be ground [deg]");
+  v.field("ground_angle_deg", c.ground_angle_deg, "max slope between adjacent ground points [deg]");
+  v.field("sensor_mount_angle_deg", c.sensor_mount_angle_deg, "sensor pitch [deg]");
+  v.field("segment_theta_deg", c.segment_theta_deg, "clustering angle threshold [deg]");
+  v.field("min_cluster_points", c.min_cluster_points, "min points of a kept cluster");
+  v.field("min_line_cluster_points", c.min_line_cluster_points, "min points of a thin cluster");
+  v.field("min_cluster_rings", c.min_cluster_rings, "rings a thin cluster must span");
+  v.field("ground_column_stride", c.ground_column_stride, "keep every n-th ground point");
+  v.field("feature_sectors", c.feature_sectors, "sectors per ring");
+  v.field("curvature_half_window", c.curvature_half_window, "curvature neighbours per side");
+  v.field("edge_curvature", c.edge_curvature, "edge curvature threshold");
+  v.field("surf_curvature", c.surf_curvature, "planar curvature threshold");
+  v.field("sharp_per_sector", c.sharp_per_sector, "sharp points per sector");
+  v.field("less_sharp_per_sector", c.less_sharp_per_sector, "less-sharp points per sector");
+  v.field("flat_per_sector", c.flat_per_sector, "flat points per sector");
+  v.field("occlusion_gap_m", c.occlusion_gap_m, "occlusion range jump [m]");
+  v.field("less_flat_voxel_m", c.less_flat_voxel_m, "less-flat voxel [m]");
+  v.field("two_step_odometry", c.two_step_odometry, "LeGO two-step scan-to-scan");
+  v.field("odom_iterations", c.odom_iterations, "scan-to-scan iterations per step");
+  v.field("odom_max_nn_m", c.odom_max_nn_m, "scan-to-scan correspondence radius [m]");
+  v.field("map_iterations", c.map_iterations, "scan-to-map iterations");
+  v.field("map_max_nn_m", c.map_max_nn_m, "scan-to-map correspondence radius [m]");
+  v.field("map_edge_voxel_m", c.map_edge_voxel_m, "edge voxel [m]");
+  v.field("map_surf_voxel_m", c.map_surf_voxel_m, "planar voxel [m]");
+  v.field("map_max_source_edges", c.map_max_source_edges, "edge features per scan for mapping");
+  v.field("map_max_source_planes", c.map_max_source_planes, "planar features per scan for mapping");
+  v.field("local_map_update_m", c.local_map_update_m, "local map rebuild distance [m]");
+  v.field("keyframe_distance_m", c.keyframe_distance_m, "keyframe spacing [m]");
+  v.field("keyframe_angle_deg", c.keyframe_angle_deg, "keyframe rotation [deg]");
+  v.field("local_map_keyframes", c.local_map_keyframes, "keyframes in the local map");
+  v.field("local_map_radius_m", c.local_map_radius_m, "local map radius [m]");
+  v.field("huber_m", c.huber_m, "robust kernel width [m]");
+  v.field("min_valid_points", c.min_valid_points, "min valid points per scan");
+  v.field("min_edge_features", c.min_edge_features, "min edge matches");
+  v.field("min_plane_features", c.min_plane_features, "min plane matches");
+  v.field("degeneracy_min_eig", c.degeneracy_min_eig, "min normalised translation eigenvalue");
+  v.field("loop_closure", c.loop_closure, "enable loop closure");
+  v.field("loop_radius_m", c.loop_radius_m, "loop search radius [m]");
+  v.field("loop_min_time_gap_s", c.loop_min_time_gap_s, "loop min time gap [s]");
+  v.field("loop_submap_keyframes", c.loop_submap_keyframes, "submap keyframes each side");
+  v.field("loop_voxel_m", c.loop_voxel_m, "ICP voxel [m]");
+  v.field("loop_icp_iterations", c.loop_icp_iterations, "ICP iterations");
+  v.field("loop_icp_max_corr_m", c.loop_icp_max_corr_m, "ICP correspondence distance [m]");
+  v.field("loop_fitness_m2", c.loop_fitness_m2, "ICP fitness threshold [m^2]");
+  v.field("loop_min_inlier_ratio", c.loop_min_inlier_ratio, "ICP min inlier share");
+  v.field("loop_cooldown_s", c.loop_cooldown_s, "min time between closures [s]");
+  v.field("graph_odom_sigma_m", c.graph_odom_sigma_m, "odometry edge sigma [m]");
+  v.field("graph_odom_sigma_rad", c.graph_odom_sigma_rad, "odometry edge sigma [rad]");
+  v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");
+  v.field("graph_loop_sigma_rad", c.graph_loop_sigma_rad, "loop edge sigma [rad]");
+  v.field("map_voxel_m", c.map_voxel_m, "map.pcd voxel [m]");
+  v.field("map_accuracy_max_m", c.map_accuracy_max_m, "map distance clamp [m]");
+  v.field("assoc_max_dt_s", c.assoc_max_dt_s, "timestamp association tolerance [s]");
+  v.field("rpe_lengths_m", c.rpe_lengths_m, "KITTI RPE segment lengths [m]");
+  v.field("rpe_segment_m", c.rpe_segment_m, "user RPE segment length [m]");
+  v.field("rpe_step_frames", c.rpe_step_frames, "RPE start stride [frames]");
+  v.field("plot_size_px", c.plot_size_px, "plot size [px]");
+}
+
+}  // namespace slamroute::evaluate

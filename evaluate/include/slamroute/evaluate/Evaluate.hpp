@@ -1,0 +1,32 @@
+#pragma once
+// `slamroute evaluate` and `slamroute compare` as library calls: run the SLAM pipeline on a drive
+// folder, write estimate.tum / metrics.json / map.pcd / per_edge.csv / plots.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "slamroute/core/Scan.hpp"
+#include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/Metrics.hpp"
+#include "slamroute/evaluate/Slam.hpp"
+
+namespace slamroute::evaluate {
+
+/// LidarSpec from a drive's sensor.yaml: the first mapping holding "channels" (top level or one
+/// level down, e.g. "lidar:"); other keys are ignored. Missing file: throws naming it.
+LidarSpec readSensorSpec(const std::filesystem::path& path);
+
+MetricsOptions metricsOptions(const Config& cfg);
+
+/// The trajectory part of metrics.json (also what `compare --json` prints).
+nlohmann::json trajectoryJson(const TrajectoryMetrics& m);
+
+/// Reliability summary: per-reason counts and merged stretches of non-Ok frames.
+nlohmann::json reliabilityJson(const SlamResult& r);
+
+/// Runs the whole evaluation of a drive folder and writes the outputs into `out`.
+/// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
+/// still computed after SE(3) alignment. Returns the metrics.json content.
+nlohmann::json evaluateDrive(const std::filesystem::path& drive, const ScanSource& source,
+                             const std::filesystem::path& out, const Config& cfg);
+
+}  // namespace slamroute::evaluate

@@ -1,0 +1,27 @@
+#pragma once
+// Nearest-neighbour search over a point cloud (PCL KdTreeFLANN behind a pimpl, so PCL stays in
+// one translation unit).
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+namespace slamroute::evaluate {
+
+class KdTree {
+ public:
+  KdTree();
+  ~KdTree();
+  KdTree(KdTree&&) noexcept;
+  KdTree& operator=(KdTree&&) noexcept;
+  void build(const std::vector<Eigen::Vector3f>& points);
+  std::size_t size() const { return n_; }
+  /// k nearest neighbours of q; fills idx / sq_dist (ascending); returns how many were found.
+  int knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx, std::vector<float>& sq_dist) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::size_t n_ = 0;
+};
+
+}  // namespace slamroute::evaluate

@@ -1,0 +1,56 @@
+#pragma once
+// Feature registration (LOAM point-to-line / point-to-plane, Gauss-Newton on SE(3) with a DoF
+// mask for LeGO-LOAM's two-step odometry) and point-to-plane ICP for loop closure.
+#include <cstdint>
+
+#include "slamroute/core/Types.hpp"
+#include "slamroute/evaluate/Features.hpp"
+#include "slamroute/evaluate/KdTree.hpp"
+
+namespace slamroute::evaluate {
+
+/// Perturbation order: [rx ry rz tx ty tz] in the source (body) frame.
+enum Dof : unsigned { kRoll = 1, kPitch = 2, kYaw = 4, kX = 8, kY = 16, kZ = 32, kAllDof = 63 };
+
+/// Target of a feature registration: edge and planar clouds with their k-d trees.
+struct FeatureMap {
+  Cloud edges, planes;
+  KdTree edge_tree, plane_tree;
+  void build(Cloud edge_cloud, Cloud plane_cloud);
+  bool empty() const { return edges.empty() && planes.empty(); }
+};
+
+struct AlignOptions {
+  int iterations = 10;
+  double max_nn_m = 1.0;   ///< all 5 neighbours of a correspondence within this [m]
+  double huber_m = 0.1;
+  unsigned dof_mask = kAllDof;
+};
+
+struct AlignResult {
+  Pose3 T_target_source = Pose3::Identity();
+  int iterations = 0;
+  int edge_matches = 0;
+  int plane_matches = 0;
+  double min_eig_translation = 0;  ///< smallest eigenvalue of the normalised translation block
+  bool converged = false;
+};
+
+/// Minimises point-to-line (edges) and point-to-plane (planes) distances from source features,
+/// moved by T_target_source, to the target (LOAM eqs. (2)-(3)).
+AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes,
+                          const Pose3& init, const AlignOptions& opt);
+
+struct IcpResult {
+  Pose3 T_target_source = Pose3::Identity();
+  double fitness_m2 = 0;    ///< mean squared distance of inliers to their nearest target point
+  double inlier_ratio = 0;  ///< share of source points with a target point within the final radius
+  int iterations = 0;
+  bool converged = false;
+};
+
+/// Point-to-plane ICP; the correspondence radius shrinks from max_corr_m to max_corr_m / 3.
+IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,
+                          int iterations, double max_corr_m);
+
+}  // namespace slamroute::evaluate

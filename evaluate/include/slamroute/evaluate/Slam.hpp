@@ -1,0 +1,68 @@
+#pragma once
+// The LeGO-LOAM-style pipeline (paper §3.3): per scan projection -> ground -> clusters ->
+// features -> scan-to-scan odometry -> scan-to-map refinement; keyframes, ICP loop closure and a
+// Ceres pose graph. The estimate starts at a given pose (the first ground-truth pose), so it is
+// expressed in the world frame.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "slamroute/core/Scan.hpp"
+#include "slamroute/core/Trajectory.hpp"
+#include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/Features.hpp"
+
+namespace slamroute::evaluate {
+
+/// Why a frame's pose is (or is not) trustworthy.
+enum class FrameStatus { Ok, Empty, Invalid, Missing, FewFeatures, Degenerate };
+const char* toString(FrameStatus s);
+
+struct StageTimes {  ///< accumulated seconds per stage
+  double projection = 0, ground = 0, clustering = 0, features = 0, odometry = 0, mapping = 0,
+         local_map = 0, loop_closure = 0, pose_graph = 0, total = 0;
+};
+
+struct LoopClosure {
+  int from_keyframe = 0, to_keyframe = 0;  ///< old, new
+  double t_old = 0, t_new = 0;
+  double fitness_m2 = 0;
+};
+
+struct SlamResult {
+  Trajectory trajectory;                ///< one pose per scan, T_world_sensor
+  std::vector<FrameStatus> status;      ///< per scan
+  std::vector<double> min_eig;          ///< per scan: degeneracy measure of scan-to-map
+  std::vector<LoopClosure> loops;       ///< accepted loop closures
+  int loop_candidates = 0;              ///< ICP attempts
+  int keyframes = 0;
+  StageTimes times;
+  Cloud map;                            ///< world frame, voxel-filtered (cfg.map_voxel_m)
+};
+
+class LidarSlam {
+ public:
+  LidarSlam(const Config& cfg, const LidarSpec& spec, const Pose3& T_world_first);
+  ~LidarSlam();
+  LidarSlam(const LidarSlam&) = delete;
+  LidarSlam& operator=(const LidarSlam&) = delete;
+  /// Processes one scan; returns its status. Never throws on bad scan content.
+  FrameStatus addScan(const Scan& scan);
+  /// Records a scan that could not be read (constant-velocity prediction).
+  FrameStatus addMissing(double t);
+  /// Current pose estimate of the last frame.
+  Pose3 currentPose() const;
+  SlamResult finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Runs the pipeline over a whole scan source. `progress(done, total)` is called after each scan.
+/// A scan the source cannot produce is recorded as Missing and the run continues.
+SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
+                   const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+}  // namespace slamroute::evaluate

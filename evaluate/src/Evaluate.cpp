@@ -1,0 +1,229 @@
+// Drive-level evaluation: ground truth in, SLAM, metrics and output files out.
+#include "slamroute/evaluate/Evaluate.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/evaluate/MapAccuracy.hpp"
+#include "slamroute/evaluate/Output.hpp"
+
+namespace slamroute::evaluate {
+namespace fs = std::filesystem;
+namespace {
+
+/// Reads only the LidarSpec keys present; ignores the rest (noise settings etc.).
+struct LenientLoader {
+  YAML::Node node;
+  template <class T>
+  void field(const char* key, T& v, const char*) {
+    if (node[key]) v = node[key].as<T>();
+  }
+};
+
+double nanToNull(double v) { return v; }  // nlohmann writes NaN as null
+
+/// coverage_edge_pct: visited passenger edges / passenger edges of the net named in world.yaml.
+void addCoverage(const fs::path& drive, const std::vector<PoseEdge>& pose_edges, nlohmann::json& j) {
+  j["coverage_edge_pct"] = nullptr;
+  std::set<std::string> visited;
+  for (const auto& pe : pose_edges)
+    if (!pe.edge.empty() && pe.edge[0] != ':') visited.insert(pe.edge);
+  j["edges_visited"] = visited.size();
+  const fs::path world = drive / drive_files::kWorld;
+  if (!fs::exists(world)) {
+    j["coverage_note"] = "no world.yaml: net unknown";
+    return;
+  }
+  const YAML::Node y = YAML::LoadFile(world.string());
+  std::string net;
+  for (const char* k : {"net", "net_path", "network"})
+    if (y[k] && y[k].IsScalar()) net = y[k].as<std::string>();
+  if (net.empty()) {
+    j["coverage_note"] = "world.yaml names no net";
+    return;
+  }
+  fs::path np(net);
+  if (np.is_relative() && !fs::exists(np)) np = drive / np;
+  if (!fs::exists(np)) {
+    j["coverage_note"] = "net " + net + " not found";
+    return;
+  }
+  const SumoNet sn = SumoNet::read(np);
+  std::size_t total = 0, hit = 0;
+  for (const auto& e : sn.edges) {
+    if (e.isInternal() || !e.allowsPassenger()) continue;
+    ++total;
+    hit += visited.count(e.id);
+  }
+  j["edges_total"] = total;
+  if (total > 0) j["coverage_edge_pct"] = 100.0 * static_cast<double>(hit) / static_cast<double>(total);
+}
+
+}  // namespace
+
+LidarSpec readSensorSpec(const fs::path& path) {
+  if (!fs::exists(path)) throw std::runtime_error(path.string() + ": sensor settings not found");
+  YAML::Node y;
+  try {
+    y = YAML::LoadFile(path.string());
+  } catch (const YAML::Exception&) {
+    throw std::runtime_error(path.string() + ": not valid YAML");
+  }
+  LidarSpec spec;
+  auto load = [&](const YAML::Node& n) {
+    LenientLoader l{n};
+    try {
+      visitFields(l, spec);
+    } catch (const YAML::Exception&) {
+      throw std::runtime_error(path.string() + ": a LidarSpec value has the wrong type");
+    }
+  };
+  if (y.IsMap() && y["channels"]) {
+    load(y);
+    return spec;
+  }
+  if (y.IsMap())
+    for (const auto& kv : y)
+      if (kv.second.IsMap() && kv.second["channels"]) {
+        load(kv.second);
+        return spec;
+      }
+  logWarn(path.string() + ": no LidarSpec found, using the paper's 64-channel default");
+  return spec;
+}
+
+MetricsOptions metricsOptions(const Config& cfg) {
+  MetricsOptions o;
+  o.max_dt_s = cfg.assoc_max_dt_s;
+  o.rpe_lengths_m = cfg.rpe_lengths_m;
+  o.segment_m = cfg.rpe_segment_m;
+  o.step_frames = cfg.rpe_step_frames;
+  return o;
+}
+
+nlohmann::json trajectoryJson(const TrajectoryMetrics& m) {
+  nlohmann::json j;
+  j["poses_matched"] = m.pairs.size();
+  j["ate_rmse_m"] = m.ate.rmse_m;
+  j["ate_mean_m"] = m.ate.mean_m;
+  j["ate_median_m"] = m.ate.median_m;
+  j["ate_max_m"] = m.ate.max_m;
+  j["rpe_trans_pct"] = nanToNull(m.rpe_kitti.trans_pct);
+  j["rpe_rot_deg_per_m"] = nanToNull(m.rpe_kitti.rot_deg_per_m);
+  j["rpe_segments"] = m.rpe_kitti.segments;
+  j["rpe_segment_m"] = m.segment_m;
+  j["rpe_segment_trans_pct"] = nanToNull(m.rpe_segment.trans_pct);
+  j["rpe_segment_rot_deg_per_m"] = nanToNull(m.rpe_segment.rot_deg_per_m);
+  j["rpe_segment_count"] = m.rpe_segment.segments;
+  j["route_length_m"] = m.route_length_m;
+  const Eigen::Quaterniond q(m.T_gt_est.rotation());
+  const Vec3 t = m.T_gt_est.translation();
+  j["alignment_T_gt_est"] = {{"t", {t.x(), t.y(), t.z()}}, {"q_xyzw", {q.x(), q.y(), q.z(), q.w()}}};
+  return j;
+}
+
+nlohmann::json reliabilityJson(const SlamResult& r) {
+  nlohmann::json j;
+  std::map<std::string, int> by_reason;
+  nlohmann::json stretches = nlohmann::json::array();
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < r.status.size();) {
+    if (r.status[i] == FrameStatus::Ok) {
+      ++i;
+      continue;
+    }
+    std::size_t k = i;
+    std::map<std::string, int> reasons;
+    while (k < r.status.size() && r.status[k] != FrameStatus::Ok) ++reasons[toString(r.status[k++])];
+    bad += k - i;
+    for (const auto& [name, c] : reasons) by_reason[name] += c;
+    nlohmann::json s = {{"first_scan", i}, {"last_scan", k - 1},
+                        {"t_start", r.trajectory[i].t}, {"t_end", r.trajectory[k - 1].t},
+                        {"reasons", reasons}};
+    stretches.push_back(s);
+    i = k;
+  }
+  j["unreliable_scans"] = bad;
+  j["unreliable_share"] = r.status.empty() ? 0.0 : static_cast<double>(bad) / static_cast<double>(r.status.size());
+  j["by_reason"] = by_reason;
+  j["stretches"] = stretches;
+  j["reliable"] = bad == 0;
+  return j;
+}
+
+nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& source, const fs::path& out,
+                             const Config& cfg) {
+  const Trajectory gt = readTum(drive / drive_files::kGroundTruth);
+  if (gt.empty()) throw std::runtime_error((drive / drive_files::kGroundTruth).string() + ": empty");
+  if (source.size() == 0) throw std::runtime_error(drive.string() + ": the drive has no scans");
+  fs::create_directories(out);
+  // Initial pose = the ground-truth pose at the first scan (documented in metrics.json).
+  const Trajectory first = {StampedPose{source.time(0), Pose3::Identity()}};
+  const auto p0 = associate(first, gt, 0.5 * std::max(cfg.assoc_max_dt_s, 0.1));
+  const Pose3 T0 = p0.empty() ? gt.front().T_world_body : p0.front().gt;
+
+  Progress progress("evaluate: SLAM", source.size());
+  SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); });
+  progress.finish();
+  writeTum(out / "estimate.tum", slam.trajectory);
+  writePcd(out / "map.pcd", slam.map);
+
+  const TrajectoryMetrics m = compareTrajectories(slam.trajectory, gt, metricsOptions(cfg));
+  nlohmann::json j = trajectoryJson(m);
+  j["initial_pose"] = "first ground-truth pose (estimate is in the world frame)";
+  j["scans"] = slam.trajectory.size();
+  j["keyframes"] = slam.keyframes;
+  j["loop_closures"] = slam.loops.size();
+  j["loop_candidates"] = slam.loop_candidates;
+  nlohmann::json loops = nlohmann::json::array();
+  for (const auto& l : slam.loops)
+    loops.push_back({{"old_keyframe", l.from_keyframe}, {"new_keyframe", l.to_keyframe},
+                     {"t_old", l.t_old}, {"t_new", l.t_new}, {"fitness_m2", l.fitness_m2}});
+  j["loops"] = loops;
+
+  // per-edge drift + coverage
+  std::vector<PoseEdge> pose_edges;
+  const fs::path pe_path = drive / drive_files::kPoseEdges;
+  if (fs::exists(pe_path)) {
+    pose_edges = readPoseEdges(pe_path);
+    writePerEdgeCsv(out / "per_edge.csv", perEdgeErrors(m, pose_edges, cfg.assoc_max_dt_s));
+  }
+  addCoverage(drive, pose_edges, j);
+
+  // map accuracy against the world mesh
+  const fs::path mesh_path = drive / drive_files::kWorldMesh;
+  j["map_points"] = slam.map.size();
+  j["map_mean_dist_m"] = nullptr;
+  j["map_p95_dist_m"] = nullptr;
+  if (fs::exists(mesh_path)) {
+    const MapAccuracy acc = mapAccuracy(slam.map, readPly(mesh_path), cfg.map_accuracy_max_m);
+    j["map_mean_dist_m"] = acc.mean_m;
+    j["map_median_dist_m"] = acc.median_m;
+    j["map_p95_dist_m"] = acc.p95_m;
+    j["map_far_share"] = acc.clamped_share;
+  }
+
+  const StageTimes& t = slam.times;
+  const double n = std::max<double>(1.0, static_cast<double>(slam.trajectory.size()));
+  j["timing_ms_per_scan"] = {{"projection", 1e3 * t.projection / n}, {"ground", 1e3 * t.ground / n},
+                             {"clustering", 1e3 * t.clustering / n}, {"features", 1e3 * t.features / n},
+                             {"odometry", 1e3 * t.odometry / n}, {"mapping", 1e3 * t.mapping / n}, {"local_map", 1e3 * t.local_map / n},
+                             {"loop_closure", 1e3 * t.loop_closure / n},
+                             {"pose_graph", 1e3 * t.pose_graph / n}, {"total", 1e3 * t.total / n}};
+  j["scans_per_s"] = t.total > 0 ? n / t.total : 0.0;
+  j["reliability"] = reliabilityJson(slam);
+
+  plotTopView(out / "trajectory_top.png", m, cfg.plot_size_px);
+  plotErrorAlongDistance(out / "error_along_distance.png", m, cfg.plot_size_px);
+  writeFileAtomic(out / "metrics.json", j.dump(2) + "\n");
+  return j;
+}
+
+}  // namespace slamroute::evaluate

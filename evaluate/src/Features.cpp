@@ -1,0 +1,152 @@
+// LeGO-LOAM featureAssociation: curvature per ring, occlusion marking, edge/planar selection in
+// sectors, plus the voxel filter used for feature clouds and maps.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+#include "slamroute/evaluate/Features.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+struct RingPoint {
+  Eigen::Vector3f p;
+  float range;
+  int col;
+  bool ground;
+};
+
+void extractRing(const std::vector<RingPoint>& ring, const Config& cfg, FeatureSet& out,
+                 Cloud& less_flat_all) {
+  const int w = cfg.curvature_half_window;
+  const int n = static_cast<int>(ring.size());
+  if (n < 2 * w + 2) return;
+  std::vector<float> curv(static_cast<std::size_t>(n), 0.0f);
+  std::vector<std::uint8_t> picked(static_cast<std::size_t>(n), 0);
+  std::vector<int> lbl(static_cast<std::size_t>(n), 0);  // 2 sharp, 1 less sharp, -1 flat
+  for (int i = w; i < n - w; ++i) {
+    float diff = -2.0f * w * ring[i].range;
+    for (int k = -w; k <= w; ++k)
+      if (k != 0) diff += ring[i + k].range;
+    curv[i] = diff * diff;
+  }
+  // Occluded points and points on surfaces parallel to the beam are unreliable (LOAM §V-A).
+  const float gap = static_cast<float>(cfg.occlusion_gap_m);
+  for (int i = w; i < n - w - 1; ++i) {
+    const float d1 = ring[i].range, d2 = ring[i + 1].range;
+    if (std::abs(ring[i + 1].col - ring[i].col) < 10) {
+      if (d1 - d2 > gap) {
+        for (int k = 0; k <= w; ++k) picked[i - k] = 1;
+      } else if (d2 - d1 > gap) {
+        for (int k = 1; k <= w + 1 && i + k < n; ++k) picked[i + k] = 1;
+      }
+    }
+    const float a = std::abs(ring[i - 1].range - d1), b = std::abs(d2 - d1);
+    if (a > 0.02f * d1 && b > 0.02f * d1) picked[i] = 1;
+  }
+  auto markNeighbours = [&](int i) {
+    picked[i] = 1;
+    for (int l = 1; l <= w && i + l < n; ++l) {
+      if (std::abs(ring[i + l].col - ring[i + l - 1].col) > 10) break;
+      picked[i + l] = 1;
+    }
+    for (int l = 1; l <= w && i - l >= 0; ++l) {
+      if (std::abs(ring[i - l].col - ring[i - l + 1].col) > 10) break;
+      picked[i - l] = 1;
+    }
+  };
+  const int start = w, end = n - w - 1;
+  std::vector<int> order;
+  for (int s = 0; s < cfg.feature_sectors; ++s) {
+    const int sp = start + (end - start) * s / cfg.feature_sectors;
+    const int ep = start + (end - start) * (s + 1) / cfg.feature_sectors - 1;
+    if (sp >= ep) continue;
+    order.resize(static_cast<std::size_t>(ep - sp + 1));
+    std::iota(order.begin(), order.end(), sp);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return curv[a] < curv[b]; });
+    int count = 0;
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+      const int i = *it;
+      if (curv[i] <= cfg.edge_curvature) break;
+      if (picked[i] || ring[i].ground) continue;
+      ++count;
+      if (count <= cfg.sharp_per_sector) {
+        lbl[i] = 2;
+        out.sharp.push_back(ring[i].p);
+        out.less_sharp.push_back(ring[i].p);
+      } else if (count <= cfg.less_sharp_per_sector) {
+        lbl[i] = 1;
+        out.less_sharp.push_back(ring[i].p);
+      } else {
+        break;
+      }
+      markNeighbours(i);
+    }
+    count = 0;
+    for (int i : order) {
+      if (curv[i] >= cfg.surf_curvature) break;
+      if (picked[i] || !ring[i].ground) continue;
+      lbl[i] = -1;
+      out.flat.push_back(ring[i].p);
+      if (++count >= cfg.flat_per_sector) break;
+      markNeighbours(i);
+    }
+    for (int i = sp; i <= ep; ++i)
+      if (lbl[i] <= 0) less_flat_all.push_back(ring[i].p);
+  }
+}
+
+}  // namespace
+
+FeatureSet extractFeatures(const RangeImage& img, const Config& cfg) {
+  FeatureSet out;
+  Cloud less_flat_all;
+  std::vector<RingPoint> ring;
+  const int stride = std::max(1, cfg.ground_column_stride);
+  for (int r = 0; r < img.rows; ++r) {
+    ring.clear();
+    for (int c = 0; c < img.cols; ++c) {
+      const int i = img.idx(r, c);
+      if (img.range[i] == 0.0f) continue;
+      const bool g = img.ground[i] != 0;
+      if (g) {
+        if (c % stride != 0 && c > 5 && c < img.cols - 5) continue;  // LeGO subsamples ground
+      } else if (img.label[i] <= 0) {
+        continue;
+      }
+      ring.push_back({img.point[i], img.range[i], c, g});
+      out.segmented.push_back(img.point[i]);
+    }
+    extractRing(ring, cfg, out, less_flat_all);
+  }
+  out.less_flat = voxelFilter(less_flat_all, cfg.less_flat_voxel_m);
+  return out;
+}
+
+Cloud voxelFilter(const Cloud& in, double voxel_m) {
+  if (voxel_m <= 0.0 || in.empty()) return in;
+  const float inv = static_cast<float>(1.0 / voxel_m);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+  keys.reserve(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const auto q = [&](float v) {
+      return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv)) + (1 << 20)) &
+             0x1FFFFF;
+    };
+    const std::uint64_t key = (q(in[i].x()) << 42) | (q(in[i].y()) << 21) | q(in[i].z());
+    keys.emplace_back(key, static_cast<std::uint32_t>(i));
+  }
+  std::sort(keys.begin(), keys.end());
+  Cloud out;
+  for (std::size_t a = 0; a < keys.size();) {
+    std::size_t b = a;
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+    while (b < keys.size() && keys[b].first == keys[a].first) sum += in[keys[b++].second];
+    out.push_back(sum / static_cast<float>(b - a));
+    a = b;
+  }
+  return out;
+}
+
+}  // namespace slamroute::evaluate

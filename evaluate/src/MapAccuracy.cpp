@@ -1,0 +1,229 @@
+// World mesh reader (PLY) and map-to-surface distances.
+#include "slamroute/evaluate/MapAccuracy.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+int typeSize(const std::string& t) {
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32")
+    return 4;
+  if (t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+double readBinary(const char* p, const std::string& t) {
+  auto get = [&](auto v) {
+    std::memcpy(&v, p, sizeof(v));
+    return static_cast<double>(v);
+  };
+  if (t == "char" || t == "int8") return get(std::int8_t{});
+  if (t == "uchar" || t == "uint8") return get(std::uint8_t{});
+  if (t == "short" || t == "int16") return get(std::int16_t{});
+  if (t == "ushort" || t == "uint16") return get(std::uint16_t{});
+  if (t == "int" || t == "int32") return get(std::int32_t{});
+  if (t == "uint" || t == "uint32") return get(std::uint32_t{});
+  if (t == "float" || t == "float32") return get(float{});
+  return get(double{});
+}
+
+struct Prop {
+  std::string name, type, count_type;  // count_type non-empty for lists
+};
+struct Element {
+  std::string name;
+  std::size_t count = 0;
+  std::vector<Prop> props;
+};
+
+/// Ericson, Real-Time Collision Detection §5.1.5: closest point on triangle abc to p.
+Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                  const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double denom = va + vb + vc;
+  if (std::abs(denom) < 1e-300) return a;  // degenerate triangle
+  const double v = vb / denom, w = vc / denom;
+  return a + ab * v + ac * w;
+}
+
+}  // namespace
+
+Mesh readPly(const std::filesystem::path& path) {
+  const std::string data = readFile(path);
+  const std::string where = path.string();
+  std::size_t pos = 0;
+  auto nextLine = [&]() {
+    const std::size_t e = data.find('\n', pos);
+    if (e == std::string::npos) throw std::runtime_error(where + ": truncated PLY header");
+    std::string l = data.substr(pos, e - pos);
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    pos = e + 1;
+    return l;
+  };
+  if (nextLine() != "ply") throw std::runtime_error(where + ": not a PLY file");
+  std::string format;
+  std::vector<Element> elems;
+  for (;;) {
+    const std::string l = nextLine();
+    std::istringstream ss(l);
+    std::string kw;
+    ss >> kw;
+    if (kw == "end_header") break;
+    if (kw == "format") ss >> format;
+    else if (kw == "element") {
+      Element e;
+      ss >> e.name >> e.count;
+      elems.push_back(e);
+    } else if (kw == "property") {
+      if (elems.empty()) throw std::runtime_error(where + ": property before element");
+      Prop p;
+      std::string t;
+      ss >> t;
+      if (t == "list") ss >> p.count_type >> p.type >> p.name;
+      else {
+        p.type = t;
+        ss >> p.name;
+      }
+      elems.back().props.push_back(p);
+    }
+  }
+  const bool binary = format == "binary_little_endian";
+  if (!binary && format != "ascii")
+    throw std::runtime_error(where + ": unsupported PLY format '" + format + "'");
+  Mesh mesh;
+  std::istringstream ascii(binary ? std::string() : data.substr(pos));
+  auto value = [&](const std::string& type) -> double {
+    if (binary) {
+      const int s = typeSize(type);
+      if (s == 0) throw std::runtime_error(where + ": unknown PLY type '" + type + "'");
+      if (pos + static_cast<std::size_t>(s) > data.size()) throw std::runtime_error(where + ": truncated PLY body");
+      const double v = readBinary(data.data() + pos, type);
+      pos += static_cast<std::size_t>(s);
+      return v;
+    }
+    double v;
+    if (!(ascii >> v)) throw std::runtime_error(where + ": truncated PLY body");
+    return v;
+  };
+  for (const Element& e : elems) {
+    for (std::size_t i = 0; i < e.count; ++i) {
+      Eigen::Vector3f v = Eigen::Vector3f::Zero();
+      for (const Prop& p : e.props) {
+        if (!p.count_type.empty()) {
+          const int n = static_cast<int>(value(p.count_type));
+          std::vector<int> idx(static_cast<std::size_t>(std::max(n, 0)));
+          for (int k = 0; k < n; ++k) idx[static_cast<std::size_t>(k)] = static_cast<int>(value(p.type));
+          if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index"))
+            for (int k = 2; k < n; ++k) mesh.faces.push_back({idx[0], idx[static_cast<std::size_t>(k - 1)], idx[static_cast<std::size_t>(k)]});
+        } else {
+          const double x = value(p.type);
+          if (e.name == "vertex") {
+            if (p.name == "x") v.x() = static_cast<float>(x);
+            if (p.name == "y") v.y() = static_cast<float>(x);
+            if (p.name == "z") v.z() = static_cast<float>(x);
+          }
+        }
+      }
+      if (e.name == "vertex") mesh.vertices.push_back(v);
+    }
+  }
+  const int nv = static_cast<int>(mesh.vertices.size());
+  for (const auto& f : mesh.faces)
+    for (int k : f)
+      if (k < 0 || k >= nv) throw std::runtime_error(where + ": face index out of range");
+  return mesh;
+}
+
+MapAccuracy mapAccuracy(const Cloud& map, const Mesh& mesh, double max_m) {
+  MapAccuracy out;
+  out.points = static_cast<int>(map.size());
+  if (map.empty()) return out;
+  if (max_m <= 0) throw std::invalid_argument("mapAccuracy: max distance must be positive");
+  // Grid over the map's xy bounding box (+ one cell); triangles are binned by their xy bbox.
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const auto& p : map) {
+    lo = lo.cwiseMin(p.head<2>().cast<double>());
+    hi = hi.cwiseMax(p.head<2>().cast<double>());
+  }
+  const double cell = max_m;
+  lo.array() -= cell;
+  hi.array() += cell;
+  const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / cell)) + 1;
+  const int ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / cell)) + 1;
+  if (static_cast<double>(nx) * ny > 5e7) throw std::invalid_argument("mapAccuracy: map too large for the grid");
+  std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    Eigen::Vector2d a(1e300, 1e300), b(-1e300, -1e300);
+    for (int k : mesh.faces[f]) {
+      a = a.cwiseMin(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+      b = b.cwiseMax(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+    }
+    const int x0 = std::max(0, static_cast<int>(std::floor((a.x() - lo.x()) / cell)));
+    const int y0 = std::max(0, static_cast<int>(std::floor((a.y() - lo.y()) / cell)));
+    const int x1 = std::min(nx - 1, static_cast<int>(std::floor((b.x() - lo.x()) / cell)));
+    const int y1 = std::min(ny - 1, static_cast<int>(std::floor((b.y() - lo.y()) / cell)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) grid[static_cast<std::size_t>(y) * nx + x].push_back(static_cast<int>(f));
+  }
+  std::vector<double> d;
+  d.reserve(map.size());
+  std::vector<int> seen_stamp(mesh.faces.size(), -1);
+  int clamped = 0;
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    const Eigen::Vector3d p = map[i].cast<double>();
+    const int cx = static_cast<int>(std::floor((p.x() - lo.x()) / cell));
+    const int cy = static_cast<int>(std::floor((p.y() - lo.y()) / cell));
+    double best2 = max_m * max_m;
+    for (int y = std::max(0, cy - 1); y <= std::min(ny - 1, cy + 1); ++y)
+      for (int x = std::max(0, cx - 1); x <= std::min(nx - 1, cx + 1); ++x)
+        for (int f : grid[static_cast<std::size_t>(y) * nx + x]) {
+          if (seen_stamp[static_cast<std::size_t>(f)] == static_cast<int>(i)) continue;
+          seen_stamp[static_cast<std::size_t>(f)] = static_cast<int>(i);
+          const auto& tri = mesh.faces[static_cast<std::size_t>(f)];
+          const Eigen::Vector3d q = closestOnTriangle(
+              p, mesh.vertices[static_cast<std::size_t>(tri[0])].cast<double>(),
+              mesh.vertices[static_cast<std::size_t>(tri[1])].cast<double>(),
+              mesh.vertices[static_cast<std::size_t>(tri[2])].cast<double>());
+          best2 = std::min(best2, (q - p).squaredNorm());
+        }
+    const double dist = std::sqrt(best2);
+    if (dist >= max_m) ++clamped;
+    d.push_back(dist);
+  }
+  double sum = 0;
+  for (double v : d) sum += v;
+  out.mean_m = sum / static_cast<double>(d.size());
+  std::sort(d.begin(), d.end());
+  out.median_m = d[d.size() / 2];
+  out.p95_m = d[std::min(d.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(d.size())))];
+  out.clamped_share = static_cast<double>(clamped) / static_cast<double>(d.size());
+  return out;
+}
+
+}  // namespace slamroute::evaluate

@@ -1,0 +1,108 @@
+// map.pcd writer and the PNG plots (the module's only OpenCV translation unit).
+#include "slamroute/evaluate/Output.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+void writePng(const std::filesystem::path& path, const cv::Mat& img) {
+  std::vector<uchar> buf;
+  if (!cv::imencode(".png", img, buf)) throw std::runtime_error(path.string() + ": PNG encoding failed");
+  writeFileAtomic(path, std::string(buf.begin(), buf.end()));
+}
+
+std::string fmt(double v, int prec = 2) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(prec);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+void writePcd(const std::filesystem::path& path, const Cloud& cloud) {
+  std::ostringstream os;
+  os << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\n"
+     << "TYPE F F F\nCOUNT 1 1 1\nWIDTH " << cloud.size() << "\nHEIGHT 1\n"
+     << "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << cloud.size() << "\nDATA binary\n";
+  std::string s = os.str();
+  const std::size_t off = s.size();
+  s.resize(off + cloud.size() * 12);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const float v[3] = {cloud[i].x(), cloud[i].y(), cloud[i].z()};
+    std::memcpy(s.data() + off + i * 12, v, 12);
+  }
+  writeFileAtomic(path, s);
+}
+
+void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, int size_px) {
+  const int S = std::max(200, size_px), margin = 40;
+  cv::Mat img(S, S, CV_8UC3, cv::Scalar(255, 255, 255));
+  std::vector<Eigen::Vector2d> gt, est;
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (const auto& p : m.pairs) {
+    gt.push_back(p.gt.translation().head<2>());
+    est.push_back((m.T_gt_est * p.est.translation()).head<2>());
+    for (const auto& q : {gt.back(), est.back()}) {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+  }
+  if (gt.empty()) throw std::invalid_argument("plotTopView: empty trajectory");
+  const double span = std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1.0});
+  const double scale = (S - 2 * margin) / span;
+  auto px = [&](const Eigen::Vector2d& q) {
+    return cv::Point(static_cast<int>(margin + (q.x() - lo.x()) * scale),
+                     static_cast<int>(S - margin - (q.y() - lo.y()) * scale));
+  };
+  for (std::size_t i = 1; i < gt.size(); ++i) {
+    cv::line(img, px(gt[i - 1]), px(gt[i]), cv::Scalar(0, 160, 0), 2, cv::LINE_AA);
+    cv::line(img, px(est[i - 1]), px(est[i]), cv::Scalar(0, 0, 220), 1, cv::LINE_AA);
+  }
+  cv::circle(img, px(gt.front()), 5, cv::Scalar(0, 0, 0), 2);
+  cv::putText(img, "ground truth", {margin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 160, 0), 1);
+  cv::putText(img, "estimate (aligned), ATE RMSE " + fmt(m.ate.rmse_m, 3) + " m", {margin + 120, 20},
+              cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 220), 1);
+  // scale bar
+  double bar = 1.0;
+  while (bar * scale < S / 8.0) bar *= 10.0;
+  if (bar * scale > S / 3.0) bar /= 2.0;
+  const cv::Point b0(margin, S - 15), b1(margin + static_cast<int>(bar * scale), S - 15);
+  cv::line(img, b0, b1, cv::Scalar(0, 0, 0), 2);
+  cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
+  writePng(path, img);
+}
+
+void plotErrorAlongDistance(const std::filesystem::path& path, const TrajectoryMetrics& m,
+                            int size_px) {
+  const int W = std::max(300, size_px), H = std::max(200, size_px / 2), ml = 60, mb = 40, mt = 30, mr = 20;
+  cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
+  if (m.errors_m.empty()) throw std::invalid_argument("plotErrorAlongDistance: empty trajectory");
+  const double dmax = std::max(1.0, m.distance_m.back());
+  const double emax = std::max(1e-3, *std::max_element(m.errors_m.begin(), m.errors_m.end())) * 1.1;
+  auto px = [&](double d, double e) {
+    return cv::Point(static_cast<int>(ml + d / dmax * (W - ml - mr)),
+                     static_cast<int>(H - mb - e / emax * (H - mb - mt)));
+  };
+  cv::line(img, px(0, 0), px(dmax, 0), cv::Scalar(0, 0, 0), 1);
+  cv::line(img, px(0, 0), px(0, emax), cv::Scalar(0, 0, 0), 1);
+  for (std::size_t i = 1; i < m.errors_m.size(); ++i)
+    cv::line(img, px(m.distance_m[i - 1], m.errors_m[i - 1]), px(m.distance_m[i], m.errors_m[i]),
+             cv::Scalar(200, 60, 0), 1, cv::LINE_AA);
+  cv::putText(img, "ATE [m] vs distance [m]", {ml, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
+  cv::putText(img, fmt(emax, 3), {2, mt + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
+  cv::putText(img, "0", {ml - 15, H - mb + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
+  cv::putText(img, fmt(dmax, 0), {W - mr - 50, H - mb + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
+  writePng(path, img);
+}
+
+}  // namespace slamroute::evaluate

@@ -1,0 +1,221 @@
+// Gauss-Newton feature registration (LOAM point-to-line / point-to-plane) and point-to-plane ICP.
+// The pose is updated on the right, T <- T * Exp(delta), so the perturbation lives in the source
+// (body) frame and LeGO-LOAM's split into z/roll/pitch and x/y/yaw is a mask on delta.
+#include "slamroute/evaluate/Registration.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+
+namespace slamroute::evaluate {
+namespace {
+
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Row6 = Eigen::Matrix<double, 1, 6>;
+
+struct Normal {
+  Mat6 H = Mat6::Zero();
+  Vec6 g = Vec6::Zero();
+  double rows = 0;  ///< number of constrained directions, for normalising H
+  /// One scalar residual r along unit direction n (world/target frame) for body point p.
+  void add(const Mat3& R, const Vec3& p, const Vec3& n, double r, double huber) {
+    const Vec3 nb = R.transpose() * n;  // direction in the body frame
+    Row6 J;
+    J.head<3>() = p.cross(nb).transpose();  // d r / d(rotation): n^T R (-[p]x)
+    J.tail<3>() = nb.transpose();
+    const double w = std::abs(r) <= huber ? 1.0 : huber / std::abs(r);
+    H += w * J.transpose() * J;
+    g += w * J.transpose() * r;
+    rows += 1;
+  }
+  /// Solves the masked normal equations; returns delta (zeros in masked-out DoF).
+  Vec6 solve(unsigned mask) const {
+    std::array<int, 6> act{};
+    int m = 0;
+    for (int i = 0; i < 6; ++i)
+      if (mask & (1u << i)) act[static_cast<std::size_t>(m++)] = i;
+    Eigen::MatrixXd A(m, m);
+    Eigen::VectorXd b(m);
+    for (int i = 0; i < m; ++i) {
+      b(i) = -g(act[static_cast<std::size_t>(i)]);
+      for (int j = 0; j < m; ++j) A(i, j) = H(act[static_cast<std::size_t>(i)], act[static_cast<std::size_t>(j)]);
+    }
+    A.diagonal().array() += 1e-6 * (1.0 + A.diagonal().array());
+    const Eigen::VectorXd x = A.ldlt().solve(b);
+    Vec6 d = Vec6::Zero();
+    for (int i = 0; i < m; ++i)
+      if (std::isfinite(x(i))) d(act[static_cast<std::size_t>(i)]) = x(i);
+    return d;
+  }
+  double minEigTranslation() const {
+    if (rows <= 0) return 0.0;
+    const Mat3 Ht = H.block<3, 3>(3, 3) / rows;
+    return Eigen::SelfAdjointEigenSolver<Mat3>(Ht, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  }
+};
+
+void applyDelta(Pose3& T, const Vec6& d) {
+  Pose3 D = Pose3::Identity();
+  const double angle = d.head<3>().norm();
+  if (angle > 1e-12) D.linear() = Eigen::AngleAxisd(angle, d.head<3>() / angle).toRotationMatrix();
+  D.translation() = d.tail<3>();
+  T = T * D;
+  // re-orthonormalise against drift
+  T.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
+}
+
+/// PCA of the neighbours: mean and eigen-decomposition (ascending eigenvalues).
+struct Pca {
+  Vec3 mean;
+  Eigen::SelfAdjointEigenSolver<Mat3> es;
+};
+Pca pca(const Cloud& cloud, const std::vector<int>& idx) {
+  Vec3 mean = Vec3::Zero();
+  for (int i : idx) mean += cloud[static_cast<std::size_t>(i)].cast<double>();
+  mean /= static_cast<double>(idx.size());
+  Mat3 cov = Mat3::Zero();
+  for (int i : idx) {
+    const Vec3 d = cloud[static_cast<std::size_t>(i)].cast<double>() - mean;
+    cov += d * d.transpose();
+  }
+  cov /= static_cast<double>(idx.size());
+  Pca out{mean, {}};
+  out.es.computeDirect(cov);
+  return out;
+}
+
+}  // namespace
+
+void FeatureMap::build(Cloud edge_cloud, Cloud plane_cloud) {
+  edges = std::move(edge_cloud);
+  planes = std::move(plane_cloud);
+  edge_tree.build(edges);
+  plane_tree.build(planes);
+}
+
+AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes,
+                          const Pose3& init, const AlignOptions& opt) {
+  AlignResult res;
+  Pose3 T = init;
+  std::vector<int> idx;
+  std::vector<float> d2;
+  const float max_d2 = static_cast<float>(opt.max_nn_m * opt.max_nn_m);
+  constexpr int kK = 5;
+  Normal last;
+  for (int it = 0; it < opt.iterations; ++it) {
+    Normal ne;
+    const Mat3 R = T.rotation();
+    const Vec3 t = T.translation();
+    int edges = 0, planes = 0;
+    if (target.edges.size() >= kK) {
+      for (const auto& pf : src_edges) {
+        const Vec3 p = pf.cast<double>();
+        const Vec3 q = R * p + t;
+        if (target.edge_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
+        const Pca s = pca(target.edges, idx);
+        const Vec3 ev = s.es.eigenvalues();
+        if (ev(2) < 3.0 * ev(1)) continue;  // neighbours are not on a line
+        const Vec3 dir = s.es.eigenvectors().col(2);
+        const Vec3 e = q - s.mean;
+        const Vec3 perp = e - dir * dir.dot(e);
+        // Point-to-line distance (LOAM eq. 2) as two orthogonal scalar residuals.
+        const Vec3 u = dir.unitOrthogonal();
+        const Vec3 v = dir.cross(u);
+        ne.add(R, p, u, u.dot(perp), opt.huber_m);
+        ne.add(R, p, v, v.dot(perp), opt.huber_m);
+        ++edges;
+      }
+    }
+    if (target.planes.size() >= kK) {
+      for (const auto& pf : src_planes) {
+        const Vec3 p = pf.cast<double>();
+        const Vec3 q = R * p + t;
+        if (target.plane_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
+        const Pca s = pca(target.planes, idx);
+        const Vec3 n = s.es.eigenvectors().col(0);
+        bool planar = true;
+        for (int i : idx)
+          planar = planar &&
+                   std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < 0.2;
+        if (!planar) continue;
+        ne.add(R, p, n, n.dot(q - s.mean), opt.huber_m);  // point-to-plane (LOAM eq. 3)
+        ++planes;
+      }
+    }
+    res.edge_matches = edges;
+    res.plane_matches = planes;
+    res.iterations = it + 1;
+    last = ne;
+    if (ne.rows < 6) break;
+    const Vec6 d = ne.solve(opt.dof_mask);
+    applyDelta(T, d);
+    if (d.head<3>().norm() < 1e-5 && d.tail<3>().norm() < 1e-4) {
+      res.converged = true;
+      break;
+    }
+  }
+  res.T_target_source = T;
+  res.min_eig_translation = last.minEigTranslation();
+  return res;
+}
+
+IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,
+                          int iterations, double max_corr_m) {
+  IcpResult res;
+  res.T_target_source = init;
+  if (source.empty() || target.size() < 8) return res;
+  KdTree tree;
+  tree.build(target);
+  // Target normals from 8 neighbours; points without a clear plane keep a zero normal.
+  std::vector<Vec3> normals(target.size(), Vec3::Zero());
+  std::vector<int> idx;
+  std::vector<float> d2;
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    if (tree.knn(target[i], 8, idx, d2) < 8) continue;
+    const Pca s = pca(target, idx);
+    const Vec3 ev = s.es.eigenvalues();
+    if (ev(0) < 0.2 * ev(1)) normals[i] = s.es.eigenvectors().col(0);
+  }
+  Pose3 T = init;
+  for (int it = 0; it < iterations; ++it) {
+    const double frac = iterations > 1 ? static_cast<double>(it) / (iterations - 1) : 1.0;
+    const double corr = max_corr_m * (1.0 - frac * 2.0 / 3.0);
+    const float corr2 = static_cast<float>(corr * corr);
+    Normal ne;
+    const Mat3 R = T.rotation();
+    for (const auto& pf : source) {
+      const Vec3 p = pf.cast<double>();
+      const Vec3 q = R * p + T.translation();
+      if (tree.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > corr2) continue;
+      const Vec3& n = normals[static_cast<std::size_t>(idx[0])];
+      if (n.isZero()) continue;
+      ne.add(R, p, n, n.dot(q - target[static_cast<std::size_t>(idx[0])].cast<double>()), corr);
+    }
+    res.iterations = it + 1;
+    if (ne.rows < 6) break;
+    const Vec6 d = ne.solve(kAllDof);
+    applyDelta(T, d);
+    if (d.head<3>().norm() < 1e-6 && d.tail<3>().norm() < 1e-5 && frac > 0.5) {
+      res.converged = true;
+      break;
+    }
+  }
+  res.T_target_source = T;
+  // Fitness as in PCL's getFitnessScore, restricted to inliers within the final radius.
+  const double final_corr = max_corr_m / 3.0;
+  double sum = 0;
+  int inl = 0;
+  for (const auto& pf : source) {
+    const Vec3 q = T * pf.cast<double>();
+    if (tree.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > final_corr * final_corr) continue;
+    sum += d2[0];
+    ++inl;
+  }
+  res.fitness_m2 = inl > 0 ? sum / inl : 1e9;
+  res.inlier_ratio = static_cast<double>(inl) / static_cast<double>(source.size());
+  if (res.iterations == iterations) res.converged = true;
+  return res;
+}
+
+}  // namespace slamroute::evaluate

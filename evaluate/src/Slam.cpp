@@ -1,0 +1,388 @@
+// LeGO-LOAM-style pipeline: the top-level addScan() reads as the paper's §3.3 steps.
+#include "slamroute/evaluate/Slam.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/PoseGraph.hpp"
+#include "slamroute/evaluate/RangeImage.hpp"
+#include "slamroute/evaluate/Registration.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Cloud transformed(const Cloud& c, const Pose3& T) {
+  const Eigen::Matrix3f R = T.rotation().cast<float>();
+  const Eigen::Vector3f t = T.translation().cast<float>();
+  Cloud out;
+  out.reserve(c.size());
+  for (const auto& p : c) out.push_back(R * p + t);
+  return out;
+}
+
+/// Keeps at most `max_n` points, evenly strided (the input is voxel-sorted, so this thins space
+/// uniformly).
+Cloud capped(Cloud c, int max_n) {
+  if (max_n <= 0 || c.size() <= static_cast<std::size_t>(max_n)) return c;
+  Cloud out;
+  out.reserve(static_cast<std::size_t>(max_n));
+  const double step = static_cast<double>(c.size()) / max_n;
+  for (int i = 0; i < max_n; ++i) out.push_back(c[static_cast<std::size_t>(i * step)]);
+  return out;
+}
+
+double rotationAngle(const Pose3& T) { return Eigen::AngleAxisd(T.rotation()).angle(); }
+
+struct Keyframe {
+  double t = 0;
+  int frame = 0;
+  Pose3 T_world = Pose3::Identity();
+  Cloud edges, planes;  ///< body frame, voxel-filtered (scan-to-map source / local map)
+  Cloud cloud;          ///< body frame, segmented points at cfg.map_voxel_m (map + ICP)
+};
+
+struct FrameRecord {
+  double t = 0;
+  int keyframe = 0;
+  Pose3 T_kf_frame = Pose3::Identity();
+  FrameStatus status = FrameStatus::Ok;
+  double min_eig = 0;
+};
+
+}  // namespace
+
+const char* toString(FrameStatus s) {
+  switch (s) {
+    case FrameStatus::Ok: return "ok";
+    case FrameStatus::Empty: return "empty_scan";
+    case FrameStatus::Invalid: return "too_few_valid_points";
+    case FrameStatus::Missing: return "missing_scan";
+    case FrameStatus::FewFeatures: return "few_features";
+    case FrameStatus::Degenerate: return "degenerate_geometry";
+  }
+  return "unknown";
+}
+
+struct LidarSlam::Impl {
+  Config cfg;
+  LidarSpec spec;
+  Pose3 T_world_first;
+  std::vector<FrameRecord> frames;
+  std::vector<Keyframe> kfs;
+  std::vector<PoseGraphEdge> odom_edges, loop_edges;
+  std::vector<LoopClosure> loops;
+  int loop_candidates = 0;
+  double last_loop_t = -1e18, last_attempt_t = -1e18;
+  bool have_prev = false;
+  FeatureMap prev_scan;  ///< previous good scan's less-sharp / less-flat, its body frame
+  FeatureMap local_map;  ///< world frame
+  Vec3 local_map_at = Vec3::Constant(1e18);  ///< where the local map was last rebuilt
+  Pose3 T_world_last = Pose3::Identity();  ///< last frame (good or predicted)
+  Pose3 T_world_good = Pose3::Identity();  ///< last well-registered frame
+  int good_frame = -1;
+  Pose3 velocity = Pose3::Identity();      ///< motion per frame, body frame
+  StageTimes times;
+
+  Pose3 predict() const { return T_world_last * velocity; }
+
+  void record(double t, const Pose3& T_world, FrameStatus s, double min_eig) {
+    FrameRecord r;
+    r.t = t;
+    r.status = s;
+    r.min_eig = min_eig;
+    r.keyframe = static_cast<int>(kfs.size()) - 1;
+    if (r.keyframe >= 0) r.T_kf_frame = kfs.back().T_world.inverse() * T_world;
+    else r.T_kf_frame = T_world;  // before the first keyframe: absolute (kf -1 = world)
+    frames.push_back(r);
+    T_world_last = T_world;
+  }
+
+  FrameStatus addUnusable(double t, FrameStatus s) {
+    const Pose3 T = frames.empty() ? T_world_first : predict();
+    record(t, T, s, 0.0);
+    return s;
+  }
+
+  void rebuildLocalMap(bool force) {
+    const Vec3 here = kfs.back().T_world.translation();
+    if (!force && (here - local_map_at).norm() < cfg.local_map_update_m) return;
+    local_map_at = here;
+    Cloud edges, planes;
+    const int n = static_cast<int>(kfs.size());
+    for (int k = n - 1; k >= 0 && k >= n - cfg.local_map_keyframes; --k) {
+      const Keyframe& kf = kfs[static_cast<std::size_t>(k)];
+      if ((kf.T_world.translation() - here).norm() > cfg.local_map_radius_m) continue;
+      const Cloud e = transformed(kf.edges, kf.T_world), p = transformed(kf.planes, kf.T_world);
+      edges.insert(edges.end(), e.begin(), e.end());
+      planes.insert(planes.end(), p.begin(), p.end());
+    }
+    local_map.build(voxelFilter(edges, cfg.map_edge_voxel_m), voxelFilter(planes, cfg.map_surf_voxel_m));
+  }
+
+  /// Paper §3.3 / LeGO-LOAM: ICP of the new keyframe against an old keyframe's submap, then
+  /// pose-graph optimisation.
+  bool tryLoopClosure() {
+    const Keyframe& cur = kfs.back();
+    if (cur.t - last_loop_t < cfg.loop_cooldown_s || cur.t - last_attempt_t < 1.0) return false;
+    int best = -1;
+    double best_d = cfg.loop_radius_m;
+    for (std::size_t k = 0; k + 1 < kfs.size(); ++k) {
+      if (cur.t - kfs[k].t < cfg.loop_min_time_gap_s) break;  // keyframes are in time order
+      const double d = (kfs[k].T_world.translation() - cur.T_world.translation()).norm();
+      if (d < best_d) {
+        best_d = d;
+        best = static_cast<int>(k);
+      }
+    }
+    if (best < 0) return false;
+    last_attempt_t = cur.t;
+    ++loop_candidates;
+    Cloud target;
+    const int n = static_cast<int>(kfs.size());
+    for (int k = std::max(0, best - cfg.loop_submap_keyframes);
+         k <= std::min(n - 2, best + cfg.loop_submap_keyframes); ++k) {
+      const Keyframe& kf = kfs[static_cast<std::size_t>(k)];
+      if (cur.t - kf.t < cfg.loop_min_time_gap_s) continue;
+      const Cloud c = transformed(kf.cloud, kf.T_world);
+      target.insert(target.end(), c.begin(), c.end());
+    }
+    target = voxelFilter(target, cfg.loop_voxel_m);
+    const Cloud source = voxelFilter(cur.cloud, cfg.loop_voxel_m);
+    const IcpResult icp = icpPointToPlane(source, target, cur.T_world, cfg.loop_icp_iterations,
+                                          cfg.loop_icp_max_corr_m);
+    logDebug("loop candidate kf " + std::to_string(best) + " -> " + std::to_string(n - 1) +
+             ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
+             std::to_string(icp.inlier_ratio));
+    if (!(icp.fitness_m2 < cfg.loop_fitness_m2 && icp.inlier_ratio >= cfg.loop_min_inlier_ratio))
+      return false;
+    PoseGraphEdge e;
+    e.from = best;
+    e.to = n - 1;
+    e.T_from_to = kfs[static_cast<std::size_t>(best)].T_world.inverse() * icp.T_target_source;
+    e.sigma_m = cfg.graph_loop_sigma_m;
+    e.sigma_rad = cfg.graph_loop_sigma_rad;
+    loop_edges.push_back(e);
+    loops.push_back({best, n - 1, kfs[static_cast<std::size_t>(best)].t, cur.t, icp.fitness_m2});
+    last_loop_t = cur.t;
+    const auto t0 = Clock::now();
+    std::vector<Pose3> poses;
+    for (const auto& kf : kfs) poses.push_back(kf.T_world);
+    std::vector<PoseGraphEdge> edges = odom_edges;
+    edges.insert(edges.end(), loop_edges.begin(), loop_edges.end());
+    optimizePoseGraph(poses, edges, 0);
+    for (std::size_t k = 0; k < kfs.size(); ++k) kfs[k].T_world = poses[k];
+    times.pose_graph += since(t0);
+    logInfo("loop closure: keyframe " + std::to_string(n - 1) + " (t=" + std::to_string(cur.t) +
+            " s) matches keyframe " + std::to_string(best) + ", fitness " +
+            std::to_string(icp.fitness_m2) + " m^2");
+    return true;
+  }
+
+  void addKeyframe(double t, const Pose3& T_world, const Cloud& edges, const Cloud& planes,
+                   const Cloud& segmented) {
+    Keyframe kf;
+    kf.t = t;
+    kf.frame = static_cast<int>(frames.size());
+    kf.T_world = T_world;
+    kf.edges = edges;
+    kf.planes = planes;
+    kf.cloud = voxelFilter(segmented, cfg.map_voxel_m);
+    if (!kfs.empty()) {
+      PoseGraphEdge e;
+      e.from = static_cast<int>(kfs.size()) - 1;
+      e.to = e.from + 1;
+      e.T_from_to = kfs.back().T_world.inverse() * T_world;
+      e.sigma_m = cfg.graph_odom_sigma_m;
+      e.sigma_rad = cfg.graph_odom_sigma_rad;
+      odom_edges.push_back(e);
+    }
+    kfs.push_back(std::move(kf));
+    bool closed = false;
+    if (cfg.loop_closure) {
+      const auto t0 = Clock::now();
+      closed = tryLoopClosure();
+      times.loop_closure += since(t0);
+    }
+    const auto t0 = Clock::now();
+    rebuildLocalMap(closed || kfs.size() == 1);
+    times.local_map += since(t0);
+  }
+
+  FrameStatus addScan(const Scan& scan) {
+    const auto t_all = Clock::now();
+    auto t0 = Clock::now();
+    // 1. range-image projection, ground segmentation, clustering
+    RangeImage img = projectScan(scan, spec, cfg);
+    times.projection += since(t0);
+    if (img.valid_points == 0) {
+      times.total += since(t_all);
+      return addUnusable(scan.t, scan.points.empty() ? FrameStatus::Empty : FrameStatus::Invalid);
+    }
+    if (img.valid_points < cfg.min_valid_points) {
+      times.total += since(t_all);
+      return addUnusable(scan.t, FrameStatus::Invalid);
+    }
+    t0 = Clock::now();
+    segmentGround(img, cfg);
+    times.ground += since(t0);
+    t0 = Clock::now();
+    clusterRangeImage(img, cfg);
+    times.clustering += since(t0);
+    // 2. edge / planar features
+    t0 = Clock::now();
+    const FeatureSet f = extractFeatures(img, cfg);
+    const Cloud src_edges = capped(voxelFilter(f.less_sharp, cfg.map_edge_voxel_m), cfg.map_max_source_edges);
+    const Cloud src_planes = capped(cfg.map_surf_voxel_m == cfg.less_flat_voxel_m
+                                        ? f.less_flat
+                                        : voxelFilter(f.less_flat, cfg.map_surf_voxel_m),
+                                    cfg.map_max_source_planes);
+    times.features += since(t0);
+
+    const int index = static_cast<int>(frames.size());
+    if (!have_prev) {  // first usable scan: start (or restart) at the prediction
+      const Pose3 T = frames.empty() ? T_world_first : predict();
+      have_prev = true;
+      prev_scan.build(f.less_sharp, f.less_flat);
+      T_world_good = T;
+      good_frame = index;
+      addKeyframe(scan.t, T, src_edges, src_planes, f.segmented);
+      record(scan.t, kfs.back().T_world, FrameStatus::Ok, 1.0);
+      times.total += since(t_all);
+      return FrameStatus::Ok;
+    }
+    // 3. scan-to-scan odometry (LeGO-LOAM two-step: planar -> z/roll/pitch, edges -> x/y/yaw)
+    t0 = Clock::now();
+    const Pose3 pred = predict();
+    Pose3 T_prev_curr = T_world_good.inverse() * pred;
+    AlignOptions ao;
+    ao.iterations = cfg.odom_iterations;
+    ao.max_nn_m = cfg.odom_max_nn_m;
+    ao.huber_m = cfg.huber_m;
+    if (cfg.two_step_odometry) {
+      ao.dof_mask = kZ | kRoll | kPitch;
+      AlignResult r1 = alignFeatures(prev_scan, {}, f.flat, T_prev_curr, ao);
+      if (r1.plane_matches >= cfg.min_plane_features) T_prev_curr = r1.T_target_source;
+      ao.dof_mask = kX | kY | kYaw;
+      AlignResult r2 = alignFeatures(prev_scan, f.sharp, {}, T_prev_curr, ao);
+      if (r2.edge_matches >= cfg.min_edge_features) T_prev_curr = r2.T_target_source;
+    } else {
+      AlignResult r = alignFeatures(prev_scan, f.sharp, f.flat, T_prev_curr, ao);
+      if (r.edge_matches + r.plane_matches >= cfg.min_plane_features) T_prev_curr = r.T_target_source;
+    }
+    times.odometry += since(t0);
+    // 4. scan-to-map refinement against the local keyframe map
+    t0 = Clock::now();
+    Pose3 T_world = T_world_good * T_prev_curr;
+    AlignOptions mo;
+    mo.iterations = cfg.map_iterations;
+    mo.max_nn_m = cfg.map_max_nn_m;
+    mo.huber_m = cfg.huber_m;
+    const AlignResult m = alignFeatures(local_map, src_edges, src_planes, T_world, mo);
+    if (index % 50 == 0)
+      logDebug("scan " + std::to_string(index) + ": sharp " + std::to_string(f.sharp.size()) +
+               " flat " + std::to_string(f.flat.size()) + " src edges " + std::to_string(src_edges.size()) +
+               " src planes " + std::to_string(src_planes.size()) + " map edges " +
+               std::to_string(local_map.edges.size()) + " map planes " +
+               std::to_string(local_map.planes.size()) + " iterations " + std::to_string(m.iterations) +
+               " min eig " + std::to_string(m.min_eig_translation));
+    FrameStatus status = FrameStatus::Ok;
+    if (m.edge_matches < cfg.min_edge_features || m.plane_matches < cfg.min_plane_features) {
+      status = FrameStatus::FewFeatures;  // keep the odometry pose
+    } else {
+      T_world = m.T_target_source;
+      if (m.min_eig_translation < cfg.degeneracy_min_eig) status = FrameStatus::Degenerate;
+    }
+    times.mapping += since(t0);
+    // motion model for the next prediction
+    const int gap = index - good_frame;
+    if (gap == 1) velocity = T_world_good.inverse() * T_world;
+    prev_scan.build(f.less_sharp, f.less_flat);
+    T_world_good = T_world;
+    good_frame = index;
+    // 5. keyframes (+ loop closure and pose graph inside)
+    const Pose3 rel = kfs.back().T_world.inverse() * T_world;
+    if (rel.translation().norm() > cfg.keyframe_distance_m ||
+        rotationAngle(rel) > cfg.keyframe_angle_deg * std::numbers::pi / 180.0) {
+      addKeyframe(scan.t, T_world, src_edges, src_planes, f.segmented);
+      T_world = kfs.back().T_world;  // may have moved in the pose graph
+      T_world_good = T_world;
+    }
+    record(scan.t, T_world, status, m.min_eig_translation);
+    times.total += since(t_all);
+    return status;
+  }
+
+  SlamResult finish() {
+    SlamResult out;
+    for (const auto& r : frames) {
+      StampedPose sp;
+      sp.t = r.t;
+      sp.T_world_body = r.keyframe >= 0 ? kfs[static_cast<std::size_t>(r.keyframe)].T_world * r.T_kf_frame
+                                        : r.T_kf_frame;
+      out.trajectory.push_back(sp);
+      out.status.push_back(r.status);
+      out.min_eig.push_back(r.min_eig);
+    }
+    Cloud all;
+    for (const auto& kf : kfs) {
+      const Cloud c = transformed(kf.cloud, kf.T_world);
+      all.insert(all.end(), c.begin(), c.end());
+    }
+    out.map = voxelFilter(all, cfg.map_voxel_m);
+    out.loops = loops;
+    out.loop_candidates = loop_candidates;
+    out.keyframes = static_cast<int>(kfs.size());
+    out.times = times;
+    return out;
+  }
+};
+
+LidarSlam::LidarSlam(const Config& cfg, const LidarSpec& spec, const Pose3& T_world_first)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->cfg = cfg;
+  impl_->spec = spec;
+  impl_->T_world_first = T_world_first;
+  impl_->T_world_last = T_world_first;
+}
+LidarSlam::~LidarSlam() = default;
+FrameStatus LidarSlam::addScan(const Scan& scan) { return impl_->addScan(scan); }
+FrameStatus LidarSlam::addMissing(double t) { return impl_->addUnusable(t, FrameStatus::Missing); }
+Pose3 LidarSlam::currentPose() const { return impl_->T_world_last; }
+SlamResult LidarSlam::finish() { return impl_->finish(); }
+
+SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
+                   const std::function<void(std::size_t, std::size_t)>& progress) {
+  LidarSlam slam(cfg, source.spec(), T_world_first);
+  const std::size_t n = source.size();
+  std::size_t missing = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    Scan scan;
+    bool ok = true;
+    try {
+      scan = source.scan(i);
+    } catch (const std::exception& e) {
+      ok = false;
+      if (missing++ < 5) logWarn(std::string("scan ") + std::to_string(i) + ": " + e.what() +
+                                 " (predicting with constant velocity)");
+    }
+    if (ok) {
+      scan.t = source.time(i);
+      slam.addScan(scan);
+    } else {
+      slam.addMissing(source.time(i));
+    }
+    if (progress) progress(i + 1, n);
+  }
+  if (missing > 5) logWarn(std::to_string(missing) + " scans could not be read in total");
+  return slam.finish();
+}
+
+}  // namespace slamroute::evaluate

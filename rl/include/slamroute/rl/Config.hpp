@@ -1,0 +1,138 @@
+#pragma once
+// Parameters of the rl module (paper §3.2 and the baseline planners), with the paper's defaults
+// and units. YAML section "rl:".
+#include <cstdint>
+#include <string>
+
+namespace slamroute::rl {
+
+/// Extended information filter over the vehicle pose (x, y, heading): the R_U model (eq. 6).
+struct EifConfig {
+  double init_sigma_xy_m = 0.1;           ///< initial position std-dev [m]
+  double init_sigma_heading_rad = 0.01;   ///< initial heading std-dev [rad]
+  double long_var_per_m = 1e-3;           ///< along-track variance added per metre driven [m^2/m]
+  double lat_var_per_m = 5e-4;            ///< cross-track variance added per metre [m^2/m]
+  double heading_var_per_m = 2e-6;        ///< heading variance added per metre [rad^2/m]
+  double poor_weight_gain = 4.0;          ///< noise x (1 + gain * (1 - weight)): poor streets drift more
+  double closure_sigma_xy_m = 0.2;        ///< loop-closure registration std-dev, position [m]
+  double closure_sigma_heading_rad = 0.01;  ///< loop-closure registration std-dev, heading [rad]
+  double loop_min_travel_m = 50.0;        ///< a revisit is a loop closure after this much driving [m]
+};
+
+template <class V>
+void visitFields(V& v, EifConfig& c) {
+  v.field("init_sigma_xy_m", c.init_sigma_xy_m, "initial position std-dev [m]");
+  v.field("init_sigma_heading_rad", c.init_sigma_heading_rad, "initial heading std-dev [rad]");
+  v.field("long_var_per_m", c.long_var_per_m, "along-track variance added per metre [m^2/m]");
+  v.field("lat_var_per_m", c.lat_var_per_m, "cross-track variance added per metre [m^2/m]");
+  v.field("heading_var_per_m", c.heading_var_per_m, "heading variance added per metre [rad^2/m]");
+  v.field("poor_weight_gain", c.poor_weight_gain,
+          "motion noise is scaled by 1 + gain*(1 - edge weight) (weights normalised to [0,1])");
+  v.field("closure_sigma_xy_m", c.closure_sigma_xy_m, "loop-closure registration std-dev [m]");
+  v.field("closure_sigma_heading_rad", c.closure_sigma_heading_rad,
+          "loop-closure registration heading std-dev [rad]");
+  v.field("loop_min_travel_m", c.loop_min_travel_m,
+          "a revisit counts as a loop closure after this much driving since the last visit [m]");
+}
+
+/// Tabular Q-learning (paper §3.2, eqs. 5-7).
+struct QLearningConfig {
+  int episodes = 1000;          ///< training episodes (paper: 1000)
+  double gamma = 0.25;          ///< discount (paper: best of 0.25/0.5/0.75/0.9)
+  double alpha = 0.3;           ///< learning rate (paper: unspecified)
+  double epsilon_start = 1.0;   ///< epsilon-greedy exploration at the first episode
+  double epsilon_end = 0.05;    ///< ... reached linearly at epsilon_decay_fraction of the episodes
+  double epsilon_decay_fraction = 0.8;  ///< share of episodes over which epsilon decays
+  double max_steps_per_edge = 4.0;      ///< episode step cap = this * number of edges
+  int signature_bits = 4;       ///< state = arrival edge + "is new" bit of the first k actions (0 = position only)
+  double weight_coverage = 1.0;     ///< eq. 7 weight of R_C
+  double weight_accuracy = 1.0;     ///< eq. 7 weight of R_A
+  double weight_uncertainty = 20.0; ///< eq. 7 weight of R_U (paper: 20)
+  double step_length_cost = 0.1;    ///< R_C: cost per mean edge length driven (eq. 6 l_path)
+  bool complete_with_shortest_paths = true;  ///< finish a stalled greedy roll-out by shortest paths
+};
+
+template <class V>
+void visitFields(V& v, QLearningConfig& c) {
+  v.field("episodes", c.episodes, "training episodes (paper: 1000)");
+  v.field("gamma", c.gamma, "discount factor (paper: 0.25)");
+  v.field("alpha", c.alpha, "learning rate");
+  v.field("epsilon_start", c.epsilon_start, "epsilon-greedy exploration at episode 0");
+  v.field("epsilon_end", c.epsilon_end, "final exploration rate");
+  v.field("epsilon_decay_fraction", c.epsilon_decay_fraction,
+          "epsilon decays linearly over this share of the episodes");
+  v.field("max_steps_per_edge", c.max_steps_per_edge, "episode step cap = this * edge count");
+  v.field("signature_bits", c.signature_bits,
+          "state = arrival edge + 'target is new' bits of its first k actions (0..6; 0 = position only)");
+  v.field("weight_coverage", c.weight_coverage, "eq. 7 weight of R_C");
+  v.field("weight_accuracy", c.weight_accuracy, "eq. 7 weight of R_A");
+  v.field("weight_uncertainty", c.weight_uncertainty, "eq. 7 weight of R_U (paper: 20)");
+  v.field("step_length_cost", c.step_length_cost,
+          "R_C cost per mean-edge-length driven (the l_path term of eq. 6)");
+  v.field("complete_with_shortest_paths", c.complete_with_shortest_paths,
+          "finish a stalled greedy roll-out with shortest paths to the nearest uncovered part");
+}
+
+struct RandomConfig {
+  double max_steps_per_edge = 1000.0;  ///< random walk step cap = this * edge count, then shortest paths
+};
+
+template <class V>
+void visitFields(V& v, RandomConfig& c) {
+  v.field("max_steps_per_edge", c.max_steps_per_edge,
+          "random walk step cap = this * edge count (then finished by shortest paths)");
+}
+
+struct TspConfig {
+  int exact_max_nodes = 18;        ///< Held-Karp (exact) up to this many nodes (memory 2^(n-1)*n*8 B)
+  int christofides_max_nodes = 400;  ///< above: greedy tour + 2-opt instead of Christofides
+  int max_nodes = 3000;            ///< refuse above this (the distance matrix is n^2)
+  bool closed_tour = true;         ///< return to the start node (classic TSP tour)
+};
+
+template <class V>
+void visitFields(V& v, TspConfig& c) {
+  v.field("exact_max_nodes", c.exact_max_nodes,
+          "exact Held-Karp up to this many nodes; above, a heuristic tour (labelled in route.json)");
+  v.field("christofides_max_nodes", c.christofides_max_nodes,
+          "Christofides + 2-opt up to this many nodes; above, greedy tour + 2-opt (O(n^3) matching)");
+  v.field("max_nodes", c.max_nodes, "refuse graphs with more nodes (n^2 distance matrix)");
+  v.field("closed_tour", c.closed_tour, "return to the start node at the end");
+}
+
+struct PostmanConfig {
+  bool closed = true;  ///< the circuit returns to its start (Euler circuit)
+};
+
+template <class V>
+void visitFields(V& v, PostmanConfig& c) {
+  v.field("closed", c.closed, "route returns to the start node (otherwise the last return leg "
+                              "after full coverage is cut)");
+}
+
+struct Config {
+  std::string planner = "qlearning";  ///< qlearning | random | tsp | postman
+  std::string goal = "nodes";          ///< episode/coverage goal: nodes (paper) | edges (streets)
+  std::string reward = "full";         ///< full (eq. 7) | accuracy (R_A only, paper Table 2)
+  int start_node = -1;                 ///< start node id (-1: the first node of the planning graph)
+  EifConfig eif;
+  QLearningConfig qlearning;
+  RandomConfig random;
+  TspConfig tsp;
+  PostmanConfig postman;
+};
+
+template <class V>
+void visitFields(V& v, Config& c) {
+  v.field("planner", c.planner, "qlearning | random | tsp | postman");
+  v.field("goal", c.goal, "coverage goal: nodes (paper: every node visited) | edges (every street)");
+  v.field("reward", c.reward, "qlearning reward: full (eq. 7) | accuracy (R_A only, Table 2)");
+  v.field("start_node", c.start_node, "start node id (-1: first node of the planning graph)");
+  v.section("eif", c.eif);
+  v.section("qlearning", c.qlearning);
+  v.section("random", c.random);
+  v.section("tsp", c.tsp);
+  v.section("postman", c.postman);
+}
+
+}  // namespace slamroute::rl

@@ -1,0 +1,75 @@
+// plan(): planning graph, start node, planner dispatch, metrics.
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "slamroute/core/Log.hpp"
+#include "slamroute/rl/Planners.hpp"
+
+namespace slamroute::rl {
+
+Goal parseGoal(const std::string& name) {
+  if (name == "nodes") return Goal::Nodes;
+  if (name == "edges") return Goal::Edges;
+  throw std::invalid_argument("rl.goal: unknown goal '" + name + "' (expected nodes or edges)");
+}
+
+Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std::string& where) {
+  const std::string& p = cfg.planner;
+  if (p != "qlearning" && p != "random" && p != "tsp" && p != "postman")
+    throw std::invalid_argument("unknown planner '" + p +
+                                "' (expected qlearning, random, tsp or postman)");
+  if (cfg.reward != "full" && cfg.reward != "accuracy")
+    throw std::invalid_argument("unknown reward '" + cfg.reward + "' (expected full or accuracy)");
+  parseGoal(cfg.goal);
+  const auto t0 = std::chrono::steady_clock::now();
+  const PlanGraph pg = PlanGraph::build(g, where);
+  if (pg.dropped_nodes > 0 || pg.dropped_edges > 0)
+    logWarn(where + ": not strongly connected under its turn permissions; planning on the largest "
+                    "part (" + std::to_string(pg.n) + " nodes, " + std::to_string(pg.m) +
+            " edges; dropped " + std::to_string(pg.dropped_nodes) + " nodes, " +
+            std::to_string(pg.dropped_edges) + " edges)");
+  int start = 0;
+  if (cfg.start_node >= 0) {
+    if (cfg.start_node >= static_cast<int>(g.nodes.size()))
+      throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
+                                  " does not exist (the graph has " +
+                                  std::to_string(g.nodes.size()) + " nodes)");
+    start = pg.node_local[static_cast<std::size_t>(cfg.start_node)];
+    if (start < 0)
+      throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
+                                  " is unreachable (outside the largest strongly connected part)");
+  }
+  const TurnPaths paths(pg);
+  PlanOutput out;
+  if (p == "qlearning") out = planQLearning(pg, paths, cfg, start, seed);
+  else if (p == "random") out = planRandom(pg, paths, cfg, start, seed);
+  else if (p == "tsp") out = planTsp(pg, paths, cfg, start);
+  else out = planPostman(pg, paths, cfg, start);
+  const double secs =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  Route r;
+  r.planner = p;
+  r.seed = seed;
+  fillRouteMetrics(pg, g, start, out.edges, cfg.eif, r);
+  r.planning_seconds = secs;
+  r.heuristic = out.heuristic;
+  r.completed_by_shortest_paths = out.completed_by_shortest_paths;
+  r.notes = out.notes;
+  nlohmann::json extra = nlohmann::json::parse(out.extra_json.empty() ? "{}" : out.extra_json);
+  extra["goal"] = cfg.goal;
+  if (p == "qlearning") extra["reward"] = cfg.reward;
+  extra["plan_graph"] = {{"nodes", pg.n},
+                         {"edges", pg.m},
+                         {"dropped_nodes", pg.dropped_nodes},
+                         {"dropped_edges", pg.dropped_edges},
+                         {"turn_restricted", pg.restricted},
+                         {"total_edge_length_m", pg.total_edge_len}};
+  extra["illegal_turns"] = countIllegalTurns(pg, out.edges);
+  extra["start_node"] = pg.node_orig[static_cast<std::size_t>(start)];
+  r.extra_json = extra.dump();
+  return r;
+}
+
+}  // namespace slamroute::rl

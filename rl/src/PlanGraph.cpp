@@ -1,0 +1,200 @@
+// Building the planning graph (largest legally drivable part) and turn-aware shortest paths.
+#include "slamroute/rl/PlanGraph.hpp"
+
+#include <algorithm>
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/graph/strong_components.hpp>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace slamroute::rl {
+
+namespace {
+
+using LineGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
+
+std::size_t sz(int i) { return static_cast<std::size_t>(i); }
+
+}  // namespace
+
+PlanGraph PlanGraph::build(const RoadGraph& g, const std::string& where) {
+  if (g.nodes.empty() || g.edges.empty())
+    throw std::invalid_argument(where + ": the graph is empty (no nodes or no edges)");
+  g.validate(where);
+  const int m0 = static_cast<int>(g.edges.size());
+  // Components of the line graph: edge e -> f for every allowed turn (Boost strong_components).
+  LineGraph lg(sz(m0));
+  std::vector<std::vector<int>> nexts(sz(m0));
+  for (int e = 0; e < m0; ++e) {
+    nexts[sz(e)] = g.nextEdges(e);
+    for (int f : nexts[sz(e)]) boost::add_edge(sz(e), sz(f), lg);
+  }
+  std::vector<int> comp(sz(m0));
+  const int ncomp = boost::strong_components(
+      lg, boost::make_iterator_property_map(comp.begin(), boost::get(boost::vertex_index, lg)));
+  // The largest component that contains a cycle (a single edge without a self-turn is no part).
+  std::vector<int> count(sz(ncomp), 0);
+  for (int c : comp) ++count[sz(c)];
+  int best = -1;
+  for (int c = 0; c < ncomp; ++c) {
+    bool cyclic = count[sz(c)] > 1;
+    if (!cyclic)
+      for (int e = 0; e < m0 && !cyclic; ++e)
+        if (comp[sz(e)] == c)
+          for (int f : nexts[sz(e)]) cyclic = cyclic || f == e;
+    if (cyclic && (best < 0 || count[sz(c)] > count[sz(best)])) best = c;
+  }
+  if (best < 0)
+    throw std::invalid_argument(where + ": no route can be driven legally (no cycle under the turn "
+                                        "permissions)");
+
+  PlanGraph pg;
+  pg.restricted = g.restricted_turns;
+  pg.node_local.assign(g.nodes.size(), -1);
+  std::vector<int> edge_local(sz(m0), -1);
+  for (int e = 0; e < m0; ++e) {
+    if (comp[sz(e)] != best) continue;
+    const RoadEdge& re = g.edges[sz(e)];
+    for (int x : {re.u, re.v})
+      if (pg.node_local[sz(x)] < 0) {
+        pg.node_local[sz(x)] = pg.n++;
+        pg.node_orig.push_back(x);
+      }
+    edge_local[sz(e)] = pg.m++;
+    pg.edge_orig.push_back(e);
+  }
+  pg.dropped_nodes = static_cast<int>(g.nodes.size()) - pg.n;
+  pg.dropped_edges = m0 - pg.m;
+
+  double wmax = 0.0;
+  for (int e : pg.edge_orig) wmax = std::max(wmax, g.edges[sz(e)].weight);
+  std::map<int, int> street_id;
+  pg.out_off.assign(sz(pg.n) + 1, 0);
+  pg.next_off.assign(sz(pg.m) + 1, 0);
+  for (int le = 0; le < pg.m; ++le) {
+    const RoadEdge& re = g.edges[sz(pg.edge_orig[sz(le)])];
+    const int lu = pg.node_local[sz(re.u)], lv = pg.node_local[sz(re.v)];
+    pg.u.push_back(lu);
+    pg.v.push_back(lv);
+    pg.len.push_back(std::max(re.length_m, 0.0));
+    pg.weight.push_back(wmax > 0.0 ? std::clamp(re.weight / wmax, 0.0, 1.0) : 1.0);
+    const Point3& a = g.nodes[sz(re.u)].pos;
+    const Point3& b = g.nodes[sz(re.v)].pos;
+    pg.heading.push_back(std::atan2(b.y() - a.y(), b.x() - a.x()));
+    const int key = re.street >= 0 ? re.street : -1 - re.id;
+    auto [it, inserted] = street_id.try_emplace(key, pg.num_streets);
+    if (inserted) {
+      ++pg.num_streets;
+      pg.street_len.push_back(0.0);
+    }
+    pg.street.push_back(it->second);
+    pg.street_len[sz(it->second)] = std::max(pg.street_len[sz(it->second)], pg.len.back());
+    ++pg.out_off[sz(lu) + 1];
+    pg.total_edge_len += pg.len.back();
+  }
+  for (int i = 0; i < pg.n; ++i) pg.out_off[sz(i) + 1] += pg.out_off[sz(i)];
+  pg.out.assign(sz(pg.m), 0);
+  std::vector<int> fill(pg.out_off.begin(), pg.out_off.end() - 1);
+  for (int le = 0; le < pg.m; ++le) pg.out[sz(fill[sz(pg.u[sz(le)])]++)] = le;
+  for (int le = 0; le < pg.m; ++le) {
+    for (int f : nexts[sz(pg.edge_orig[sz(le)])])
+      if (edge_local[sz(f)] >= 0) pg.next.push_back(edge_local[sz(f)]);
+    pg.next_off[sz(le) + 1] = static_cast<int>(pg.next.size());
+  }
+  for (double l : pg.street_len) pg.total_street_len += l;
+  pg.mean_len = std::max(pg.total_edge_len / pg.m, 1e-6);
+  return pg;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+struct TurnPaths::Impl {
+  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+                                  boost::property<boost::edge_weight_t, double>>;
+  G g;
+};
+
+namespace {
+struct Found {
+  std::size_t vertex;
+};
+template <class Pred>
+struct StopAt : boost::default_dijkstra_visitor {
+  Pred pred;
+  explicit StopAt(Pred p) : pred(p) {}
+  template <class V, class G>
+  void examine_vertex(V x, const G&) {
+    if (pred(x)) throw Found{x};
+  }
+};
+}  // namespace
+
+TurnPaths::TurnPaths(const PlanGraph& pg) : pg_(pg), impl_(std::make_shared<Impl>()) {
+  impl_->g = Impl::G(sz(pg.m + pg.n));
+  for (int e = 0; e < pg.m; ++e)
+    for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) {
+      const int f = pg.next[sz(k)];
+      boost::add_edge(sz(e), sz(f), pg.len[sz(f)], impl_->g);
+    }
+  for (int i = 0; i < pg.n; ++i)
+    for (int k = pg.outBegin(i); k < pg.outEnd(i); ++k) {
+      const int f = pg.out[sz(k)];
+      boost::add_edge(sz(pg.m + i), sz(f), pg.len[sz(f)], impl_->g);
+    }
+}
+
+void TurnPaths::run(int from_edge, int from_node, std::vector<double>& dist,
+                    std::vector<int>& pred) const {
+  const std::size_t nv = boost::num_vertices(impl_->g);
+  const std::size_t src = from_edge >= 0 ? sz(from_edge) : sz(pg_.m + from_node);
+  dist.assign(nv, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> p(nv);
+  boost::dijkstra_shortest_paths(impl_->g, src,
+                                 boost::predecessor_map(p.data()).distance_map(dist.data()));
+  pred.assign(nv, -1);
+  for (std::size_t x = 0; x < nv; ++x)
+    if (p[x] != x) pred[x] = static_cast<int>(p[x]);
+}
+
+std::vector<double> TurnPaths::distances(int from_edge, int from_node) const {
+  std::vector<double> dist;
+  std::vector<int> pred;
+  run(from_edge, from_node, dist, pred);
+  dist.resize(sz(pg_.m));
+  return dist;
+}
+
+std::optional<TurnPaths::Path> TurnPaths::toNearest(int from_edge, int from_node,
+                                                    const std::function<bool(int)>& goal) const {
+  const std::size_t nv = boost::num_vertices(impl_->g);
+  const std::size_t src = from_edge >= 0 ? sz(from_edge) : sz(pg_.m + from_node);
+  std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> p(nv);
+  for (std::size_t x = 0; x < nv; ++x) p[x] = x;
+  const int m = pg_.m;
+  auto is_goal = [&, src](std::size_t x) {
+    return x != src && static_cast<int>(x) < m && goal(static_cast<int>(x));
+  };
+  std::size_t hit = nv;
+  try {
+    boost::dijkstra_shortest_paths(
+        impl_->g, src,
+        boost::predecessor_map(p.data()).distance_map(dist.data()).visitor(StopAt(is_goal)));
+  } catch (const Found& f) {
+    hit = f.vertex;
+  }
+  if (hit == nv) return std::nullopt;
+  Path path;
+  path.length_m = dist[hit];
+  for (std::size_t x = hit; x != src; x = p[x]) {
+    path.edges.push_back(static_cast<int>(x));
+    if (p[x] == x) return std::nullopt;  // defensive: broken predecessor chain
+  }
+  std::reverse(path.edges.begin(), path.edges.end());
+  return path;
+}
+
+}  // namespace slamroute::rl

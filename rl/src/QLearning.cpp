@@ -1,0 +1,287 @@
+// `qlearning`: tabular Q-learning on the road graph (paper §3.2, Fig. 4, eqs. 5-7).
+//
+// Choices the paper leaves open (all in rl.qlearning, documented here where they are made):
+//  - State. The paper's state is the position on the graph. Because turn permissions depend on
+//    where one came from, the position is the *arrival edge* (node state at the start). Coverage
+//    is not Markov in the position alone, so the state also carries a small local coverage
+//    signature: bit i = "action i reaches something not yet covered", for the first
+//    signature_bits actions (0 gives the paper's position-only state). Table size is
+//    sum over states of 2^bits * actions: flat float array, ~64 entries per edge.
+//  - Update: Q(s,a) += alpha * (R + gamma * max_a' Q(s',a') - Q(s,a)) (eq. 5 with a learning rate
+//    alpha; eq. 5 as printed is the alpha = 1 case). No bootstrap at the terminal step.
+//  - Exploration: epsilon-greedy, epsilon decays linearly from epsilon_start to epsilon_end over
+//    the first epsilon_decay_fraction of the episodes. Ties of the greedy choice go to the first
+//    action. Episodes start at the start node; an episode ends when the goal is met (every node
+//    visited, paper) or after max_steps_per_edge * edges steps.
+//  - Reward (eqs. 6-7): R = w_C R_C + w_A R_A + w_U R_U with w = 1, 1, 20 (paper).
+//      R_C = (new coverage) - step_length_cost * len/mean_len: +1 per newly visited node (goal
+//            nodes) or + street length / mean edge length per newly driven street (goal edges),
+//            minus the path length spent (our reading of eq. 6's l_path term).
+//      R_A = normalised edge weight in [0, 1] (eq. 6: weight(S_t, S_t+1)).
+//      R_U = change of log det L over the step / (20 * u_ref): the paper rewards det(L) (eq. 6);
+//            we reward its change in log form (what the action did to the information; the level
+//            itself would add an action-independent drift), normalised by u_ref = the mean
+//            per-edge drop of log det L when driving n mean-length edges of weight 1, so that
+//            the paper's weight 20 makes the term ~1 per edge like R_C and R_A (the paper chose
+//            its weights so that the terms have similar magnitude).
+//    reward = "accuracy" keeps only R_A (paper Table 2).
+//  - Route: greedy roll-out of the table from the start node. The greedy policy is
+//    deterministic, so returning to a state with no coverage progress since its last visit is a
+//    stall (it would cycle forever); then, if complete_with_shortest_paths, the route drives the
+//    shortest legal path to the nearest uncovered part and the roll-out resumes (route.json:
+//    completed_by_shortest_paths, and the segment count / length in extra).
+// Cost: episodes * steps, steps <= cap = O(edges): linear in the graph size; nothing is
+// allocated inside the episode loop.
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <stdexcept>
+
+#include "Coverage.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/rl/Eif.hpp"
+#include "slamroute/rl/Planners.hpp"
+
+namespace slamroute::rl {
+
+namespace {
+
+std::size_t sz(int i) { return static_cast<std::size_t>(i); }
+
+/// Action table over states: edge states 0..m-1, node states m..m+n-1.
+struct Table {
+  std::vector<int> act_off, act;  // CSR of target edges
+  std::vector<int> bits;          // signature bits per state
+  std::vector<std::size_t> qoff;  // Q offset per state
+  std::vector<float> q;
+  int deg(int s) const { return act_off[sz(s) + 1] - act_off[sz(s)]; }
+};
+
+Table buildTable(const PlanGraph& pg, int signature_bits) {
+  Table t;
+  const int ns = pg.m + pg.n;
+  t.act_off.assign(sz(ns) + 1, 0);
+  for (int s = 0; s < ns; ++s) {
+    if (s < pg.m)
+      for (int k = pg.nextBegin(s); k < pg.nextEnd(s); ++k) t.act.push_back(pg.next[sz(k)]);
+    else
+      for (int k = pg.outBegin(s - pg.m); k < pg.outEnd(s - pg.m); ++k) t.act.push_back(pg.out[sz(k)]);
+    t.act_off[sz(s) + 1] = static_cast<int>(t.act.size());
+  }
+  t.bits.resize(sz(ns));
+  t.qoff.resize(sz(ns) + 1, 0);
+  for (int s = 0; s < ns; ++s) {
+    t.bits[sz(s)] = std::min(t.deg(s), signature_bits);
+    t.qoff[sz(s) + 1] = t.qoff[sz(s)] + (std::size_t{1} << t.bits[sz(s)]) * sz(t.deg(s));
+  }
+  t.q.assign(t.qoff.back(), 0.0f);
+  return t;
+}
+
+/// Coverage of one episode, reset in O(1) by stamps.
+struct EpisodeCoverage {
+  const PlanGraph& pg;
+  Goal goal;
+  std::vector<int> node_stamp, street_stamp;
+  int stamp = 0, remaining = 0;
+  EpisodeCoverage(const PlanGraph& g, Goal gl)
+      : pg(g), goal(gl), node_stamp(sz(g.n), 0), street_stamp(sz(g.num_streets), 0) {}
+  void reset(int start) {
+    ++stamp;
+    remaining = goal == Goal::Nodes ? pg.n - 1 : pg.num_streets;
+    node_stamp[sz(start)] = stamp;
+  }
+  bool isNew(int e) const {
+    return goal == Goal::Nodes ? node_stamp[sz(pg.v[sz(e)])] != stamp
+                               : street_stamp[sz(pg.street[sz(e)])] != stamp;
+  }
+  /// New coverage gained by driving e, in R_C units.
+  double drive(int e) {
+    if (goal == Goal::Nodes) {
+      int& s = node_stamp[sz(pg.v[sz(e)])];
+      if (s == stamp) return 0.0;
+      s = stamp;
+      --remaining;
+      return 1.0;
+    }
+    node_stamp[sz(pg.v[sz(e)])] = stamp;
+    int& s = street_stamp[sz(pg.street[sz(e)])];
+    if (s == stamp) return 0.0;
+    s = stamp;
+    --remaining;
+    return pg.street_len[sz(pg.street[sz(e)])] / pg.mean_len;
+  }
+};
+
+int signature(const Table& t, int s, const std::vector<int>& act, const EpisodeCoverage& cov) {
+  int sig = 0;
+  const int b = t.act_off[sz(s)];
+  for (int i = 0; i < t.bits[sz(s)]; ++i) sig |= cov.isNew(act[sz(b + i)]) ? (1 << i) : 0;
+  return sig;
+}
+
+int greedy(const float* q, int deg) {
+  int best = 0;
+  for (int i = 1; i < deg; ++i)
+    if (q[i] > q[best]) best = i;
+  return best;
+}
+
+}  // namespace
+
+PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
+                         std::uint64_t seed) {
+  const QLearningConfig& qc = cfg.qlearning;
+  if (qc.episodes < 0 || qc.signature_bits < 0 || qc.signature_bits > 6 || qc.alpha <= 0 ||
+      qc.alpha > 1 || qc.gamma < 0 || qc.gamma >= 1)
+    throw std::invalid_argument("rl.qlearning: need episodes >= 0, 0 <= signature_bits <= 6, "
+                                "0 < alpha <= 1, 0 <= gamma < 1");
+  const Goal goal = parseGoal(cfg.goal);
+  const bool full = cfg.reward == "full";
+  Table t = buildTable(pg, qc.signature_bits);
+  const std::vector<int>& act = t.act;
+
+  // Precomputed per edge: motion model (EIF prediction) and accuracy reward.
+  std::vector<EdgeMotion> motion(sz(pg.m));
+  for (int e = 0; e < pg.m; ++e)
+    motion[sz(e)] = edgeMotion(cfg.eif, pg.len[sz(e)], pg.heading[sz(e)], pg.weight[sz(e)]);
+  // R_U normalisation u_ref (see header comment).
+  double u_ref = 1.0;
+  {
+    PoseEif f(cfg.eif);
+    const EdgeMotion mo = edgeMotion(cfg.eif, pg.mean_len, 0.0, 1.0);
+    const double l0 = f.logDetInfo();
+    for (int i = 0; i < pg.n; ++i) f.drive(mo);
+    u_ref = std::max((l0 - f.logDetInfo()) / std::max(pg.n, 1), 1e-12);
+  }
+  const double u_scale = 1.0 / (20.0 * u_ref);
+
+  EpisodeCoverage cov(pg, goal);
+  PoseEif eif(cfg.eif);
+  std::vector<Info3> node_info(sz(pg.n));
+  std::vector<double> node_travel(sz(pg.n), 0.0);
+  std::vector<int> node_stamp(sz(pg.n), 0);
+  std::mt19937_64 rng(seed);
+  auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  const long long cap = std::max<long long>(static_cast<long long>(qc.max_steps_per_edge * pg.m), 1);
+  const int decay_eps = std::max(1, static_cast<int>(qc.epsilon_decay_fraction * qc.episodes));
+  const double alpha = qc.alpha, gamma = qc.gamma;
+  long long total_steps = 0;
+  int completed_episodes = 0;
+
+  Progress progress("qlearning", sz(std::max(qc.episodes, 0)));
+  for (int ep = 0; ep < qc.episodes; ++ep) {
+    const double eps = qc.epsilon_start + (qc.epsilon_end - qc.epsilon_start) *
+                                              std::min(1.0, static_cast<double>(ep) / decay_eps);
+    cov.reset(start);
+    eif.reset();
+    node_info[sz(start)] = eif.info();
+    node_travel[sz(start)] = 0.0;
+    node_stamp[sz(start)] = ep + 1;
+    double travel = 0.0, logdet_info = eif.logDetInfo();
+    int s = pg.m + start;
+    int sig = signature(t, s, act, cov);
+    for (long long step = 0; step < cap; ++step) {
+      const int deg = t.deg(s);
+      float* qs = &t.q[t.qoff[sz(s)] + sz(sig) * sz(deg)];
+      const int i = uniform() < eps ? static_cast<int>(rng() % static_cast<std::uint64_t>(deg))
+                                    : greedy(qs, deg);
+      const int f = act[sz(t.act_off[sz(s)] + i)];
+      // Environment transition and reward (eqs. 6-7).
+      const double gained = cov.drive(f);
+      double r = qc.weight_accuracy * pg.weight[sz(f)];
+      if (full) {
+        travel += pg.len[sz(f)];
+        eif.drive(motion[sz(f)]);
+        const int w = pg.v[sz(f)];
+        if (node_stamp[sz(w)] == ep + 1) {
+          if (travel - node_travel[sz(w)] >= cfg.eif.loop_min_travel_m) eif.closeLoop(node_info[sz(w)]);
+          if (eif.info().determinant() > node_info[sz(w)].determinant()) node_info[sz(w)] = eif.info();
+        } else {
+          node_stamp[sz(w)] = ep + 1;
+          node_info[sz(w)] = eif.info();
+        }
+        node_travel[sz(w)] = travel;
+        const double ld = eif.logDetInfo();
+        r += qc.weight_coverage * (gained - qc.step_length_cost * pg.len[sz(f)] / pg.mean_len) +
+             qc.weight_uncertainty * (ld - logdet_info) * u_scale;
+        logdet_info = ld;
+      }
+      ++total_steps;
+      const bool done = cov.remaining == 0;
+      const int s2 = f;
+      const int sig2 = signature(t, s2, act, cov);
+      double target = r;
+      if (!done) {
+        const int deg2 = t.deg(s2);
+        const float* q2 = &t.q[t.qoff[sz(s2)] + sz(sig2) * sz(deg2)];
+        target += gamma * q2[greedy(q2, deg2)];
+      }
+      qs[i] += static_cast<float>(alpha * (target - qs[i]));
+      if (done) {
+        ++completed_episodes;
+        break;
+      }
+      s = s2;
+      sig = sig2;
+    }
+    progress.update(sz(ep + 1));
+  }
+  progress.finish();
+
+  // Greedy roll-out with stall detection (see header comment).
+  PlanOutput out;
+  detail::Coverage rc(pg, goal, start);
+  std::vector<int> seen_epoch(sz(pg.m + pg.n), -1);
+  int epoch = 0, segments = 0;
+  double sp_len = 0.0;
+  int s = pg.m + start;
+  const long long roll_cap = 10LL * pg.m + 10;
+  for (long long step = 0; !rc.done() && step < roll_cap; ++step) {
+    if (seen_epoch[sz(s)] == epoch) {  // stall: back in a state without progress
+      if (!qc.complete_with_shortest_paths) break;
+      auto p = paths.toNearest(s < pg.m ? s : -1, start, [&rc](int e) { return rc.isNew(e); });
+      if (!p) break;
+      for (int e : p->edges) {
+        rc.drive(e);
+        out.edges.push_back(e);
+      }
+      sp_len += p->length_m;
+      ++segments;
+      out.completed_by_shortest_paths = true;
+      s = out.edges.back();
+      ++epoch;
+      continue;
+    }
+    seen_epoch[sz(s)] = epoch;
+    // Signature of the roll-out's own coverage.
+    int sg = 0;
+    for (int i = 0; i < t.bits[sz(s)]; ++i)
+      sg |= rc.isNew(act[sz(t.act_off[sz(s)] + i)]) ? (1 << i) : 0;
+    const int deg = t.deg(s);
+    const int f = act[sz(t.act_off[sz(s)] + greedy(&t.q[t.qoff[sz(s)] + sz(sg) * sz(deg)], deg))];
+    if (rc.drive(f)) ++epoch;
+    out.edges.push_back(f);
+    s = f;
+  }
+  if (!rc.done() && qc.complete_with_shortest_paths) {
+    segments += detail::completeByShortestPaths(pg, paths, rc, start, out.edges, &sp_len);
+    out.completed_by_shortest_paths = true;
+  }
+  if (out.completed_by_shortest_paths)
+    out.notes = "greedy roll-out stalled " + std::to_string(segments) +
+                " time(s); completed by shortest paths to the nearest uncovered part";
+  out.heuristic = true;
+  out.extra_json = nlohmann::json{{"episodes", qc.episodes},
+                                  {"episodes_reaching_goal", completed_episodes},
+                                  {"training_steps", total_steps},
+                                  {"q_table_entries", t.q.size()},
+                                  {"u_ref_logdet_per_edge", u_ref},
+                                  {"shortest_path_segments", segments},
+                                  {"shortest_path_length_m", sp_len}}
+                       .dump();
+  return out;
+}
+
+}  // namespace slamroute::rl

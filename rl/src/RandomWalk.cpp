@@ -1,0 +1,40 @@
+// `random`: a uniform random walk over the allowed turns until the goal is met (paper Table 1's
+// "random route"). Capped at random.max_steps_per_edge * edges, then finished by shortest paths.
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "Coverage.hpp"
+#include "slamroute/rl/Planners.hpp"
+
+namespace slamroute::rl {
+
+PlanOutput planRandom(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
+                      std::uint64_t seed) {
+  detail::Coverage cov(pg, parseGoal(cfg.goal), start);
+  std::mt19937_64 rng(seed);
+  PlanOutput out;
+  const long long cap = static_cast<long long>(cfg.random.max_steps_per_edge * pg.m) + 1;
+  int cur_edge = -1;
+  for (long long step = 0; step < cap && !cov.done(); ++step) {
+    const int b = cur_edge < 0 ? pg.outBegin(start) : pg.nextBegin(cur_edge);
+    const int e = cur_edge < 0 ? pg.outEnd(start) : pg.nextEnd(cur_edge);
+    const std::vector<int>& acts = cur_edge < 0 ? pg.out : pg.next;
+    const int f = acts[static_cast<std::size_t>(b + static_cast<int>(rng() % static_cast<std::uint64_t>(e - b)))];
+    cov.drive(f);
+    out.edges.push_back(f);
+    cur_edge = f;
+  }
+  double extra = 0.0;
+  int segments = 0;
+  if (!cov.done()) {
+    segments = detail::completeByShortestPaths(pg, paths, cov, start, out.edges, &extra);
+    out.completed_by_shortest_paths = true;
+    out.notes = "random walk hit its step cap; finished by shortest paths";
+  }
+  out.heuristic = true;
+  out.extra_json = nlohmann::json{{"shortest_path_segments", segments},
+                                  {"shortest_path_length_m", extra}}.dump();
+  return out;
+}
+
+}  // namespace slamroute::rl

@@ -1,0 +1,31 @@
+#pragma once
+// Top level of `slamroute build-graph`: survey folder (or bare traces) -> graph.json + siblings.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "slamroute/roadgraph/DepthScore.hpp"
+#include "slamroute/roadgraph/GraphBuilder.hpp"
+#include "slamroute/roadgraph/SumoMatch.hpp"
+
+namespace slamroute::roadgraph {
+
+struct BuildInputs {
+  std::filesystem::path traces;       ///< traces.csv or SUMO FCD XML
+  std::filesystem::path depth_index;  ///< depth/index.csv; empty = no depth weights
+  std::filesystem::path net;          ///< SUMO net for validation + SUMO edge mapping; optional
+};
+/// DIR/traces.csv (or DIR/fcd.xml) and DIR/depth/index.csv when present. Throws naming DIR.
+BuildInputs surveyInputs(const std::filesystem::path& dir);
+
+struct BuildOutput {
+  GraphBuildResult built;  ///< built.graph carries weights, sumo_edges and metadata_json
+  WeightStats weights;
+  std::optional<ValidationResult> validation;
+};
+BuildOutput buildGraph(const BuildInputs& in, const Config& cfg);
+
+/// GRAPH.json plus GRAPH.geojson, GRAPH.graphml and GRAPH.png (coloured by weight).
+void writeGraphOutputs(const RoadGraph& graph, const std::filesystem::path& json_path);
+
+}  // namespace slamroute::roadgraph

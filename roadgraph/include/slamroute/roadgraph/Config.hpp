@@ -1,0 +1,123 @@
+#pragma once
+// Parameters of the roadgraph module, with the paper's defaults and units. YAML section "roadgraph:".
+// Paper §3.1 fixes only the hollow cylinder (10 m / 25 m / 10 m) and the 14 normal neighbours;
+// every other value is our choice, documented where it is used.
+#include <string>
+
+namespace slamroute::roadgraph {
+
+/// Intersection (node) detection with the hollow cylinder (paper §3.1, Fig. 2b).
+struct NodeConfig {
+  double downsample_m = 1.0;         ///< voxel size trace points are thinned to first [m]
+  double inner_radius_m = 10.0;      ///< hollow cylinder inner radius [m] (paper)
+  double outer_radius_m = 25.0;      ///< hollow cylinder outer radius [m] (paper)
+  double height_m = 10.0;            ///< hollow cylinder height, centred on the point [m] (paper)
+  /// Euclidean clustering distance inside the cylinder [m]. 4 m: a two-way street's lane
+  /// centres are 3.2 m apart and must form one cluster; streets further apart stay separate.
+  double cluster_tolerance_m = 4.0;
+  int min_cluster_points = 3;        ///< smaller clusters in the cylinder are noise [points]
+  double min_branch_span_m = 4.0;    ///< a cluster must span this much radially to be a branch [m]
+  double min_branch_angle_deg = 30.0;  ///< clusters seen closer in bearing are one branch [deg]
+  int min_branches = 3;              ///< clusters needed to call a point an intersection point
+  bool require_connected = true;     ///< count only branches linked to the point inside the disk
+  double merge_distance_m = 5.0;     ///< intersection points closer than this form one node [m]
+  int min_node_points = 3;           ///< fewer intersection points are discarded as noise
+  bool refine_centre = true;         ///< move the node to the least-squares crossing of its arms
+};
+template <class V>
+void visitFields(V& v, NodeConfig& c) {
+  v.field("downsample_m", c.downsample_m, "voxel size trace points are thinned to [m]");
+  v.field("inner_radius_m", c.inner_radius_m, "hollow cylinder inner radius [m] (paper 10)");
+  v.field("outer_radius_m", c.outer_radius_m, "hollow cylinder outer radius [m] (paper 25)");
+  v.field("height_m", c.height_m, "hollow cylinder height, centred on the point [m] (paper 10)");
+  v.field("cluster_tolerance_m", c.cluster_tolerance_m, "clustering distance in the cylinder [m]");
+  v.field("min_cluster_points", c.min_cluster_points, "smaller clusters are noise [points]");
+  v.field("min_branch_span_m", c.min_branch_span_m,
+          "radial extent a cluster needs to count as a branch (noise stubs do not) [m]");
+  v.field("min_branch_angle_deg", c.min_branch_angle_deg,
+          "clusters closer in bearing from the point are one branch (divided roads) [deg]");
+  v.field("min_branches", c.min_branches, "clusters that make an intersection point (paper 3)");
+  v.field("require_connected", c.require_connected,
+          "count only branches connected to the point inside the outer disk");
+  v.field("merge_distance_m", c.merge_distance_m, "intersection points closer form one node [m]");
+  v.field("min_node_points", c.min_node_points, "intersection points needed for a node");
+  v.field("refine_centre", c.refine_centre, "node at least-squares crossing of its arms");
+}
+
+/// Street (edge) clustering and attachment (paper §3.1, eqs. 1-2, Fig. 2c-d).
+struct EdgeConfig {
+  double clear_radius_m = 12.0;       ///< trace points this close to a node are removed [m]
+  double cluster_tolerance_m = 4.0;   ///< Euclidean clustering distance of street points [m]
+  int min_street_points = 5;          ///< smaller leftover clusters are dropped [points]
+  double attach_max_m = 22.0;         ///< a street end farther than this from a node dead-ends [m]
+  double polyline_step_m = 5.0;       ///< centreline vertex spacing [m]
+  double min_run_m = 8.0;             ///< travel along a street counted as a direction [m]
+  double max_gap_s = 3.0;             ///< a vehicle's trace breaks at larger time gaps [s]
+  int min_direction_runs = 1;         ///< runs needed to accept a direction of travel
+};
+template <class V>
+void visitFields(V& v, EdgeConfig& c) {
+  v.field("clear_radius_m", c.clear_radius_m, "points this close to a node are removed [m]");
+  v.field("cluster_tolerance_m", c.cluster_tolerance_m, "street clustering distance [m]");
+  v.field("min_street_points", c.min_street_points, "smaller clusters are dropped [points]");
+  v.field("attach_max_m", c.attach_max_m, "street end farther from any node is a dead end [m]");
+  v.field("polyline_step_m", c.polyline_step_m, "centreline vertex spacing [m]");
+  v.field("min_run_m", c.min_run_m, "travel along a street counted as a direction [m]");
+  v.field("max_gap_s", c.max_gap_s, "a vehicle's trace breaks at larger time gaps [s]");
+  v.field("min_direction_runs", c.min_direction_runs, "runs needed to accept a direction");
+}
+
+/// Edge weights from depth images (paper §3.1, eqs. 3-4).
+struct DepthConfig {
+  int pixel_stride = 4;              ///< use every n-th pixel in x and y [px]
+  int normal_neighbours = 14;        ///< nearest neighbours per normal (paper 14)
+  int search_window_px = 2;          ///< neighbour candidates within this many strided pixels
+  double depth_px_per_m = 40.0;      ///< eq. 3 scale: Y = D * this, so depth and pixels compare
+  double max_depth_m = 100.0;        ///< farther returns are ignored [m]
+  int min_normals = 50;              ///< fewer normals -> score 0 (nothing to match against)
+  double frame_max_dist_m = 20.0;    ///< frames farther from every street are ignored [m]
+  double fallback_weight = 1.0;      ///< weight when no depth frame is usable at all
+};
+template <class V>
+void visitFields(V& v, DepthConfig& c) {
+  v.field("pixel_stride", c.pixel_stride, "use every n-th pixel in x and y [px]");
+  v.field("normal_neighbours", c.normal_neighbours, "neighbours per normal (paper 14)");
+  v.field("search_window_px", c.search_window_px, "neighbour candidate window [strided px]");
+  v.field("depth_px_per_m", c.depth_px_per_m, "eq. 3 depth scale: Y = D[m] * this [px/m]");
+  v.field("max_depth_m", c.max_depth_m, "farther returns are ignored [m]");
+  v.field("min_normals", c.min_normals, "fewer normals give score 0");
+  v.field("frame_max_dist_m", c.frame_max_dist_m, "frames farther from every street ignored [m]");
+  v.field("fallback_weight", c.fallback_weight, "edge weight when no depth frame is usable");
+}
+
+/// Comparison with a SUMO net and mapping of graph edges to SUMO edges.
+struct SumoMatchConfig {
+  double match_radius_m = 15.0;     ///< detected node matches a true intersection this close [m]
+  double sample_step_m = 4.0;       ///< polyline sampling for the SUMO edge mapping [m]
+  double max_lane_dist_m = 12.0;    ///< samples farther from every lane are not mapped [m]
+  double end_skip_m = 8.0;          ///< samples this close to an end node are skipped [m]
+};
+template <class V>
+void visitFields(V& v, SumoMatchConfig& c) {
+  v.field("match_radius_m", c.match_radius_m, "node matches a true intersection this close [m]");
+  v.field("sample_step_m", c.sample_step_m, "polyline sampling for SUMO edge mapping [m]");
+  v.field("max_lane_dist_m", c.max_lane_dist_m, "samples farther from every lane unmapped [m]");
+  v.field("end_skip_m", c.end_skip_m, "samples this close to end nodes are skipped [m]");
+}
+
+struct Config {
+  NodeConfig nodes;
+  EdgeConfig edges;
+  DepthConfig depth;
+  SumoMatchConfig sumo;
+};
+
+template <class V>
+void visitFields(V& v, Config& c) {
+  v.section("nodes", c.nodes);
+  v.section("edges", c.edges);
+  v.section("depth", c.depth);
+  v.section("sumo", c.sumo);
+}
+
+}  // namespace slamroute::roadgraph

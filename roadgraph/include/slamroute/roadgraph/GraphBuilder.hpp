@@ -1,0 +1,30 @@
+#pragma once
+// Paper §3.1 steps 2-3 (Fig. 2c-d): streets from the trace points left after removing the nodes,
+// connected to their two nearest nodes (eqs. 1-2), with direction(s) of travel from the traces.
+#include <string>
+#include <vector>
+
+#include "slamroute/core/RoadGraph.hpp"
+#include "slamroute/roadgraph/Config.hpp"
+#include "slamroute/roadgraph/Traces.hpp"
+
+namespace slamroute::roadgraph {
+
+struct GraphBuildStats {
+  std::size_t trace_points = 0, voxels = 0, intersection_points = 0;
+  std::size_t intersections = 0, dead_ends = 0, streets = 0, one_way_streets = 0;
+  std::size_t unknown_direction_streets = 0, dropped_fragments = 0, isolated_nodes_dropped = 0;
+  double seconds = 0.0;
+};
+
+struct GraphBuildResult {
+  RoadGraph graph;               ///< weights all 1 until assignDepthWeights
+  std::vector<char> node_is_end;  ///< per graph node: a dead-end node (not an intersection)
+  GraphBuildStats stats;
+};
+
+/// Whole traces -> graph pipeline. Throws std::invalid_argument naming traces.source on bad
+/// traces and std::runtime_error when no intersection is found.
+GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg);
+
+}  // namespace slamroute::roadgraph

@@ -1,0 +1,41 @@
+#pragma once
+// Validation of a road graph against a SUMO net's true intersections, and the mapping of graph
+// edges to the SUMO edges they cover (so routes on the graph can be driven in SUMO).
+#include <string>
+#include <vector>
+
+#include "slamroute/core/RoadGraph.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/roadgraph/Config.hpp"
+
+namespace slamroute::roadgraph {
+
+struct TrueIntersection {
+  std::string junction;
+  Point3 pos = Point3::Zero();
+};
+/// Junctions with >= 3 distinct neighbouring junctions over passenger edges (either direction).
+std::vector<TrueIntersection> trueIntersections(const SumoNet& net);
+
+struct ValidationResult {
+  std::size_t true_intersections = 0, detected_nodes = 0, matched_nodes = 0;
+  double node_precision = 0.0, node_recall = 0.0, node_f1 = 0.0;
+  std::size_t true_chains = 0, detected_streets = 0, matched_streets = 0, found_chains = 0;
+  double edge_precision = 0.0, edge_recall = 0.0;
+  std::vector<std::string> missed_junctions;  ///< true intersections without a detected node
+  std::vector<int> false_nodes;               ///< detected intersection nodes without a match
+  std::vector<std::string> node_junction;     ///< per graph node, matched SUMO junction or ""
+  std::string toJson() const;                 ///< JSON object text
+};
+/// Compares the intersection nodes (node_is_end false) with the net's true intersections:
+/// one-to-one greedy matching within cfg.match_radius_m. An undirected detected street matches
+/// when its end nodes are matched to the two intersections of a real chain (chains pass through
+/// junctions with exactly 2 neighbours).
+ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<char>& node_is_end,
+                                    const SumoNet& net, const SumoMatchConfig& cfg);
+
+/// Fills RoadEdge::sumo_edges with the passenger SUMO edges along each edge, in driving order
+/// (nearest lane in the edge's direction of travel). Returns the number of edges left unmapped.
+std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchConfig& cfg);
+
+}  // namespace slamroute::roadgraph

@@ -1,0 +1,106 @@
+// `slamroute build-graph` pipeline: traces -> graph (§3.1 steps 1-3) -> depth weights (step 4)
+// -> optional SUMO validation and SUMO edge mapping -> graph.json and siblings.
+#include "slamroute/roadgraph/BuildGraph.hpp"
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "slamroute/core/Log.hpp"
+#include "slamroute/core/SumoNet.hpp"
+
+namespace slamroute::roadgraph {
+
+BuildInputs surveyInputs(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(dir)) throw std::runtime_error(dir.string() + ": survey folder not found");
+  BuildInputs in;
+  for (const char* name : {"traces.csv", "fcd.xml", "fcd.xml.gz"})
+    if (fs::exists(dir / name)) {
+      in.traces = dir / name;
+      break;
+    }
+  if (in.traces.empty())
+    throw std::runtime_error(dir.string() + ": survey folder has no traces.csv (or fcd.xml)");
+  if (fs::exists(dir / "depth" / "index.csv")) in.depth_index = dir / "depth" / "index.csv";
+  return in;
+}
+
+BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
+  BuildOutput out;
+  const Traces traces = readTraces(in.traces);
+  out.built = buildRoadGraph(traces, cfg);
+  RoadGraph& g = out.built.graph;
+
+  if (!in.depth_index.empty()) {
+    std::vector<DepthFrame> frames;
+    try {
+      frames = readDepthIndex(in.depth_index);
+    } catch (const std::exception& e) {
+      logWarn(std::string("depth: ") + e.what() + "; every edge gets the fallback weight");
+    }
+    out.weights = assignDepthWeights(g, frames, cfg.depth);
+  } else {
+    logWarn("depth: no depth/index.csv; every edge gets the fallback weight " +
+            std::to_string(cfg.depth.fallback_weight));
+    for (auto& e : g.edges) e.weight = cfg.depth.fallback_weight;
+    out.weights.fallback_weight = cfg.depth.fallback_weight;
+  }
+
+  if (!in.net.empty()) {
+    const SumoNet net = SumoNet::read(in.net);
+    out.validation = validateAgainstNet(g, out.built.node_is_end, net, cfg.sumo);
+    for (std::size_t n = 0; n < g.nodes.size(); ++n)
+      g.nodes[n].sumo_junction = out.validation->node_junction[n];
+    const std::size_t unmapped = mapSumoEdges(g, net, cfg.sumo);
+    if (unmapped > 0)
+      logWarn("build-graph: " + std::to_string(unmapped) + " edge(s) not mapped to SUMO edges");
+  }
+
+  const auto& st = out.built.stats;
+  nlohmann::json meta = {
+      {"generator", "slamroute build-graph (paper 3.1)"},
+      {"traces", in.traces.string()},
+      {"stats",
+       {{"trace_points", st.trace_points},
+        {"voxels", st.voxels},
+        {"intersection_points", st.intersection_points},
+        {"intersections", st.intersections},
+        {"dead_ends", st.dead_ends},
+        {"streets", st.streets},
+        {"one_way_streets", st.one_way_streets},
+        {"unknown_direction_streets", st.unknown_direction_streets},
+        {"seconds", st.seconds}}},
+      {"weights",
+       {{"depth_index", in.depth_index.string()},
+        {"frames", out.weights.frames},
+        {"scored", out.weights.scored},
+        {"failed", out.weights.failed},
+        {"unassigned", out.weights.unassigned},
+        {"streets_with_frames", out.weights.streets_with_frames},
+        {"mean_score", out.weights.mean_score},
+        {"score", "normalised entropy of the eigenvalues of the normals' scatter matrix"}}}};
+  std::vector<int> ends;
+  for (std::size_t n = 0; n < out.built.node_is_end.size(); ++n)
+    if (out.built.node_is_end[n]) ends.push_back(static_cast<int>(n));
+  meta["end_nodes"] = ends;
+  if (out.validation) {
+    meta["net"] = in.net.string();
+    meta["validation"] = nlohmann::json::parse(out.validation->toJson());
+  }
+  g.metadata_json = meta.dump();
+  return out;
+}
+
+void writeGraphOutputs(const RoadGraph& graph, const std::filesystem::path& json_path) {
+  auto sibling = [&](const char* ext) {
+    auto p = json_path;
+    p.replace_extension(ext);
+    return p;
+  };
+  graph.writeJson(json_path);
+  graph.writeGeoJson(sibling(".geojson"));
+  graph.writeGraphML(sibling(".graphml"));
+  graph.renderPng(sibling(".png"), "weight");
+}
+
+}  // namespace slamroute::roadgraph

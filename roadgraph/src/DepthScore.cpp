@@ -1,0 +1,307 @@
+// Paper §3.1 step 4: LiDAR matching quality from the spread of depth-image normals.
+//
+// Eq. 3 reprojects each pixel (x, y) with depth D as X = y, Y = D, Z = W - x ("only in the depth
+// direction"). The paper does not say in which unit D is compared with pixels; we scale it by
+// depth_px_per_m (40 px/m = the pixel footprint of a 90-degree, 800 px wide camera at 10 m), so a
+// surface tilted by 45 degrees at 10 m keeps roughly its tilt in the reprojected cloud.
+// Eq. 4: each normal is the smallest eigenvector of the covariance of the 14 nearest points
+// (3D distance, the point itself included, as a k-d tree k-NN would return). The candidates are
+// taken from a small window of the (strided) pixel grid: on a depth image the 3D neighbours of a
+// point are its image neighbours, so this equals the k-d tree answer except across depth jumps,
+// and costs O(1) per point.
+//
+// Spread score (the paper only says "the more widely the normals are spread, the higher"): the
+// normals' scatter matrix S = 1/N sum n n^T (sign-free, so n and -n count the same) has
+// eigenvalues l1 >= l2 >= l3 >= 0 with l1 + l2 + l3 = 1. Its normalised Shannon entropy
+//   score = -(sum l_k ln l_k) / ln 3   in [0, 1]
+// is 0 when every normal points one way (a single plane: a LiDAR scan of it constrains one
+// direction only), about 0.63 for two equally seen orthogonal planes and 1 when normals are spread
+// evenly over all three axes (a corner: planes in every direction, what LeGO-LOAM's planar and
+// edge features need). It grows with every additional well-represented direction, which is the
+// property the paper asks for, and it is invariant to the camera's orientation.
+// Frames with fewer than min_normals normals (sky, no returns) score 0.
+#include "slamroute/roadgraph/DepthScore.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+#include "PointGrid.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/Log.hpp"
+
+namespace slamroute::roadgraph {
+
+DepthImage readDepthPng(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error(path.string() + ": depth frame missing");
+  cv::Mat m;
+  try {
+    m = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error(path.string() + ": depth frame unreadable (" + e.what() + ")");
+  }
+  if (m.empty()) throw std::runtime_error(path.string() + ": depth frame corrupt or not an image");
+  if (m.type() != CV_16UC1)
+    throw std::runtime_error(path.string() + ": depth frame is not single-channel 16-bit");
+  DepthImage img;
+  img.width = m.cols;
+  img.height = m.rows;
+  img.mm.resize(static_cast<std::size_t>(m.cols) * static_cast<std::size_t>(m.rows));
+  for (int y = 0; y < m.rows; ++y) {
+    const auto* row = m.ptr<std::uint16_t>(y);
+    std::copy(row, row + m.cols, img.mm.begin() + static_cast<long>(y) * m.cols);
+  }
+  return img;
+}
+
+void writeDepthPng(const std::filesystem::path& path, const DepthImage& img) {
+  if (img.mm.size() != static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height))
+    throw std::invalid_argument(path.string() + ": depth image has inconsistent size");
+  const cv::Mat m(img.height, img.width, CV_16UC1, const_cast<std::uint16_t*>(img.mm.data()));
+  std::vector<uchar> buf;
+  if (!cv::imencode(".png", m, buf))
+    throw std::runtime_error(path.string() + ": cannot encode depth PNG");
+  writeFileAtomic(path, std::string(buf.begin(), buf.end()));
+}
+
+FrameScore scoreDepthImage(const DepthImage& img, const DepthConfig& cfg) {
+  if (img.width <= 0 || img.height <= 0 ||
+      img.mm.size() != static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height))
+    throw std::invalid_argument("depth image has inconsistent size");
+  const int s = std::max(1, cfg.pixel_stride);
+  const int k = std::max(3, cfg.normal_neighbours);
+  int w = std::max(1, cfg.search_window_px);
+  while ((2 * w + 1) * (2 * w + 1) < k) ++w;
+  const int gw = (img.width + s - 1) / s, gh = (img.height + s - 1) / s;
+  // Eq. 3: X = y, Y = D, Z = W - x (D scaled to pixel units, see above).
+  std::vector<Point3> P(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh));
+  std::vector<char> valid(P.size(), 0);
+  for (int gy = 0; gy < gh; ++gy)
+    for (int gx = 0; gx < gw; ++gx) {
+      const int x = gx * s, y = gy * s;
+      const double d = img.at(x, y) / 1000.0;
+      if (d <= 0.0 || d > cfg.max_depth_m) continue;
+      const std::size_t i = static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) +
+                            static_cast<std::size_t>(gx);
+      P[i] = Point3(y, d * cfg.depth_px_per_m, img.width - x);
+      valid[i] = 1;
+    }
+  Mat3 S = Mat3::Zero();
+  int count = 0;
+  std::vector<std::pair<double, int>> cand;
+  for (int gy = 0; gy < gh; ++gy)
+    for (int gx = 0; gx < gw; ++gx) {
+      const std::size_t i = static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) +
+                            static_cast<std::size_t>(gx);
+      if (!valid[i]) continue;
+      cand.clear();
+      for (int ay = std::max(0, gy - w); ay <= std::min(gh - 1, gy + w); ++ay)
+        for (int ax = std::max(0, gx - w); ax <= std::min(gw - 1, gx + w); ++ax) {
+          const std::size_t j = static_cast<std::size_t>(ay) * static_cast<std::size_t>(gw) +
+                                static_cast<std::size_t>(ax);
+          if (valid[j]) cand.emplace_back((P[j] - P[i]).squaredNorm(), static_cast<int>(j));
+        }
+      if (static_cast<int>(cand.size()) < k) continue;  // image border or sparse returns
+      std::nth_element(cand.begin(), cand.begin() + (k - 1), cand.end());
+      // Eq. 4: mean and covariance of the k nearest points, normal = smallest eigenvector.
+      Point3 mean = Point3::Zero();
+      for (int q = 0; q < k; ++q) mean += P[static_cast<std::size_t>(cand[static_cast<std::size_t>(q)].second)];
+      mean /= k;
+      Mat3 C = Mat3::Zero();
+      for (int q = 0; q < k; ++q) {
+        const Vec3 d = P[static_cast<std::size_t>(cand[static_cast<std::size_t>(q)].second)] - mean;
+        C += d * d.transpose();
+      }
+      C /= k;
+      Eigen::SelfAdjointEigenSolver<Mat3> es;
+      es.computeDirect(C);
+      const Vec3 n = es.eigenvectors().col(0).normalized();
+      if (!n.allFinite()) continue;
+      S += n * n.transpose();
+      ++count;
+    }
+  FrameScore fs;
+  fs.normals = count;
+  if (count < std::max(1, cfg.min_normals)) return fs;  // nothing to match against: score 0
+  S /= count;
+  Eigen::SelfAdjointEigenSolver<Mat3> es(S);
+  Vec3 l = es.eigenvalues().reverse().cwiseMax(0.0);
+  l /= std::max(l.sum(), 1e-12);
+  fs.eigenvalues = l;
+  double h = 0.0;
+  for (int q = 0; q < 3; ++q)
+    if (l[q] > 1e-12) h -= l[q] * std::log(l[q]);
+  fs.score = std::clamp(h / std::log(3.0), 0.0, 1.0);
+  return fs;
+}
+
+std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
+  std::ifstream in(index_csv);
+  if (!in) throw std::runtime_error(index_csv.string() + ": cannot open depth index");
+  std::string line;
+  if (!std::getline(in, line)) throw std::invalid_argument(index_csv.string() + ": empty depth index");
+  auto split = [](const std::string& l) {
+    std::vector<std::string> f;
+    std::string cur;
+    for (char c : l) {
+      if (c == ',') {
+        f.push_back(cur);
+        cur.clear();
+      } else if (c != '\r') {
+        cur.push_back(c);
+      }
+    }
+    f.push_back(cur);
+    return f;
+  };
+  const auto header = split(line);
+  auto col = [&](const std::string& name) {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return static_cast<int>(i);
+    return -1;
+  };
+  const int cx = col("x"), cy = col("y"), cz = col("z"), cf = col("file"), ct = col("t"),
+            cv = col("vehicle"), cn = col("frame");
+  if (cx < 0 || cy < 0 || cf < 0)
+    throw std::invalid_argument(index_csv.string() + ": depth index needs columns x, y and file");
+  std::vector<DepthFrame> frames;
+  const auto dir = index_csv.parent_path();
+  std::size_t lineno = 1;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.empty() || line == "\r") continue;
+    const auto f = split(line);
+    if (f.size() < header.size())
+      throw std::invalid_argument(index_csv.string() + ":" + std::to_string(lineno) +
+                                  ": too few columns");
+    DepthFrame fr;
+    try {
+      fr.pos = Point3(std::stod(f[static_cast<std::size_t>(cx)]), std::stod(f[static_cast<std::size_t>(cy)]),
+                      cz >= 0 ? std::stod(f[static_cast<std::size_t>(cz)]) : 0.0);
+      if (ct >= 0) fr.t = std::stod(f[static_cast<std::size_t>(ct)]);
+      if (cn >= 0) fr.frame = std::stol(f[static_cast<std::size_t>(cn)]);
+    } catch (const std::exception&) {
+      throw std::invalid_argument(index_csv.string() + ":" + std::to_string(lineno) +
+                                  ": unparsable number");
+    }
+    if (cv >= 0) fr.vehicle = f[static_cast<std::size_t>(cv)];
+    const std::filesystem::path file = f[static_cast<std::size_t>(cf)];
+    fr.file = file.is_absolute() ? file : dir / file;
+    frames.push_back(std::move(fr));
+  }
+  return frames;
+}
+
+WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& frames,
+                               const DepthConfig& cfg) {
+  WeightStats ws;
+  ws.frames = frames.size();
+  ws.fallback_weight = cfg.fallback_weight;
+  // Score every frame; frames are independent, so they run on all cores.
+  std::vector<double> score(frames.size(), std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::string> error(frames.size());
+  Progress progress("depth frames", frames.size());
+  std::mutex mu;
+  std::size_t done = 0;
+  tbb::parallel_for(std::size_t{0}, frames.size(), [&](std::size_t i) {
+    if (!frames[i].pos.allFinite()) {
+      error[i] = "frame " + std::to_string(frames[i].frame) + ": NaN position";
+    } else {
+      try {
+        score[i] = scoreDepthImage(readDepthPng(frames[i].file), cfg).score;
+      } catch (const std::exception& e) {
+        error[i] = e.what();
+      }
+    }
+    std::lock_guard<std::mutex> lock(mu);
+    ++done;
+    if (done % 64 == 0) progress.update(done);
+  });
+  progress.finish();
+  std::size_t shown = 0;
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    if (!error[i].empty()) {
+      ++ws.failed;
+      if (shown++ < 5) logWarn("depth: skipping frame: " + error[i]);
+    }
+  if (ws.failed > 5) logWarn("depth: " + std::to_string(ws.failed) + " frames skipped in total");
+
+  // Frame -> street: nearest street polyline (sampled every metre), within frame_max_dist_m.
+  int nstreets = 0;
+  std::vector<int> street_edge;  // first edge of each street
+  for (const auto& e : graph.edges) nstreets = std::max(nstreets, e.street + 1);
+  street_edge.assign(static_cast<std::size_t>(nstreets), -1);
+  for (const auto& e : graph.edges)
+    if (e.street >= 0 && street_edge[static_cast<std::size_t>(e.street)] < 0)
+      street_edge[static_cast<std::size_t>(e.street)] = e.id;
+  std::vector<Point3> samples;
+  std::vector<int> sample_street;
+  for (int s = 0; s < nstreets; ++s) {
+    if (street_edge[static_cast<std::size_t>(s)] < 0) continue;
+    const auto& pl = graph.edges[static_cast<std::size_t>(street_edge[static_cast<std::size_t>(s)])].polyline;
+    for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
+      const int m = std::max(1, static_cast<int>(std::ceil((pl[k + 1] - pl[k]).norm())));
+      for (int q = 0; q < m; ++q) {
+        samples.push_back(pl[k] + (pl[k + 1] - pl[k]) * (static_cast<double>(q) / m));
+        sample_street.push_back(s);
+      }
+    }
+    if (!pl.empty()) {
+      samples.push_back(pl.back());
+      sample_street.push_back(s);
+    }
+  }
+  ws.streets = static_cast<std::size_t>(nstreets);
+  std::vector<double> sum(static_cast<std::size_t>(nstreets), 0.0);
+  std::vector<int> cnt(static_cast<std::size_t>(nstreets), 0);
+  double total = 0.0;
+  const detail::PointGrid grid(samples, std::max(cfg.frame_max_dist_m, 1.0));
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    if (std::isnan(score[i])) continue;
+    ++ws.scored;
+    total += score[i];
+    int best = -1;
+    double bd = std::numeric_limits<double>::infinity();
+    grid.forEachNear(frames[i].pos, cfg.frame_max_dist_m, cfg.frame_max_dist_m, [&](int j) {
+      const double d = (samples[static_cast<std::size_t>(j)] - frames[i].pos).squaredNorm();
+      if (d < bd) {
+        bd = d;
+        best = sample_street[static_cast<std::size_t>(j)];
+      }
+    });
+    if (best < 0) {
+      ++ws.unassigned;
+      continue;
+    }
+    sum[static_cast<std::size_t>(best)] += score[i];
+    ++cnt[static_cast<std::size_t>(best)];
+  }
+  ws.mean_score = ws.scored > 0 ? total / static_cast<double>(ws.scored) : 0.0;
+  // Documented fallback: a street without a usable frame gets the mean score of all frames; with
+  // no usable frame at all every edge gets cfg.fallback_weight (1, RoadEdge's default).
+  const double fallback = ws.scored > 0 ? ws.mean_score : cfg.fallback_weight;
+  if (ws.scored == 0)
+    logWarn("depth: no usable depth frame; every edge gets the fallback weight " +
+            std::to_string(cfg.fallback_weight));
+  for (int s = 0; s < nstreets; ++s)
+    if (cnt[static_cast<std::size_t>(s)] > 0) ++ws.streets_with_frames;
+  if (ws.scored > 0 && ws.streets_with_frames < ws.streets)
+    logWarn("depth: " + std::to_string(ws.streets - ws.streets_with_frames) +
+            " street(s) without a depth frame get the mean score " + std::to_string(fallback));
+  for (auto& e : graph.edges) {
+    const auto s = static_cast<std::size_t>(e.street);
+    e.weight = (e.street >= 0 && cnt[s] > 0) ? sum[s] / cnt[s] : fallback;
+  }
+  return ws;
+}
+
+}  // namespace slamroute::roadgraph

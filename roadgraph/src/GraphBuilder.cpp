@@ -1,0 +1,320 @@
+// Paper §3.1 steps 2-3: streets and the graph.
+//
+// Choices the paper leaves open (documented here, configurable in EdgeConfig):
+// - "Node points and their neighbourhood" = trace points within clear_radius_m (horizontal, and
+//   within half the cylinder height) of a node. 12 m: just beyond the 10 m inner radius, so the
+//   arms of a junction fall apart, while streets shorter than 24 m between junctions survive.
+// - Eqs. 1-2 (the two nodes nearest to any point of the street) are evaluated at the street's two
+//   geodesic ends only, so a street passing close to another junction is not attached to it. A
+//   street end with no node within attach_max_m is a dead end and gets an end node there.
+// - Leftover pieces whose both ends lie near the same node (corner cuts inside a junction) are
+//   dropped; they are not streets.
+// - Centreline: points are ordered by geodesic distance (Dijkstra over the cluster's
+//   neighbourhood graph) from one end and averaged in polyline_step_m bins; robust to GPS noise
+//   across the road and to curves.
+// - Direction of travel: each vehicle's consecutive points on a street form a run; a run that
+//   advances more than min_run_m along the centreline counts for that direction. A street with
+//   runs in one direction only is one-way (one directed edge); with both, or with no usable run
+//   (then logged), it is two-way (two RoadEdges sharing `street`).
+#include "slamroute/roadgraph/GraphBuilder.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <stdexcept>
+
+#include "PointGrid.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/roadgraph/Intersections.hpp"
+
+namespace slamroute::roadgraph {
+namespace {
+
+using detail::PointGrid;
+
+struct Street {
+  std::vector<int> members;  ///< indices into the street point subset
+  Polyline centre;           ///< ordered A -> B, without node positions
+  int a = -1, b = -1;        ///< end points (subset indices)
+  int u = -1, v = -1;        ///< node ids (end nodes appended after intersections)
+};
+
+/// Arc-length position of the projection of p on a polyline.
+double arcPosition(const Polyline& pl, const Point3& p) {
+  double best = std::numeric_limits<double>::infinity(), best_s = 0.0, s = 0.0;
+  for (std::size_t i = 0; i + 1 < pl.size(); ++i) {
+    const Vec3 d = pl[i + 1] - pl[i];
+    const double len = d.norm();
+    const double t = len > 1e-9 ? std::clamp((p - pl[i]).dot(d) / (len * len), 0.0, 1.0) : 0.0;
+    const double dist = (pl[i] + t * d - p).squaredNorm();
+    if (dist < best) {
+      best = dist;
+      best_s = s + t * len;
+    }
+    s += len;
+  }
+  return best_s;
+}
+
+/// Geodesic (Dijkstra) distances from `src` within one street cluster; dist is indexed by subset
+/// index and only entries of `members` are touched.
+void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::vector<int>& label,
+              int comp, double tol, int src, std::vector<double>& dist) {
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> pq;
+  dist[static_cast<std::size_t>(src)] = 0.0;
+  pq.emplace(0.0, src);
+  const double tol2 = tol * tol;
+  while (!pq.empty()) {
+    const auto [d, i] = pq.top();
+    pq.pop();
+    if (d > dist[static_cast<std::size_t>(i)]) continue;
+    const Point3& p = pts[static_cast<std::size_t>(i)];
+    grid.forEachNear(p, tol, tol, [&](int j) {
+      if (label[static_cast<std::size_t>(j)] != comp) return;
+      const double d2 = (pts[static_cast<std::size_t>(j)] - p).squaredNorm();
+      if (d2 > tol2) return;
+      const double nd = d + std::sqrt(d2);
+      if (nd < dist[static_cast<std::size_t>(j)]) {
+        dist[static_cast<std::size_t>(j)] = nd;
+        pq.emplace(nd, j);
+      }
+    });
+  }
+}
+
+}  // namespace
+
+GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
+  const auto t0 = std::chrono::steady_clock::now();
+  checkTraces(traces, traces.source.empty() ? "traces" : traces.source);
+  const std::string where = traces.source.empty() ? "traces" : traces.source;
+  const EdgeConfig& ec = cfg.edges;
+  if (!(ec.clear_radius_m > 0 && ec.cluster_tolerance_m > 0 && ec.polyline_step_m > 0))
+    throw std::invalid_argument("roadgraph.edges: radii, tolerance and step must be > 0");
+  GraphBuildResult out;
+  auto& st = out.stats;
+  st.trace_points = traces.points.size();
+
+  std::vector<Point3> raw;
+  raw.reserve(traces.points.size());
+  for (const auto& p : traces.points) raw.push_back(p.pos);
+  const Downsampled ds = downsample(raw, cfg.nodes.downsample_m);
+  st.voxels = ds.points.size();
+  logInfo("build-graph: " + std::to_string(raw.size()) + " trace points -> " +
+          std::to_string(ds.points.size()) + " voxels");
+
+  // Step 1: nodes (hollow cylinder).
+  const IntersectionResult ir = detectIntersections(ds.points, cfg.nodes);
+  st.intersection_points = static_cast<std::size_t>(
+      std::count(ir.is_intersection.begin(), ir.is_intersection.end(), 1));
+  if (ir.nodes.empty())
+    throw std::runtime_error(where +
+                             ": no intersection found in the traces (no point sees >= " +
+                             std::to_string(cfg.nodes.min_branches) +
+                             " branches in the hollow cylinder); a road graph needs junctions");
+  std::vector<Point3> nodes = ir.nodes;
+  const std::size_t n_inter = nodes.size();
+
+  // Step 2: remove node neighbourhoods, cluster the rest into streets.
+  const double half_h = 0.5 * cfg.nodes.height_m;
+  const PointGrid node_grid(nodes, std::max(ec.clear_radius_m, 1.0));
+  std::vector<int> subset_of(ds.points.size(), -1);
+  std::vector<Point3> sp;
+  std::vector<int> sp_voxel;
+  for (std::size_t i = 0; i < ds.points.size(); ++i) {
+    bool near = false;
+    node_grid.forEachNear(ds.points[i], ec.clear_radius_m, half_h, [&](int) { near = true; });
+    if (near) continue;
+    subset_of[i] = static_cast<int>(sp.size());
+    sp.push_back(ds.points[i]);
+    sp_voxel.push_back(static_cast<int>(i));
+  }
+  int ncomp = 0;
+  const std::vector<int> label = detail::euclideanComponents(sp, ec.cluster_tolerance_m, &ncomp);
+  std::vector<std::vector<int>> comps(static_cast<std::size_t>(ncomp));
+  for (std::size_t k = 0; k < sp.size(); ++k)
+    comps[static_cast<std::size_t>(label[k])].push_back(static_cast<int>(k));
+
+  auto nearestNode = [&](const Point3& p, int exclude) {
+    int best = -1;
+    double bd = ec.attach_max_m;
+    for (std::size_t j = 0; j < n_inter; ++j) {
+      if (static_cast<int>(j) == exclude || std::abs(nodes[j].z() - p.z()) > half_h) continue;
+      const double d = (nodes[j] - p).head<2>().norm();
+      if (d <= bd) {
+        bd = d;
+        best = static_cast<int>(j);
+      }
+    }
+    return best;
+  };
+
+  const PointGrid sp_grid(sp, std::max(ec.cluster_tolerance_m, 0.1));
+  std::vector<double> dist(sp.size(), std::numeric_limits<double>::infinity());
+  std::vector<Street> streets;
+  std::vector<int> street_of_comp(static_cast<std::size_t>(ncomp), -1);
+  for (int c = 0; c < ncomp; ++c) {
+    const auto& mem = comps[static_cast<std::size_t>(c)];
+    if (static_cast<int>(mem.size()) < ec.min_street_points) continue;
+    auto farthest = [&](int src) {
+      for (int i : mem) dist[static_cast<std::size_t>(i)] = std::numeric_limits<double>::infinity();
+      geodesic(sp, sp_grid, label, c, ec.cluster_tolerance_m, src, dist);
+      int best = src;
+      for (int i : mem)
+        if (std::isfinite(dist[static_cast<std::size_t>(i)]) &&
+            dist[static_cast<std::size_t>(i)] > dist[static_cast<std::size_t>(best)])
+          best = i;
+      return best;
+    };
+    Street s;
+    s.members = mem;
+    s.a = farthest(mem.front());
+    s.b = farthest(s.a);  // dist now holds geodesic distances from a
+    const Point3 pa = sp[static_cast<std::size_t>(s.a)], pb = sp[static_cast<std::size_t>(s.b)];
+    // Eqs. 1-2 at the street's ends: nearest node j, then nearest node k != j.
+    int na = nearestNode(pa, -1), nb = nearestNode(pb, -1);
+    if (na >= 0 && na == nb) {
+      const double da = (nodes[static_cast<std::size_t>(na)] - pa).head<2>().norm();
+      const double db = (nodes[static_cast<std::size_t>(na)] - pb).head<2>().norm();
+      if (da <= db) nb = nearestNode(pb, na); else na = nearestNode(pa, nb);
+      if (na < 0 || nb < 0) {  // both ends at one node: a corner cut or a loop, not a street
+        ++st.dropped_fragments;
+        continue;
+      }
+    }
+    // Centreline from a to b: centroids of geodesic-distance bins.
+    const double total = dist[static_cast<std::size_t>(s.b)];
+    const int nbins = std::max(1, static_cast<int>(std::ceil(total / ec.polyline_step_m)));
+    std::vector<Point3> bsum(static_cast<std::size_t>(nbins) + 1, Point3::Zero());
+    std::vector<int> bcnt(static_cast<std::size_t>(nbins) + 1, 0);
+    for (int i : mem) {
+      const double d = dist[static_cast<std::size_t>(i)];
+      if (!std::isfinite(d)) continue;
+      const auto bin = static_cast<std::size_t>(std::min(nbins, static_cast<int>(d / ec.polyline_step_m)));
+      bsum[bin] += sp[static_cast<std::size_t>(i)];
+      ++bcnt[bin];
+    }
+    for (std::size_t k = 0; k < bsum.size(); ++k)
+      if (bcnt[k] > 0) s.centre.push_back(bsum[k] / bcnt[k]);
+    if (s.centre.empty()) continue;
+    // Dead ends get an end node at the last centreline point.
+    auto endNode = [&](const Point3& p) {
+      nodes.push_back(p);
+      ++st.dead_ends;
+      return static_cast<int>(nodes.size()) - 1;
+    };
+    s.u = na >= 0 ? na : endNode(s.centre.front());
+    s.v = nb >= 0 ? nb : endNode(s.centre.back());
+    street_of_comp[static_cast<std::size_t>(c)] = static_cast<int>(streets.size());
+    streets.push_back(std::move(s));
+  }
+  st.streets = streets.size();
+
+  // Full polylines node u -> node v.
+  std::vector<Polyline> polys;
+  for (const auto& s : streets) {
+    Polyline pl;
+    if (s.u < static_cast<int>(n_inter)) pl.push_back(nodes[static_cast<std::size_t>(s.u)]);
+    pl.insert(pl.end(), s.centre.begin(), s.centre.end());
+    if (s.v < static_cast<int>(n_inter)) pl.push_back(nodes[static_cast<std::size_t>(s.v)]);
+    if (pl.size() < 2) pl.push_back(pl.back());
+    polys.push_back(std::move(pl));
+  }
+
+  // Directions of travel from each vehicle's runs along a street.
+  std::vector<int> street_of_point(traces.points.size(), -1);
+  for (std::size_t i = 0; i < traces.points.size(); ++i) {
+    const int k = subset_of[static_cast<std::size_t>(ds.voxel_of[i])];
+    if (k >= 0) street_of_point[i] = street_of_comp[static_cast<std::size_t>(label[static_cast<std::size_t>(k)])];
+  }
+  std::vector<std::size_t> order(traces.points.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto &pa = traces.points[a], &pb = traces.points[b];
+    return pa.vehicle != pb.vehicle ? pa.vehicle < pb.vehicle : pa.t < pb.t;
+  });
+  std::vector<int> fwd(streets.size(), 0), bwd(streets.size(), 0);
+  auto closeRun = [&](int s, std::size_t first, std::size_t last) {
+    if (s < 0 || first == last) return;
+    const auto& pl = polys[static_cast<std::size_t>(s)];
+    const double len = polylineLength(pl);
+    const double need = std::min(ec.min_run_m, 0.4 * len);
+    const double ds_ = arcPosition(pl, traces.points[last].pos) - arcPosition(pl, traces.points[first].pos);
+    if (ds_ > need) ++fwd[static_cast<std::size_t>(s)];
+    if (ds_ < -need) ++bwd[static_cast<std::size_t>(s)];
+  };
+  std::size_t run_first = order.empty() ? 0 : order[0];
+  for (std::size_t k = 1; k <= order.size(); ++k) {
+    const std::size_t prev = order[k - 1];
+    const bool breaks =
+        k == order.size() ||
+        traces.points[order[k]].vehicle != traces.points[prev].vehicle ||
+        traces.points[order[k]].t - traces.points[prev].t > ec.max_gap_s ||
+        street_of_point[order[k]] != street_of_point[prev];
+    if (!breaks) continue;
+    closeRun(street_of_point[prev], run_first, prev);
+    if (k < order.size()) run_first = order[k];
+  }
+
+  // Assemble the RoadGraph; nodes without edges are dropped (a planner must reach every node).
+  std::vector<int> degree(nodes.size(), 0);
+  for (const auto& s : streets) {
+    ++degree[static_cast<std::size_t>(s.u)];
+    ++degree[static_cast<std::size_t>(s.v)];
+  }
+  std::vector<int> new_id(nodes.size(), -1);
+  RoadGraph& g = out.graph;
+  for (std::size_t j = 0; j < nodes.size(); ++j) {
+    if (degree[j] == 0) {
+      ++st.isolated_nodes_dropped;
+      continue;
+    }
+    new_id[j] = static_cast<int>(g.nodes.size());
+    RoadNode rn;
+    rn.id = new_id[j];
+    rn.pos = nodes[j];
+    g.nodes.push_back(rn);
+    out.node_is_end.push_back(j >= n_inter ? 1 : 0);
+  }
+  st.intersections = static_cast<std::size_t>(
+      std::count(out.node_is_end.begin(), out.node_is_end.end(), 0));
+  for (std::size_t k = 0; k < streets.size(); ++k) {
+    const int u = new_id[static_cast<std::size_t>(streets[k].u)];
+    const int v = new_id[static_cast<std::size_t>(streets[k].v)];
+    bool f = fwd[k] >= ec.min_direction_runs, b = bwd[k] >= ec.min_direction_runs;
+    if (!f && !b) {
+      ++st.unknown_direction_streets;
+      f = b = true;  // no usable evidence: assume two-way
+    } else if (f != b) {
+      ++st.one_way_streets;
+    }
+    auto add = [&](int from, int to, Polyline pl) {
+      RoadEdge e;
+      e.id = static_cast<int>(g.edges.size());
+      e.u = from;
+      e.v = to;
+      e.length_m = polylineLength(pl);
+      e.polyline = std::move(pl);
+      e.street = static_cast<int>(k);
+      g.edges.push_back(std::move(e));
+    };
+    if (f) add(u, v, polys[k]);
+    if (b) add(v, u, Polyline(polys[k].rbegin(), polys[k].rend()));
+  }
+  if (st.unknown_direction_streets > 0)
+    logWarn("build-graph: " + std::to_string(st.unknown_direction_streets) +
+            " street(s) without a usable run of travel; assumed two-way");
+  g.validate(where);
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  logInfo("build-graph: " + std::to_string(st.intersections) + " intersections, " +
+          std::to_string(st.dead_ends) + " dead ends, " + std::to_string(st.streets) +
+          " streets (" + std::to_string(st.one_way_streets) + " one-way), " +
+          std::to_string(g.edges.size()) + " directed edges");
+  return out;
+}
+
+}  // namespace slamroute::roadgraph

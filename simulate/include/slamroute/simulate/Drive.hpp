@@ -1,0 +1,97 @@
+#pragma once
+// `slamroute drive`: the mapping vehicle ("mapper") follows a SUMO edge sequence among
+// background traffic; the drive folder (core DriveFolder.hpp) receives
+//   groundtruth.tum   sensor poses, TUM, record_hz (10 Hz): position from SUMO (x, y, z of the
+//                     vehicle's front reference point) plus lidar mount height straight up;
+//                     yaw from the heading, pitch from the road's slope
+//   pose_edges.csv    index,t,sumo_edge,lane_pos_m — the route edge each pose belongs to; in a
+//                     junction (SUMO internal lane) the edge just left, with lane_pos_m = that
+//                     edge's length + the distance into the junction
+//   sensor.yaml       the lidar section (preset, resolved spec, noise)
+//   world.yaml        net (absolute path), seed, world section
+//   world.ply         the static world mesh
+//   traffic.csv       other vehicles within range per pose (Traffic.hpp)
+//   drive.json        route, length driven, duration, teleports (always 0), frames
+//   scans/            only with save_scans: NNNNNN.bin (KITTI) + times.txt
+// Everything is written to a temporary folder beside DIR and renamed into place at the end,
+// so a failed drive leaves nothing behind. A teleported, rerouted or unfinished mapper is an
+// error (std::runtime_error), never a silently wrong trajectory.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "slamroute/core/Scan.hpp"
+#include "slamroute/core/Trajectory.hpp"
+#include "slamroute/simulate/Config.hpp"
+
+namespace slamroute {
+struct SumoNet;
+}
+
+namespace slamroute::simulate {
+
+struct DriveOptions {
+  std::filesystem::path net;
+  std::filesystem::path route_file;  ///< route.json (planner), a JSON list of edges, or {"sumo_edges":[…]}
+  std::filesystem::path out_dir;
+  bool save_scans = false;           ///< write KITTI scans (else regenerated on demand)
+  bool write_world_mesh = true;      ///< write world.ply
+  std::uint64_t seed = 42;
+};
+
+struct PoseEdge {
+  std::string sumo_edge;
+  double lane_pos_m = 0.0;
+};
+
+struct DriveResult {
+  std::filesystem::path out_dir;
+  std::vector<std::string> route;     ///< SUMO edges driven
+  Trajectory groundtruth;             ///< sensor poses T_world_sensor
+  std::vector<PoseEdge> pose_edges;   ///< one per pose
+  double route_length_m = 0.0;        ///< sum of the route's edge lengths
+  double driven_m = 0.0;              ///< path length of the recorded positions
+  double depart_s = 0.0, arrive_s = 0.0;
+  int teleports = 0;
+  std::size_t traffic_boxes = 0;      ///< rows of traffic.csv
+  double wall_seconds = 0.0;
+};
+
+/// world.yaml of a drive folder: what regenerates the world (and, with sensor.yaml, the scans).
+struct DriveWorldFile {
+  std::string net;           ///< absolute path of the SUMO net
+  std::uint64_t seed = 42;   ///< seed of the world and the sensor noise
+  WorldConfig world;
+};
+template <class V>
+void visitFields(V& v, DriveWorldFile& c) {
+  v.field("net", c.net, "SUMO net (absolute path)");
+  v.field("seed", c.seed, "seed of the world and the sensor noise");
+  v.section("world", c.world);
+}
+/// Reads DIR/world.yaml. Throws std::runtime_error naming the file.
+DriveWorldFile readDriveWorldFile(const std::filesystem::path& drive_dir);
+
+/// Checks a route before SUMO starts: not empty, every edge in the net and open to passenger
+/// cars, every consecutive pair a turn SUMO allows (a <connection>). Throws
+/// std::invalid_argument "WHERE: …" naming the first offending edge and its position.
+void validateRoute(const SumoNet& net, const std::vector<std::string>& edges,
+                   const std::string& where);
+
+/// Quick look at map crispness: the scans stacked with their poses (point in world =
+/// T_world_sensor * point), drawn top-down, every pixel coloured by the highest point in it
+/// (blue low .. red high, scaled to [z_min, z_max]; black = empty). Uses every `stride`-th scan.
+/// Written atomically. Returns the number of points drawn.
+struct MapPngOptions {
+  double metres_per_pixel = 0.2;
+  std::size_t stride = 1;
+  double z_min = -1.0, z_max = 10.0;  ///< colour range [m]
+};
+std::size_t renderStackedScansPng(const ScanSource& scans, const Trajectory& poses,
+                                  const std::filesystem::path& png, const MapPngOptions& o = {});
+
+/// Runs the drive (reads the net and the route, validates, simulates, writes out_dir).
+DriveResult runDrive(const DriveOptions& opts, const Config& cfg);
+
+}  // namespace slamroute::simulate

@@ -1,0 +1,54 @@
+#pragma once
+// Simulated spinning multi-beam LiDAR (paper §3.3/§4.1: 64 channels, +10°/−30°, 100 m).
+//
+// Geometry: ring r (0 = lowest beam, LeGO-LOAM's row order) has elevation
+//   vfov_down + (vfov_up − vfov_down)·r/(channels − 1);
+// column c has azimuth 2π·c/horizontal_samples, counter-clockwise from the sensor's +x.
+// Sensor frame: x forward, y left, z up (KITTI velodyne). A scan is instantaneous (no motion
+// distortion: the paper leaves it open; CARLA's LiDAR also reports one pose per sweep).
+// Returns closer than min_range or beyond max_range are dropped. Noise: Gaussian range noise
+// (sigma range_sigma_m) along the beam and random dropout, drawn from a counter-based hash of
+// (seed, scan index, ray index), so a scan is bitwise reproducible whatever the thread count.
+// Intensity = surface reflectivity × |cos(incidence angle)| in [0, 1].
+// Points are ordered column by column, rings ascending within a column.
+#include <cstdint>
+#include <vector>
+
+#include "slamroute/core/Scan.hpp"
+#include "slamroute/core/Types.hpp"
+#include "slamroute/simulate/LidarConfig.hpp"
+#include "slamroute/simulate/Traffic.hpp"
+#include "slamroute/simulate/World.hpp"
+
+namespace slamroute::simulate {
+
+class Lidar {
+ public:
+  /// Resolves the spec (resolveLidarSpec) and validates the noise settings; throws
+  /// std::invalid_argument naming the bad field.
+  Lidar(const LidarConfig& cfg, std::uint64_t seed);
+
+  const LidarSpec& spec() const { return spec_; }
+  const LidarConfig& config() const { return cfg_; }
+  double elevationRad(int ring) const;
+  double azimuthRad(int column) const;
+
+  /// One scan from pose T_world_sensor among the static world and the given vehicle boxes.
+  /// Uses TBB inside the scan; the result does not depend on the thread count.
+  Scan scan(const World& world, const Pose3& T_world_sensor, const std::vector<VehicleBox>& boxes,
+            std::size_t scan_index, double t = 0.0) const;
+
+  /// Many scans in parallel (TBB over scans); scan k uses index first_index + k and boxes[k]
+  /// (boxes may be empty = no traffic anywhere, else one entry per pose).
+  std::vector<Scan> scanMany(const World& world, const std::vector<Pose3>& T_world_sensor,
+                             const std::vector<std::vector<VehicleBox>>& boxes,
+                             std::size_t first_index, const std::vector<double>& times = {}) const;
+
+ private:
+  LidarConfig cfg_;
+  LidarSpec spec_;
+  std::uint64_t seed_;
+  std::vector<float> cos_el_, sin_el_, cos_az_, sin_az_;
+};
+
+}  // namespace slamroute::simulate

@@ -1,0 +1,32 @@
+#pragma once
+// LiDAR sensor settings: geometry (core LidarSpec, from a named preset with per-field
+// overrides) plus the noise model.
+#include <string>
+
+#include "slamroute/core/Scan.hpp"
+
+namespace slamroute::simulate {
+
+struct LidarConfig {
+  /// "paper" (64 ch, +10/-30 deg, 100 m, the paper's §3.3 sensor), "vlp16", "hdl32".
+  /// Fields of `spec` that differ from LidarSpec's defaults override the preset's values.
+  std::string preset = "paper";
+  LidarSpec spec;
+  double range_sigma_m = 0.02;   ///< Gaussian range noise, 1 sigma (HDL-64E class: ~2 cm); 0 = none [m]
+  double dropout_prob = 0.01;    ///< probability that a return is dropped at random; 0 = none
+};
+
+template <class V>
+void visitFields(V& v, LidarConfig& c) {
+  v.field("preset", c.preset, "paper | vlp16 | hdl32 (spec fields differing from defaults override)");
+  v.section("spec", c.spec);
+  v.field("range_sigma_m", c.range_sigma_m, "Gaussian range noise sigma, 0 = noise-free [m]");
+  v.field("dropout_prob", c.dropout_prob, "random dropout probability per return");
+}
+
+/// The sensor geometry this config describes: lidarPreset(preset) with the fields of `spec`
+/// that differ from LidarSpec{} applied on top. Throws std::invalid_argument on an unknown
+/// preset or an invalid spec (channels < 1, samples < 1, up <= down, ranges).
+LidarSpec resolveLidarSpec(const LidarConfig& cfg);
+
+}  // namespace slamroute::simulate

@@ -1,0 +1,215 @@
+// runDrive: the mapping vehicle drives a SUMO edge sequence among background traffic; ground
+// truth, pose edges and nearby traffic are recorded at record_hz, then the drive folder is
+// written (DriveOutput.cpp).
+#include "slamroute/simulate/Drive.hpp"
+
+#include <libsumo/libsumo.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+
+#include "DriveInternal.hpp"
+#include "DriveStaging.hpp"
+#include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/simulate/SumoSession.hpp"
+
+namespace slamroute::simulate {
+namespace {
+
+constexpr const char* kMapper = "mapper";
+constexpr double kPi = 3.14159265358979323846;
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+/// Sensor pose from SUMO's vehicle state. SUMO's reference point is the middle of the front
+/// bumper on the road surface; the sensor sits mount_height_m straight above it. Yaw from the
+/// heading (SUMO angle: 0 = north, clockwise), pitch from the road's slope (positive uphill:
+/// the body x axis then points up, hence the rotation by -pitch about body y).
+Pose3 sensorPose(double x, double y, double z, double sumo_angle_deg, double slope_deg,
+                 double mount_height_m) {
+  const double yaw = (90.0 - sumo_angle_deg) * kPi / 180.0;
+  const double pitch = slope_deg * kPi / 180.0;
+  Pose3 T = Pose3::Identity();
+  T.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
+                   .toRotationMatrix();
+  T.translation() = Vec3(x, y, z + mount_height_m);
+  return T;
+}
+
+struct TypeDims {
+  double length, width, height;
+};
+
+/// Other vehicles whose box centre lies within `range` (horizontal) of the sensor.
+std::vector<VehicleBox> trafficAround(const Vec3& sensor, double range,
+                                      std::unordered_map<std::string, TypeDims>& dims_cache) {
+  std::vector<VehicleBox> boxes;
+  for (const auto& id : libsumo::Vehicle::getIDList()) {
+    if (id == kMapper) continue;
+    const auto p = libsumo::Vehicle::getPosition3D(id);
+    if (!(std::abs(p.x) < 1e7 && std::abs(p.y) < 1e7)) continue;  // teleporting: not on the road
+    const std::string type = libsumo::Vehicle::getTypeID(id);
+    auto it = dims_cache.find(type);
+    if (it == dims_cache.end())
+      it = dims_cache
+               .emplace(type, TypeDims{libsumo::VehicleType::getLength(type),
+                                       libsumo::VehicleType::getWidth(type),
+                                       libsumo::VehicleType::getHeight(type)})
+               .first;
+    const double a = libsumo::Vehicle::getAngle(id) * kPi / 180.0;
+    // SUMO's position is the front bumper; the box centre is half a length behind it.
+    const double cx = p.x - std::sin(a) * it->second.length / 2.0;
+    const double cy = p.y - std::cos(a) * it->second.length / 2.0;
+    if (std::hypot(cx - sensor.x(), cy - sensor.y()) > range) continue;
+    VehicleBox b;
+    b.id = id;
+    b.x = cx;
+    b.y = cy;
+    b.z = std::abs(p.z) < 1e7 ? p.z : 0.0;
+    b.heading_deg = headingFromSumoAngle(libsumo::Vehicle::getAngle(id));
+    b.length = it->second.length;
+    b.width = it->second.width;
+    b.height = it->second.height;
+    boxes.push_back(std::move(b));
+  }
+  return boxes;
+}
+
+}  // namespace
+
+DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edges,
+                        const Config& cfg, const LidarSpec& spec, std::uint64_t seed) {
+  const DriveConfig& dc = cfg.drive;
+  if (!(dc.record_hz > 0.0) || !(dc.step_length_s > 0.0))
+    throw std::invalid_argument("drive: record_hz and step_length_s must be > 0");
+  const int steps_per_record =
+      std::max(1, static_cast<int>(std::lround(1.0 / (dc.record_hz * dc.step_length_s))));
+  double route_len = 0.0;
+  for (const auto& e : edges) route_len += net.findEdge(e)->length();
+  const double max_time = route_len / std::max(0.1, dc.min_avg_speed_mps) + 300.0;
+  const double range = dc.traffic_range_m > 0.0 ? dc.traffic_range_m : spec.max_range_m;
+
+  SumoSessionOptions so;
+  so.net = net.source;
+  so.seed = seed;
+  so.step_length_s = dc.step_length_s;
+  so.time_to_teleport_s = dc.time_to_teleport_s;
+  // Lane changes take 2 s instead of one step, so the ground truth never jumps sideways by a lane.
+  so.extra_args = {"--lanechange.duration", "2"};
+  SumoSession sim(so);
+  const std::string where = net.source.string();
+
+  sim.guard("adding the mapping vehicle", [&] {
+    libsumo::VehicleType::copy("DEFAULT_VEHTYPE", "mapper_type");
+    libsumo::VehicleType::setSpeedDeviation("mapper_type", 0.0);
+    libsumo::VehicleType::setSpeedFactor("mapper_type", dc.mapper_speed_factor);
+    libsumo::Route::add("mapper_route", edges);
+    libsumo::Vehicle::add(kMapper, "mapper_route", "mapper_type", "0", "best", "base", "max");
+    // Strategic and cooperative lane changes only (no overtaking): the mapper keeps to the
+    // lanes that continue its route. SUMO never leaves the route for a lane change.
+    libsumo::Vehicle::setLaneChangeMode(kMapper, 0b011001000101);
+  });
+  BackgroundTraffic traffic(sim, net, dc.traffic_per_km, seed, "bg");
+
+  DriveRecord rec;
+  std::unordered_map<std::string, TypeDims> dims;
+  bool departed = false, arrived = false;
+  int last_route_index = 0;
+  long step = 0;
+  Progress progress("drive", static_cast<std::size_t>(route_len));
+  double progress_m = 0.0;
+  while (!arrived) {
+    traffic.update();
+    sim.step();
+    ++step;
+    const double t = sim.time();
+    sim.guard("following the mapping vehicle", [&] {
+      if (contains(libsumo::Simulation::getStartingTeleportIDList(), kMapper))
+        throw std::runtime_error("SUMO teleported the mapping vehicle at t=" + std::to_string(t) +
+                                 " s (stuck on " + edges[static_cast<std::size_t>(last_route_index)] +
+                                 "); the drive is not recorded");
+      if (!departed && contains(libsumo::Simulation::getDepartedIDList(), kMapper)) {
+        departed = true;
+        rec.depart_s = t - dc.step_length_s;
+      }
+      if (contains(libsumo::Simulation::getArrivedIDList(), kMapper)) {
+        arrived = true;
+        rec.arrive_s = t;
+        return;
+      }
+      if (!departed) {
+        if (t > 120.0)
+          throw std::runtime_error("the mapping vehicle could not be inserted on edge '" +
+                                   edges.front() + "' within 120 s");
+        return;
+      }
+      const int ri = libsumo::Vehicle::getRouteIndex(kMapper);
+      if (ri < last_route_index || ri >= static_cast<int>(edges.size()))
+        throw std::runtime_error("the mapping vehicle left its route at t=" + std::to_string(t) + " s");
+      if (ri != last_route_index || step % 100 == 0) {
+        if (libsumo::Vehicle::getRoute(kMapper) != edges)
+          throw std::runtime_error("SUMO rerouted the mapping vehicle at t=" + std::to_string(t) +
+                                   " s; the drive is not recorded");
+      }
+      for (int k = last_route_index; k < ri; ++k)
+        progress_m += net.findEdge(edges[static_cast<std::size_t>(k)])->length();
+      last_route_index = ri;
+      progress.update(static_cast<std::size_t>(progress_m));
+      if (step % steps_per_record != 0) return;
+
+      const auto p = libsumo::Vehicle::getPosition3D(kMapper);
+      const Pose3 T = sensorPose(p.x, p.y, p.z, libsumo::Vehicle::getAngle(kMapper),
+                                 libsumo::Vehicle::getSlope(kMapper), spec.mount_height_m);
+      const std::string lane = libsumo::Vehicle::getLaneID(kMapper);
+      PoseEdge pe;
+      pe.sumo_edge = edges[static_cast<std::size_t>(ri)];
+      pe.lane_pos_m = libsumo::Vehicle::getLanePosition(kMapper);
+      if (!lane.empty() && lane[0] == ':') pe.lane_pos_m += net.findEdge(pe.sumo_edge)->length();
+      rec.groundtruth.push_back({t, T});
+      rec.pose_edges.push_back(pe);
+      rec.traffic.push_back(trafficAround(T.translation(), range, dims));
+    });
+    if (!arrived && t > max_time)
+      throw std::runtime_error(where + ": the mapping vehicle did not finish the route within " +
+                               std::to_string(static_cast<int>(max_time)) + " s (at edge '" +
+                               edges[static_cast<std::size_t>(last_route_index)] + "')");
+  }
+  progress.finish();
+  if (last_route_index != static_cast<int>(edges.size()) - 1)
+    throw std::runtime_error(where + ": the mapping vehicle left the simulation before the end of "
+                                     "its route (last edge '" +
+                             edges[static_cast<std::size_t>(last_route_index)] + "')");
+  if (rec.groundtruth.size() < 2)
+    throw std::runtime_error(where + ": the route is too short to record a trajectory");
+  rec.route_length_m = route_len;
+  rec.background_vehicles = traffic.spawned();
+  sim.close();
+  return rec;
+}
+
+DriveResult runDrive(const DriveOptions& opts, const Config& cfg) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const SumoNet net = SumoNet::read(opts.net);
+  const Route route = Route::readJson(opts.route_file);
+  validateRoute(net, route.sumo_edges, opts.route_file.string());
+  const LidarSpec spec = resolveLidarSpec(cfg.lidar);
+  StagingDir staging(opts.out_dir, drive_files::kDriveInfo);
+
+  logInfo("drive: " + std::to_string(route.sumo_edges.size()) + " edges on " + opts.net.string());
+  DriveRecord rec = recordDrive(net, route.sumo_edges, cfg, spec, opts.seed);
+  DriveResult res = writeDriveFolder(staging.path(), net, route.sumo_edges, rec, cfg, spec, opts);
+  staging.commit();
+  res.out_dir = staging.target();
+  res.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return res;
+}
+
+}  // namespace slamroute::simulate

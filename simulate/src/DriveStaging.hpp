@@ -1,0 +1,30 @@
+#pragma once
+// A result folder built in a hidden temporary folder beside its target and moved into place by
+// commit(); destroyed without commit(), the temporary folder is removed. Used by drive and survey
+// so that a failed run leaves nothing half-written.
+#include <filesystem>
+#include <string>
+
+namespace slamroute::simulate {
+
+class StagingDir {
+ public:
+  /// `marker` is a file that identifies a previous result of the same kind: an existing target
+  /// folder is replaced only when it is empty or holds the marker; otherwise this throws
+  /// std::runtime_error (never delete a folder we did not write).
+  StagingDir(std::filesystem::path target, const std::string& marker);
+  ~StagingDir();
+  StagingDir(const StagingDir&) = delete;
+  StagingDir& operator=(const StagingDir&) = delete;
+
+  const std::filesystem::path& path() const { return tmp_; }
+  const std::filesystem::path& target() const { return target_; }
+  void commit();
+
+ private:
+  std::filesystem::path target_, tmp_;
+  std::string marker_;
+  bool committed_ = false;
+};
+
+}  // namespace slamroute::simulate

@@ -1,0 +1,214 @@
+#include "slamroute/simulate/Lidar.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "LidarNoise.hpp"
+#include "WorldBoxes.hpp"
+#include "WorldImpl.hpp"
+
+namespace slamroute::simulate {
+
+namespace {
+
+/// Columns whose azimuth can see a box: an inclusive column interval (may wrap), or all.
+struct BoxCull {
+  detail::PreparedBox box;
+  bool all = false;
+  int c0 = 0, c1 = -1;  ///< c1 may exceed the column count (wrap)
+};
+
+std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3& T_world_sensor,
+                               double max_range, int columns) {
+  std::vector<BoxCull> out;
+  const Pose3 T_sensor_world = T_world_sensor.inverse();
+  const Vec3 o = T_world_sensor.translation();
+  for (const auto& b : boxes) {
+    BoxCull bc;
+    bc.box = detail::prepareBox(b);
+    const double radius = bc.box.half.norm();
+    const double dist = (bc.box.c - o).norm();
+    if (dist - radius > max_range) continue;
+    if ((bc.box.c - o).head<2>().norm() <= radius + 0.5) {
+      bc.all = true;
+    } else {
+      // azimuths of the 8 corners in the sensor frame, relative to the centre's azimuth
+      const Vec3 cs = T_sensor_world * bc.box.c;
+      const double a0 = std::atan2(cs.y(), cs.x());
+      double lo = 0, hi = 0;
+      bool all = false;
+      for (int k = 0; k < 8; ++k) {
+        const Eigen::Vector2d xy = bc.box.c.head<2>() + bc.box.u * bc.box.half.x() * ((k & 1) ? 1 : -1) +
+                                   bc.box.v * bc.box.half.y() * ((k & 2) ? 1 : -1);
+        const Vec3 p = T_sensor_world * Vec3(xy.x(), xy.y(), bc.box.c.z() + bc.box.half.z() * ((k & 4) ? 1 : -1));
+        if (p.head<2>().norm() < 1e-6) all = true;
+        double d = std::atan2(p.y(), p.x()) - a0;
+        while (d > M_PI) d -= 2 * M_PI;
+        while (d < -M_PI) d += 2 * M_PI;
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+      if (all || hi - lo > M_PI) {
+        bc.all = true;
+      } else {
+        const double step = 2 * M_PI / columns;
+        bc.c0 = static_cast<int>(std::floor((a0 + lo) / step)) - 1;
+        bc.c1 = static_cast<int>(std::ceil((a0 + hi) / step)) + 1;
+        while (bc.c0 < 0) {
+          bc.c0 += columns;
+          bc.c1 += columns;
+        }
+      }
+    }
+    out.push_back(bc);
+  }
+  return out;
+}
+
+bool boxCoversColumn(const BoxCull& b, int c, int columns) {
+  if (b.all) return true;
+  return (c >= b.c0 && c <= b.c1) || (c + columns >= b.c0 && c + columns <= b.c1);
+}
+
+}  // namespace
+
+Lidar::Lidar(const LidarConfig& cfg, std::uint64_t seed)
+    : cfg_(cfg), spec_(resolveLidarSpec(cfg)), seed_(seed) {
+  if (!(cfg.range_sigma_m >= 0)) throw std::invalid_argument("simulate.lidar: range_sigma_m must be >= 0");
+  if (!(cfg.dropout_prob >= 0 && cfg.dropout_prob < 1))
+    throw std::invalid_argument("simulate.lidar: dropout_prob must be in [0, 1)");
+  for (int r = 0; r < spec_.channels; ++r) {
+    cos_el_.push_back(static_cast<float>(std::cos(elevationRad(r))));
+    sin_el_.push_back(static_cast<float>(std::sin(elevationRad(r))));
+  }
+  for (int c = 0; c < spec_.horizontal_samples; ++c) {
+    cos_az_.push_back(static_cast<float>(std::cos(azimuthRad(c))));
+    sin_az_.push_back(static_cast<float>(std::sin(azimuthRad(c))));
+  }
+}
+
+double Lidar::elevationRad(int ring) const {
+  const double up = spec_.vfov_up_deg, down = spec_.vfov_down_deg;
+  const double deg = spec_.channels == 1 ? 0.5 * (up + down)
+                                         : down + (up - down) * ring / (spec_.channels - 1);
+  return deg * M_PI / 180.0;
+}
+
+double Lidar::azimuthRad(int column) const {
+  return 2.0 * M_PI * column / spec_.horizontal_samples;
+}
+
+Scan Lidar::scan(const World& world, const Pose3& T_ws, const std::vector<VehicleBox>& boxes,
+                 std::size_t scan_index, double t) const {
+  const int C = spec_.channels, H = spec_.horizontal_samples;
+  const auto culled = cullBoxes(boxes, T_ws, spec_.max_range_m, H);
+  const Eigen::Matrix3f R = T_ws.linear().cast<float>();
+  const Eigen::Vector3f o = T_ws.translation().cast<float>();
+  const Vec3 od = T_ws.translation();
+  const RTCScene scene = world.impl().scene.scene();
+  const auto& kinds = world.impl().mesh.kinds;
+  std::vector<ScanPoint> grid(static_cast<std::size_t>(C) * H);
+  std::vector<unsigned char> valid(grid.size(), 0);
+  const float tmax = static_cast<float>(spec_.max_range_m);
+  const std::uint64_t key = detail::RayRandom::scanKey(seed_, scan_index);
+
+  tbb::parallel_for(tbb::blocked_range<int>(0, H, 64), [&](const tbb::blocked_range<int>& cols) {
+    RTCIntersectContext ctx;
+    alignas(64) RTCRayHit16 rh;
+    alignas(64) int mask[16];
+    Eigen::Vector3f dir_s[16];
+    for (int c = cols.begin(); c != cols.end(); ++c) {
+      for (int r0 = 0; r0 < C; r0 += 16) {
+        rtcInitIntersectContext(&ctx);
+        ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        for (int k = 0; k < 16; ++k) {
+          const int r = r0 + k;
+          mask[k] = r < C ? -1 : 0;
+          const int rr = std::min(r, C - 1);
+          dir_s[k] = Eigen::Vector3f(cos_el_[rr] * cos_az_[c], cos_el_[rr] * sin_az_[c], sin_el_[rr]);
+          const Eigen::Vector3f d = R * dir_s[k];
+          rh.ray.org_x[k] = o.x();
+          rh.ray.org_y[k] = o.y();
+          rh.ray.org_z[k] = o.z();
+          rh.ray.dir_x[k] = d.x();
+          rh.ray.dir_y[k] = d.y();
+          rh.ray.dir_z[k] = d.z();
+          rh.ray.tnear[k] = 0.0f;
+          rh.ray.tfar[k] = tmax;
+          rh.ray.mask[k] = 0xFFFFFFFFu;
+          rh.ray.time[k] = 0.0f;
+          rh.ray.flags[k] = 0;
+          rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+          rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect16(mask, scene, &ctx, &rh);
+        for (int k = 0; k < 16 && r0 + k < C; ++k) {
+          const int r = r0 + k;
+          double range = std::numeric_limits<double>::infinity();
+          Vec3 n = Vec3::UnitZ();
+          SurfaceKind kind = SurfaceKind::Ground;
+          const Vec3 d(rh.ray.dir_x[k], rh.ray.dir_y[k], rh.ray.dir_z[k]);
+          if (rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
+            range = rh.ray.tfar[k];
+            n = Vec3(rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]);
+            kind = kinds[rh.hit.primID[k]];
+          }
+          for (const auto& b : culled) {
+            if (!boxCoversColumn(b, c, H)) continue;
+            double tb;
+            Vec3 nb;
+            if (detail::intersectBox(b.box, od, d, std::min(range, spec_.max_range_m), &tb, &nb)) {
+              range = tb;
+              n = nb;
+              kind = SurfaceKind::Vehicle;
+            }
+          }
+          if (!(range >= spec_.min_range_m && range <= spec_.max_range_m)) continue;
+          const std::size_t idx = static_cast<std::size_t>(c) * C + r;
+          detail::RayRandom rnd(key, idx);
+          if (cfg_.dropout_prob > 0 && rnd.uniform() < cfg_.dropout_prob) continue;
+          if (cfg_.range_sigma_m > 0) range += cfg_.range_sigma_m * rnd.normal();
+          if (!(range >= spec_.min_range_m && range <= spec_.max_range_m)) continue;
+          const double cosi = std::abs(n.normalized().dot(d));
+          ScanPoint& p = grid[idx];
+          const Eigen::Vector3f q = dir_s[k] * static_cast<float>(range);
+          p.x = q.x();
+          p.y = q.y();
+          p.z = q.z();
+          p.intensity = detail::reflectivity(kind) * static_cast<float>(cosi);
+          p.ring = r;
+          valid[idx] = 1;
+        }
+      }
+    }
+  });
+  Scan s;
+  s.t = t;
+  s.points.reserve(grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (valid[i]) s.points.push_back(grid[i]);
+  return s;
+}
+
+std::vector<Scan> Lidar::scanMany(const World& world, const std::vector<Pose3>& poses,
+                                  const std::vector<std::vector<VehicleBox>>& boxes,
+                                  std::size_t first_index, const std::vector<double>& times) const {
+  if (!boxes.empty() && boxes.size() != poses.size())
+    throw std::invalid_argument("Lidar::scanMany: boxes must be empty or one entry per pose");
+  if (!times.empty() && times.size() != poses.size())
+    throw std::invalid_argument("Lidar::scanMany: times must be empty or one entry per pose");
+  std::vector<Scan> out(poses.size());
+  static const std::vector<VehicleBox> none;
+  tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t k) {
+    out[k] = scan(world, poses[k], boxes.empty() ? none : boxes[k], first_index + k,
+                  times.empty() ? 0.0 : times[k]);
+  });
+  return out;
+}
+
+}  // namespace slamroute::simulate

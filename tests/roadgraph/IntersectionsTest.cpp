@@ -1,0 +1,125 @@
+// Hollow-cylinder intersection detection (paper §3.1 step 1) on synthetic traces with known
+// answers.
+#include <gtest/gtest.h>
+
+#include "SyntheticTraces.hpp"
+#include "slamroute/roadgraph/GraphBuilder.hpp"
+#include "slamroute/roadgraph/Intersections.hpp"
+
+namespace slamroute::roadgraph {
+namespace {
+
+using testing::gridRoads;
+using testing::line;
+using testing::makeTraces;
+using testing::plusRoads;
+using testing::Road;
+
+std::vector<Point3> positions(const Traces& tr) {
+  std::vector<Point3> p;
+  for (const auto& q : tr.points) p.push_back(q.pos);
+  return p;
+}
+
+IntersectionResult detect(const Traces& tr, const NodeConfig& cfg = {}) {
+  return detectIntersections(downsample(positions(tr), cfg.downsample_m).points, cfg);
+}
+
+TEST(Intersections, BranchCountsOfPlus) {
+  const auto pts = downsample(positions(makeTraces(plusRoads())), 1.0).points;
+  NodeConfig cfg;
+  EXPECT_EQ(countBranches(pts, {0, 0, 0}, cfg), 4);    // centre: four arms
+  EXPECT_EQ(countBranches(pts, {60, 0, 0}, cfg), 2);   // mid-street: two ways
+  EXPECT_EQ(countBranches(pts, {100, 0, 0}, cfg), 1);  // dead end
+}
+
+TEST(Intersections, PlusHasExactlyOneNodeAtTheCrossing) {
+  const auto r = detect(makeTraces(plusRoads()));
+  ASSERT_EQ(r.nodes.size(), 1u);
+  EXPECT_LT(r.nodes[0].head<2>().norm(), 1.0);
+  EXPECT_EQ(r.branches[0], 4);
+}
+
+TEST(Intersections, TJunctionCentreIsNotPulledToTheStem) {
+  const std::vector<Road> t = {{line({-100, 0, 0}, {100, 0, 0})}, {line({0, 0, 0}, {0, -100, 0})}};
+  const auto r = detect(makeTraces(t));
+  ASSERT_EQ(r.nodes.size(), 1u);
+  EXPECT_LT(r.nodes[0].head<2>().norm(), 2.0) << r.nodes[0].transpose();
+  EXPECT_EQ(r.branches[0], 3);
+}
+
+TEST(Intersections, OverpassIsNotANode) {
+  // Street along x at z = 0; a bridge along y at z = 7 over it (ramps from |y| = 100 to 40);
+  // a real junction at x = 120 so the graph has a node.
+  Polyline bridge;
+  for (double y = -200; y <= 200; y += 5) {
+    const double a = std::abs(y);
+    const double z = a <= 40 ? 7.0 : (a >= 100 ? 0.0 : 7.0 * (100 - a) / 60.0);
+    bridge.emplace_back(0, y, z);
+  }
+  const std::vector<Road> roads = {{line({-150, 0, 0}, {250, 0, 0})},
+                                   {bridge},
+                                   {line({120, -100, 0}, {120, 100, 0})}};
+  const auto r = detect(makeTraces(roads));
+  ASSERT_EQ(r.nodes.size(), 1u);
+  EXPECT_NEAR(r.nodes[0].x(), 120.0, 1.5);
+  EXPECT_NEAR(r.nodes[0].y(), 0.0, 1.5);
+  // Without height the same traces would see a crossing at the origin.
+  NodeConfig flat;
+  flat.height_m = 100.0;
+  flat.require_connected = false;  // connectivity is 3D too and would also reject the bridge
+  const auto r2 = detect(makeTraces(roads), flat);
+  bool at_origin = false;
+  for (const auto& n : r2.nodes) at_origin = at_origin || n.head<2>().norm() < 5.0;
+  EXPECT_TRUE(at_origin);
+}
+
+TEST(Intersections, GridWithOverhangHasNineNodes) {
+  const auto r = detect(makeTraces(gridRoads(3, 100, 50)));
+  ASSERT_EQ(r.nodes.size(), 9u);
+  for (const auto& n : r.nodes) {
+    EXPECT_NEAR(n.x() / 100.0, std::round(n.x() / 100.0), 0.015) << n.transpose();
+    EXPECT_NEAR(n.y() / 100.0, std::round(n.y() / 100.0), 0.015) << n.transpose();
+  }
+}
+
+TEST(Intersections, GridCornersAreNotIntersections) {
+  // A closed 3x3 grid: the 4 corners are bends (2 branches), 4 T junctions, 1 crossing.
+  const auto r = detect(makeTraces(gridRoads(3, 100, 0)));
+  EXPECT_EQ(r.nodes.size(), 5u);
+  int t = 0, x = 0;
+  for (int b : r.branches) (b == 3 ? t : x) += (b == 3 || b == 4) ? 1 : 0;
+  EXPECT_EQ(t, 4);
+  EXPECT_EQ(x, 1);
+}
+
+TEST(Intersections, OneMetreNoiseAndUnevenSamplingStillWork) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    auto tr = makeTraces(gridRoads(3, 100, 50), 1.0, seed, 1.0, 2);
+    // Uneven sampling: drop a pseudo-random 40% of the points.
+    Traces thin = tr;
+    thin.points.clear();
+    std::mt19937_64 rng(seed);
+    for (const auto& p : tr.points)
+      if (std::uniform_real_distribution<double>(0, 1)(rng) > 0.4) thin.points.push_back(p);
+    const auto r = detect(thin);
+    EXPECT_EQ(r.nodes.size(), 9u) << "seed " << seed;
+    for (const auto& n : r.nodes) {
+      const Point3 snap(std::round(n.x() / 100) * 100, std::round(n.y() / 100) * 100, 0);
+      EXPECT_LT((n - snap).head<2>().norm(), 3.0) << "seed " << seed << " node " << n.transpose();
+    }
+  }
+}
+
+TEST(Intersections, ParallelStreetDoesNotMakeNodes) {
+  // Two parallel streets 20 m apart, each crossed once, far apart: only the two crossings.
+  const std::vector<Road> roads = {{line({-200, 0, 0}, {200, 0, 0})},
+                                   {line({-200, 20, 0}, {200, 20, 0})},
+                                   {line({-150, -100, 0}, {-150, 0, 0})},
+                                   {line({150, 20, 0}, {150, 120, 0})}};
+  const auto r = detect(makeTraces(roads));
+  EXPECT_EQ(r.nodes.size(), 2u);
+}
+
+}  // namespace
+}  // namespace slamroute::roadgraph

@@ -1,0 +1,112 @@
+// Validation against SUMO nets and the graph-edge -> SUMO-edge mapping, with traces made from the
+// nets' own lane shapes (every passenger lane driven once, junctions crossed along the
+// connections), so the known answer is the net itself.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/roadgraph/GraphBuilder.hpp"
+#include "slamroute/roadgraph/SumoMatch.hpp"
+
+namespace slamroute::roadgraph {
+namespace {
+
+namespace fs = std::filesystem;
+
+Traces laneTraces(const SumoNet& net, double noise_sigma_m, std::uint64_t seed) {
+  Traces tr;
+  tr.source = net.source.string();
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, noise_sigma_m);
+  auto drive = [&](const Polyline& pl) {
+    const int vid = static_cast<int>(tr.vehicles.size());
+    tr.vehicles.push_back("v" + std::to_string(vid));
+    double t = 0.0;
+    for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
+      const Vec3 d = pl[k + 1] - pl[k];
+      for (double s = 0.0; s < d.norm(); s += 1.0) {
+        TracePoint p;
+        p.t = (t += 0.1);
+        p.vehicle = vid;
+        p.pos = pl[k] + d.normalized() * s;
+        if (noise_sigma_m > 0) p.pos += Vec3(noise(rng), noise(rng), 0.0);
+        tr.points.push_back(p);
+      }
+    }
+  };
+  for (const auto& e : net.edges)
+    if (!e.isInternal() && e.allowsPassenger())
+      for (const auto& l : e.lanes)
+        if (l.allowsPassenger() && l.shape.size() >= 2) drive(l.shape);
+  for (const auto& c : net.connections) {
+    const auto *a = net.findEdge(c.from), *b = net.findEdge(c.to);
+    if (!a || !b || !a->allowsPassenger() || !b->allowsPassenger()) continue;
+    if (c.from_lane >= static_cast<int>(a->lanes.size()) || c.to_lane >= static_cast<int>(b->lanes.size()))
+      continue;
+    const auto& la = a->lanes[static_cast<std::size_t>(c.from_lane)].shape;
+    const auto& lb = b->lanes[static_cast<std::size_t>(c.to_lane)].shape;
+    if (la.empty() || lb.empty()) continue;
+    drive({la.back(), lb.front()});
+  }
+  return tr;
+}
+
+TEST(SumoMatch, TrueIntersectionsOfTheDefaultCity) {
+  const fs::path p = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  if (!fs::exists(p)) GTEST_SKIP() << p << " not generated yet";
+  const SumoNet net = SumoNet::read(p);
+  const auto truth = trueIntersections(net);
+  EXPECT_GE(truth.size(), 10u);
+  // Every true intersection has >= 3 distinct neighbours: none is a dead end or a bend.
+  for (const auto& t : truth) EXPECT_NE(net.findJunction(t.junction)->type, "dead_end");
+}
+
+void checkNet(const fs::path& p, double min_f1) {
+  if (!fs::exists(p)) GTEST_SKIP() << p << " not available";
+  const SumoNet net = SumoNet::read(p);
+  const auto built = buildRoadGraph(laneTraces(net, 0.5, 42), Config{});
+  const auto v = validateAgainstNet(built.graph, built.node_is_end, net, SumoMatchConfig{});
+  std::cout << p.filename() << ": node P " << v.node_precision << " R " << v.node_recall
+            << " F1 " << v.node_f1 << " (" << v.matched_nodes << "/" << v.detected_nodes << "/"
+            << v.true_intersections << "), edge P " << v.edge_precision << " R "
+            << v.edge_recall << "\n";
+  EXPECT_GE(v.node_f1, min_f1);
+  RoadGraph g = built.graph;
+  const std::size_t unmapped = mapSumoEdges(g, net, SumoMatchConfig{});
+  EXPECT_LE(unmapped, g.edges.size() / 10);
+  // Consecutive SUMO edges of a graph edge are legal turns in most cases.
+  std::size_t pairs = 0, legal = 0;
+  for (const auto& e : g.edges)
+    for (std::size_t k = 1; k < e.sumo_edges.size(); ++k) {
+      ++pairs;
+      legal += net.turnAllowed(e.sumo_edges[k - 1], e.sumo_edges[k]) ? 1 : 0;
+    }
+  if (pairs > 0) EXPECT_GE(double(legal) / double(pairs), 0.9);
+}
+
+TEST(SumoMatch, DefaultCityFromLaneTraces) {
+  checkNet(fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml", 0.95);
+}
+
+TEST(SumoMatch, BolognaFromLaneTraces) {
+  checkNet(fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml", 0.8);
+}
+
+TEST(SumoMatch, PerfectGraphScoresOne) {
+  const fs::path p = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  if (!fs::exists(p)) GTEST_SKIP() << p << " not generated yet";
+  const SumoNet net = SumoNet::read(p);
+  // A graph whose nodes are exactly the true intersections scores precision = recall = 1.
+  RoadGraph g;
+  for (const auto& t : trueIntersections(net))
+    g.nodes.push_back({static_cast<int>(g.nodes.size()), t.pos, t.junction});
+  const auto v = validateAgainstNet(g, {}, net, SumoMatchConfig{});
+  EXPECT_DOUBLE_EQ(v.node_precision, 1.0);
+  EXPECT_DOUBLE_EQ(v.node_recall, 1.0);
+  EXPECT_TRUE(v.missed_junctions.empty());
+}
+
+}  // namespace
+}  // namespace slamroute::roadgraph

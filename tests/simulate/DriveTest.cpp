@@ -1,0 +1,101 @@
+// runDrive on the 3x3 grid: ground truth on the route's lanes, 10 Hz, pose edges in route order.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/Trajectory.hpp"
+#include "slamroute/simulate/Drive.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using namespace slamroute;
+
+/// Horizontal distance from p to a polyline.
+double distToPolyline(const Point3& p, const Polyline& pl) {
+  double best = 1e18;
+  for (std::size_t i = 1; i < pl.size(); ++i) {
+    const Eigen::Vector2d a = pl[i - 1].head<2>(), b = pl[i].head<2>(), q = p.head<2>();
+    const double len2 = (b - a).squaredNorm();
+    const double s = len2 > 0 ? std::clamp((q - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + s * (b - a) - q).norm());
+  }
+  return best;
+}
+
+TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
+  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "drive_grid";
+  const fs::path route = fs::path(SLAMROUTE_TEST_TMP) / "drive_grid_route.json";
+  fs::create_directories(SLAMROUTE_TEST_TMP);
+  const std::vector<std::string> edges = {"g00_g01", "g01_g02", "g02_g12", "g12_g11", "g11_g10", "g10_g20"};
+  std::ofstream(route) << nlohmann::json(edges).dump();
+  simulate::Config cfg;
+  cfg.lidar.preset = "vlp16";
+  simulate::DriveOptions o;
+  o.net = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/test/grid3x3.net.xml";
+  o.route_file = route;
+  o.out_dir = dir;
+  o.seed = 5;
+  o.write_world_mesh = false;
+  const simulate::DriveResult r = simulate::runDrive(o, cfg);
+  EXPECT_EQ(r.teleports, 0);
+  EXPECT_EQ(r.route, edges);
+
+  for (const char* f : {drive_files::kGroundTruth, drive_files::kPoseEdges, drive_files::kSensor,
+                        drive_files::kWorld, drive_files::kDriveInfo, "traffic.csv"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  EXPECT_FALSE(fs::exists(dir / drive_files::kScanDir));
+
+  const Trajectory gt = readTum(dir / drive_files::kGroundTruth);
+  ASSERT_GT(gt.size(), 100u);
+  ASSERT_EQ(gt.size(), r.pose_edges.size());
+  for (std::size_t i = 1; i < gt.size(); ++i) ASSERT_NEAR(gt[i].t - gt[i - 1].t, 0.1, 1e-6) << i;
+
+  // pose_edges.csv: the distinct edges, in order, are exactly the route.
+  std::ifstream pe(dir / drive_files::kPoseEdges);
+  std::string line;
+  std::getline(pe, line);
+  EXPECT_EQ(line, "index,t,sumo_edge,lane_pos_m");
+  std::vector<std::string> seq;
+  while (std::getline(pe, line)) {
+    std::stringstream ss(line);
+    std::string idx, t, edge;
+    std::getline(ss, idx, ',');
+    std::getline(ss, t, ',');
+    std::getline(ss, edge, ',');
+    if (seq.empty() || seq.back() != edge) seq.push_back(edge);
+  }
+  EXPECT_EQ(seq, edges);
+
+  // Positions on the route's lanes (outside junctions), the sensor 1.8 m... above the flat road.
+  const SumoNet net = SumoNet::read(o.net);
+  const double h = lidarPreset("vlp16").mount_height_m;
+  std::size_t on_edges = 0;
+  for (std::size_t i = 0; i < gt.size(); ++i) {
+    const Point3 p = gt[i].T_world_body.translation();
+    EXPECT_NEAR(p.z(), h, 1e-6);
+    const SumoEdge* e = net.findEdge(r.pose_edges[i].sumo_edge);
+    ASSERT_NE(e, nullptr);
+    if (r.pose_edges[i].lane_pos_m > e->length()) continue;  // inside the junction after e
+    double d = 1e18;
+    for (const auto& lane : e->lanes) d = std::min(d, distToPolyline(p, lane.shape));
+    EXPECT_LT(d, 0.5) << "pose " << i << " on " << e->id;
+    ++on_edges;
+  }
+  EXPECT_GT(on_edges, gt.size() * 8 / 10);
+  // Heading: the first edge runs from g00 to g01; the body x axis points along it.
+  const Polyline& s0 = net.findEdge(edges[0])->lanes[0].shape;
+  const Vec3 dir0 = (s0.back() - s0.front()).normalized();
+  EXPECT_GT(gt[5].T_world_body.linear().col(0).dot(dir0), 0.999);
+
+  const auto j = nlohmann::json::parse(std::ifstream(dir / drive_files::kDriveInfo));
+  EXPECT_EQ(j["teleports"].get<int>(), 0);
+  EXPECT_EQ(j["frames"].get<std::size_t>(), gt.size());
+  EXPECT_NEAR(j["route_length_m"].get<double>(), r.route_length_m, 1e-9);
+}
+
+}  // namespace
