@@ -1,7 +1,8 @@
 // Odometry throughput and accuracy: scans/s on one core for 64x1800 scans end to end, with the
 // time split by stage. Without arguments it drives a synthetic city street scene (analytic ray
 // caster shared with the tests); with a drive folder that has scans/ it runs on those.
-//   bench_odometry [--frames N] [--noise SIGMA_M] [--loop] [--drive DIR]
+//   bench_odometry [--frames N] [--noise SIGMA_M] [--loop] [--no-loop-closure] [--drive DIR]
+//                  [--config EVALUATE_SECTION.yaml]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -12,7 +13,9 @@
 #include "../tests/evaluate/SyntheticScene.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/ConfigIO.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
+#include "slamroute/simulate/SimulatedScanSource.hpp"
 
 using namespace slamroute;
 using namespace slamroute::evaluate;
@@ -54,7 +57,20 @@ class SyntheticSource : public ScanSource {
   double noise_;
 };
 
-/// Wraps a source and measures only the SLAM time (scan generation excluded).
+/// The first n scans of another source.
+class Prefix : public ScanSource {
+ public:
+  Prefix(const ScanSource& s, std::size_t n) : s_(s), n_(std::min(n, s.size())) {}
+  std::size_t size() const override { return n_; }
+  double time(std::size_t i) const override { return s_.time(i); }
+  Scan scan(std::size_t i) const override { return s_.scan(i); }
+  LidarSpec spec() const override { return s_.spec(); }
+
+ private:
+  const ScanSource& s_;
+  std::size_t n_;
+};
+
 void report(const SlamResult& r, const Trajectory& gt, const Config& cfg) {
   const TrajectoryMetrics m = compareTrajectories(r.trajectory, gt, metricsOptions(cfg));
   const StageTimes& t = r.times;
@@ -76,10 +92,10 @@ void report(const SlamResult& r, const Trajectory& gt, const Config& cfg) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int frames = 300;
+  int frames = -1;  // all scans of a drive; 300 synthetic
   double noise = 0.0;
   bool loop = false, no_lc = false;
-  std::string drive;
+  std::string drive, config_file;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--frames" && i + 1 < argc) frames = std::stoi(argv[++i]);
@@ -87,23 +103,33 @@ int main(int argc, char** argv) {
     else if (a == "--loop") loop = true;
     else if (a == "--no-loop-closure") no_lc = true;
     else if (a == "--drive" && i + 1 < argc) drive = argv[++i];
+    else if (a == "--config" && i + 1 < argc) config_file = argv[++i];
     else {
-      std::cerr << "usage: bench_odometry [--frames N] [--noise M] [--loop] [--no-loop-closure] [--drive DIR]\n";
+      std::cerr << "usage: bench_odometry [--frames N] [--noise M] [--loop] [--no-loop-closure] [--drive DIR] [--config FILE]\n";
       return 2;
     }
   }
   Config cfg;
   cfg.loop_closure = !no_lc;
   if (std::getenv("BENCH_DEBUG")) setLogLevel(LogLevel::Debug);
+  if (!config_file.empty()) config::loadYaml(YAML::LoadFile(config_file), cfg, config_file);
   if (!drive.empty()) {
-    const LidarSpec spec = readSensorSpec(std::filesystem::path(drive) / drive_files::kSensor);
-    KittiScanSource src(std::filesystem::path(drive) / drive_files::kScanDir, spec);
-    const Trajectory gt = readTum(std::filesystem::path(drive) / drive_files::kGroundTruth);
-    const SlamResult r = runSlam(src, cfg, gt.front().T_world_body);
+    const std::filesystem::path dir(drive);
+    const LidarSpec spec = readSensorSpec(dir / drive_files::kSensor);
+    std::unique_ptr<ScanSource> src;
+    if (std::filesystem::is_directory(dir / drive_files::kScanDir))
+      src = std::make_unique<KittiScanSource>(dir / drive_files::kScanDir, spec);
+    else
+      src = std::make_unique<simulate::SimulatedScanSource>(dir);
+    const Trajectory gt = readTum(dir / drive_files::kGroundTruth);
+    const Prefix part(*src, frames < 0 ? src->size() : static_cast<std::size_t>(frames));
+    std::printf("drive %s: %zu of %zu scans\n", drive.c_str(), part.size(), src->size());
+    const SlamResult r = runSlam(part, cfg, gt.front().T_world_body);
     report(r, gt, cfg);
     return 0;
   }
   const LidarSpec spec;  // 64 x 1800, +10/-30 deg, 100 m
+  if (frames < 0) frames = 300;
   const Trajectory gt = syntheticPath(frames, loop);
   SyntheticSource src(test::cityScene(160.0), gt, spec, noise);
   std::printf("synthetic city, %d frames, 64x1800, noise %.3f m, %s\n", frames, noise,

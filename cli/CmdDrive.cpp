@@ -58,7 +58,8 @@ void registerDrive(CLI::App& app, Context& ctx) {
                   "%.1f s wall",
                   r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(),
                   r.teleports, r.wall_seconds);
-    std::cout << line << "\n" << "wrote " << r.out_dir.string() << "\n";
+    std::cout << line << "\n"
+              << "wrote " << r.out_dir.string() << "\n";
     if (!o->map_png.empty()) {
       simulate::MapPngOptions mo;
       mo.stride = o->map_stride;

@@ -17,24 +17,19 @@ namespace slamroute::cli {
 
 namespace {
 
-/// --start accepts a node id or (for nets) a SUMO junction id.
-int resolveStart(const RoadGraph& g, const std::string& s) {
+/// --start-junction: the node of a SUMO junction id.
+int nodeOfJunction(const RoadGraph& g, const std::string& junction) {
   for (const auto& n : g.nodes)
-    if (!n.sumo_junction.empty() && n.sumo_junction == s) return n.id;
-  try {
-    std::size_t used = 0;
-    const int id = std::stoi(s, &used);
-    if (used == s.size()) return id;
-  } catch (const std::exception&) {
-  }
-  throw std::invalid_argument("--start: '" + s + "' is neither a node id nor a junction id");
+    if (n.sumo_junction == junction) return n.id;
+  throw std::invalid_argument("--start-junction: no node for SUMO junction '" + junction + "'");
 }
 
 }  // namespace
 
 void registerPlan(CLI::App& app, Context& ctx) {
   struct Opts {
-    std::string graph, net, planner, out, start, reward, goal;
+    std::string graph, net, planner, out, start_junction, reward, goal;
+    int start = -1;
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("plan", "Plan a mapping route on a graph or net (paper 3.2)");
@@ -43,7 +38,9 @@ void registerPlan(CLI::App& app, Context& ctx) {
   g_opt->excludes(n_opt);
   sub->add_option("--planner", o->planner, "qlearning | random | tsp | postman (default: rl.planner)");
   sub->add_option("--out", o->out, "output route (route.json)")->required();
-  sub->add_option("--start", o->start, "start node id (or SUMO junction id)");
+  auto* s_opt = sub->add_option("--start", o->start, "start node id (default: rl.start_node)");
+  sub->add_option("--start-junction", o->start_junction, "start at the node of this SUMO junction")
+      ->excludes(s_opt);
   sub->add_option("--reward", o->reward, "qlearning reward: full | accuracy (default: rl.reward)");
   sub->add_option("--goal", o->goal, "coverage goal: nodes | edges (default: rl.goal)");
   sub->callback([&ctx, o] {
@@ -63,7 +60,8 @@ void registerPlan(CLI::App& app, Context& ctx) {
       g = RoadGraph::readJson(o->graph);
       where = o->graph;
     }
-    if (!o->start.empty()) cfg.start_node = resolveStart(g, o->start);
+    if (o->start >= 0) cfg.start_node = o->start;
+    if (!o->start_junction.empty()) cfg.start_node = nodeOfJunction(g, o->start_junction);
     const Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
     const std::filesystem::path out(o->out);
     r.writeJson(out);

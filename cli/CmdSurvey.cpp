@@ -41,7 +41,8 @@ void registerSurvey(CLI::App& app, Context& ctx) {
                   r.survey_vehicles, r.background_vehicles, r.trace_rows, r.depth_frames,
                   static_cast<double>(r.bytes_written) / 1e6, r.sim_seconds, r.wall_seconds,
                   r.visited_edges, r.drivable_edges, r.coverage_pct);
-    std::cout << line << "\n" << "wrote " << r.out_dir.string() << "\n";
+    std::cout << line << "\n"
+              << "wrote " << r.out_dir.string() << "\n";
   });
 }
 

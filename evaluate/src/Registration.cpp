@@ -29,8 +29,11 @@ struct Normal {
     g += w * J.transpose() * r;
     rows += 1;
   }
-  /// Solves the masked normal equations; returns delta (zeros in masked-out DoF).
-  Vec6 solve(unsigned mask) const {
+  /// Solves the masked normal equations; returns delta (zeros in masked-out DoF). Directions
+  /// whose normalised eigenvalue (lambda / rows) is below `degenerate_eig` are not updated
+  /// (Zhang, Kaess & Singh 2016 "solution remapping", as in LOAM/LeGO-LOAM): in a degenerate
+  /// stretch those DoF keep the prediction instead of following noise.
+  Vec6 solve(unsigned mask, double degenerate_eig = 0.0) const {
     std::array<int, 6> act{};
     int m = 0;
     for (int i = 0; i < 6; ++i)
@@ -42,7 +45,13 @@ struct Normal {
       for (int j = 0; j < m; ++j) A(i, j) = H(act[static_cast<std::size_t>(i)], act[static_cast<std::size_t>(j)]);
     }
     A.diagonal().array() += 1e-6 * (1.0 + A.diagonal().array());
-    const Eigen::VectorXd x = A.ldlt().solve(b);
+    Eigen::VectorXd x = A.ldlt().solve(b);
+    if (degenerate_eig > 0 && rows > 0) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(A);
+      Eigen::VectorXd keep = Eigen::VectorXd::Ones(m);
+      for (int i = 0; i < m; ++i) keep(i) = es.eigenvalues()(i) / rows < degenerate_eig ? 0.0 : 1.0;
+      x = es.eigenvectors() * keep.asDiagonal() * es.eigenvectors().transpose() * x;
+    }
     Vec6 d = Vec6::Zero();
     for (int i = 0; i < m; ++i)
       if (std::isfinite(x(i))) d(act[static_cast<std::size_t>(i)]) = x(i);
@@ -137,7 +146,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
         bool planar = true;
         for (int i : idx)
           planar = planar &&
-                   std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < 0.2;
+                   std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < opt.plane_max_dev_m;
         if (!planar) continue;
         ne.add(R, p, n, n.dot(q - s.mean), opt.huber_m);  // point-to-plane (LOAM eq. 3)
         ++planes;
@@ -148,7 +157,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
     res.iterations = it + 1;
     last = ne;
     if (ne.rows < 6) break;
-    const Vec6 d = ne.solve(opt.dof_mask);
+    const Vec6 d = ne.solve(opt.dof_mask, opt.degenerate_eig);
     applyDelta(T, d);
     if (d.head<3>().norm() < 1e-5 && d.tail<3>().norm() < 1e-4) {
       res.converged = true;

@@ -1,7 +1,7 @@
 // LeGO-LOAM-style pipeline: the top-level addScan() reads as the paper's §3.3 steps.
 #include "slamroute/evaluate/Slam.hpp"
 
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -14,10 +14,16 @@
 namespace slamroute::evaluate {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+/// Stage timing uses the thread's CPU time, so figures are per core and not distorted by other
+/// processes competing for the machine.
+struct Clock {
+  static double now() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  }
+};
+double since(double t0) { return Clock::now() - t0; }
 
 Cloud transformed(const Cloud& c, const Pose3& T) {
   const Eigen::Matrix3f R = T.rotation().cast<float>();
@@ -40,6 +46,14 @@ Cloud capped(Cloud c, int max_n) {
 }
 
 double rotationAngle(const Pose3& T) { return Eigen::AngleAxisd(T.rotation()).angle(); }
+
+/// A registration that moves the pose far from its initial guess within one scan (0.1 s) is a
+/// failure (wrong correspondences), not motion.
+bool plausible(const Pose3& init, const Pose3& result, const Config& cfg) {
+  const Pose3 d = init.inverse() * result;
+  return d.translation().norm() <= cfg.max_step_change_m &&
+         rotationAngle(d) <= cfg.max_step_change_deg * std::numbers::pi / 180.0;
+}
 
 struct Keyframe {
   double t = 0;
@@ -89,6 +103,7 @@ struct LidarSlam::Impl {
   Pose3 T_world_good = Pose3::Identity();  ///< last well-registered frame
   int good_frame = -1;
   Pose3 velocity = Pose3::Identity();      ///< motion per frame, body frame
+  bool have_velocity = false;              ///< velocity measured (not the initial guess)
   StageTimes times;
 
   Pose3 predict() const { return T_world_last * velocity; }
@@ -205,6 +220,12 @@ struct LidarSlam::Impl {
       odom_edges.push_back(e);
     }
     kfs.push_back(std::move(kf));
+    // Only the recent keyframes feed the local map: free the features of older ones.
+    if (kfs.size() > static_cast<std::size_t>(std::max(cfg.local_map_keyframes, 1))) {
+      Keyframe& old = kfs[kfs.size() - 1 - static_cast<std::size_t>(std::max(cfg.local_map_keyframes, 1))];
+      Cloud().swap(old.edges);
+      Cloud().swap(old.planes);
+    }
     bool closed = false;
     if (cfg.loop_closure) {
       const auto t0 = Clock::now();
@@ -239,11 +260,14 @@ struct LidarSlam::Impl {
     // 2. edge / planar features
     t0 = Clock::now();
     const FeatureSet f = extractFeatures(img, cfg);
-    const Cloud src_edges = capped(voxelFilter(f.less_sharp, cfg.map_edge_voxel_m), cfg.map_max_source_edges);
-    const Cloud src_planes = capped(cfg.map_surf_voxel_m == cfg.less_flat_voxel_m
-                                        ? f.less_flat
-                                        : voxelFilter(f.less_flat, cfg.map_surf_voxel_m),
-                                    cfg.map_max_source_planes);
+    // Keyframes keep all voxel-filtered features (a dense local map); the scan-to-map source is
+    // thinned to a fixed budget for speed.
+    const Cloud kf_edges = voxelFilter(f.less_sharp, cfg.map_edge_voxel_m);
+    const Cloud kf_planes = cfg.map_surf_voxel_m == cfg.less_flat_voxel_m
+                                ? f.less_flat
+                                : voxelFilter(f.less_flat, cfg.map_surf_voxel_m);
+    const Cloud src_edges = capped(kf_edges, cfg.map_max_source_edges);
+    const Cloud src_planes = capped(kf_planes, cfg.map_max_source_planes);
     times.features += since(t0);
 
     const int index = static_cast<int>(frames.size());
@@ -253,7 +277,7 @@ struct LidarSlam::Impl {
       prev_scan.build(f.less_sharp, f.less_flat);
       T_world_good = T;
       good_frame = index;
-      addKeyframe(scan.t, T, src_edges, src_planes, f.segmented);
+      addKeyframe(scan.t, T, kf_edges, kf_planes, f.segmented);
       record(scan.t, kfs.back().T_world, FrameStatus::Ok, 1.0);
       times.total += since(t_all);
       return FrameStatus::Ok;
@@ -261,11 +285,13 @@ struct LidarSlam::Impl {
     // 3. scan-to-scan odometry (LeGO-LOAM two-step: planar -> z/roll/pitch, edges -> x/y/yaw)
     t0 = Clock::now();
     const Pose3 pred = predict();
-    Pose3 T_prev_curr = T_world_good.inverse() * pred;
+    const Pose3 T_prev_pred = T_world_good.inverse() * pred;
+    Pose3 T_prev_curr = T_prev_pred;
     AlignOptions ao;
     ao.iterations = cfg.odom_iterations;
     ao.max_nn_m = cfg.odom_max_nn_m;
     ao.huber_m = cfg.huber_m;
+    ao.plane_max_dev_m = cfg.plane_max_dev_m;
     if (cfg.two_step_odometry) {
       ao.dof_mask = kZ | kRoll | kPitch;
       AlignResult r1 = alignFeatures(prev_scan, {}, f.flat, T_prev_curr, ao);
@@ -277,6 +303,11 @@ struct LidarSlam::Impl {
       AlignResult r = alignFeatures(prev_scan, f.sharp, f.flat, T_prev_curr, ao);
       if (r.edge_matches + r.plane_matches >= cfg.min_plane_features) T_prev_curr = r.T_target_source;
     }
+    bool implausible = false;
+    if (have_velocity && !plausible(T_prev_pred, T_prev_curr, cfg)) {
+      T_prev_curr = T_prev_pred;
+      implausible = true;
+    }
     times.odometry += since(t0);
     // 4. scan-to-map refinement against the local keyframe map
     t0 = Clock::now();
@@ -285,6 +316,8 @@ struct LidarSlam::Impl {
     mo.iterations = cfg.map_iterations;
     mo.max_nn_m = cfg.map_max_nn_m;
     mo.huber_m = cfg.huber_m;
+    mo.plane_max_dev_m = cfg.plane_max_dev_m;
+    if (cfg.degeneracy_remap) mo.degenerate_eig = cfg.degeneracy_min_eig;
     const AlignResult m = alignFeatures(local_map, src_edges, src_planes, T_world, mo);
     if (index % 50 == 0)
       logDebug("scan " + std::to_string(index) + ": sharp " + std::to_string(f.sharp.size()) +
@@ -293,9 +326,11 @@ struct LidarSlam::Impl {
                std::to_string(local_map.edges.size()) + " map planes " +
                std::to_string(local_map.planes.size()) + " iterations " + std::to_string(m.iterations) +
                " min eig " + std::to_string(m.min_eig_translation));
-    FrameStatus status = FrameStatus::Ok;
+    FrameStatus status = implausible ? FrameStatus::Degenerate : FrameStatus::Ok;
     if (m.edge_matches < cfg.min_edge_features || m.plane_matches < cfg.min_plane_features) {
       status = FrameStatus::FewFeatures;  // keep the odometry pose
+    } else if (have_velocity && !plausible(T_world, m.T_target_source, cfg)) {
+      status = FrameStatus::Degenerate;   // keep the odometry pose
     } else {
       T_world = m.T_target_source;
       if (m.min_eig_translation < cfg.degeneracy_min_eig) status = FrameStatus::Degenerate;
@@ -303,7 +338,10 @@ struct LidarSlam::Impl {
     times.mapping += since(t0);
     // motion model for the next prediction
     const int gap = index - good_frame;
-    if (gap == 1) velocity = T_world_good.inverse() * T_world;
+    if (gap == 1) {
+      velocity = T_world_good.inverse() * T_world;
+      have_velocity = true;
+    }
     prev_scan.build(f.less_sharp, f.less_flat);
     T_world_good = T_world;
     good_frame = index;
@@ -311,7 +349,7 @@ struct LidarSlam::Impl {
     const Pose3 rel = kfs.back().T_world.inverse() * T_world;
     if (rel.translation().norm() > cfg.keyframe_distance_m ||
         rotationAngle(rel) > cfg.keyframe_angle_deg * std::numbers::pi / 180.0) {
-      addKeyframe(scan.t, T_world, src_edges, src_planes, f.segmented);
+      addKeyframe(scan.t, T_world, kf_edges, kf_planes, f.segmented);
       T_world = kfs.back().T_world;  // may have moved in the pose graph
       T_world_good = T_world;
     }

@@ -38,7 +38,8 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
     start = pg.node_local[static_cast<std::size_t>(cfg.start_node)];
     if (start < 0)
       throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
-                                  " is unreachable (outside the largest strongly connected part)");
+                                  " is unreachable (outside the largest part that is strongly connected under the turn "
+                                  "permissions)");
   }
   const TurnPaths paths(pg);
   PlanOutput out;

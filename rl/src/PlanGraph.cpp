@@ -1,6 +1,10 @@
 // Building the planning graph (largest legally drivable part) and turn-aware shortest paths.
 #include "slamroute/rl/PlanGraph.hpp"
 
+// Boost 1.74's adjacency_list edge iterator trips GCC's -Wmaybe-uninitialized (a false positive
+// inside Boost); silenced for this file only.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>

@@ -62,7 +62,7 @@ int turnIndex(const PlanGraph& pg, int e, int f) {
 
 /// Step 2: how often each turn (index into pg.next) is taken in the cheapest legal covering
 /// circulation.
-std::vector<int> legalCirculation(const PlanGraph& pg) {
+std::vector<int> legalCirculation(const PlanGraph& pg, const std::vector<int>& forced) {
   using G = lemon::SmartDigraph;
   G lg;
   std::vector<G::Node> in(sz(pg.m)), out(sz(pg.m));
@@ -80,6 +80,7 @@ std::vector<int> legalCirculation(const PlanGraph& pg) {
   for (int e = 0; e < pg.m; ++e)
     for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k)
       turn[sz(k)] = lg.addArc(out[sz(e)], in[sz(pg.next[sz(k)])]);
+  for (int k : forced) lower[turn[sz(k)]] = 1;
   lemon::NetworkSimplex<G, long long, long long> ns(lg);
   ns.lowerMap(lower).costMap(cost);
   if (ns.run() != lemon::NetworkSimplex<G, long long, long long>::OPTIMAL)
@@ -90,45 +91,35 @@ std::vector<int> legalCirculation(const PlanGraph& pg) {
   return y;
 }
 
-}  // namespace
-
-double turnFreePostmanLength(const PlanGraph& pg) {
-  using G = lemon::SmartDigraph;
-  G g;
-  std::vector<G::Node> nodes(sz(pg.n));
-  for (auto& x : nodes) x = g.addNode();
-  G::ArcMap<long long> cost(g);
-  G::NodeMap<long long> supply(g, 0);
-  for (int e = 0; e < pg.m; ++e) {
-    const G::Arc a = g.addArc(nodes[sz(pg.u[sz(e)])], nodes[sz(pg.v[sz(e)])]);
-    cost[a] = mm(pg.len[sz(e)]);
-    supply[nodes[sz(pg.v[sz(e)])]] += 1;  // supply = in - out: surplus arrivals must leave again
-    supply[nodes[sz(pg.u[sz(e)])]] -= 1;
+struct Trails {
+  std::vector<int> y;  ///< turn counts
+  int swaps = 0, one_way = 0, detours = 0;
+  double detour_len = 0.0;
+  double length(const PlanGraph& pg) const {
+    double l = 0.0;
+    for (int e = 0; e < pg.m; ++e)
+      for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) l += y[sz(k)] * pg.len[sz(pg.next[sz(k)])];
+    return l;
   }
-  lemon::NetworkSimplex<G, long long, long long> ns(g);
-  ns.costMap(cost).supplyMap(supply);
-  if (ns.run() != lemon::NetworkSimplex<G, long long, long long>::OPTIMAL)
-    throw std::runtime_error("postman: the graph is not strongly connected");
-  return pg.total_edge_len + static_cast<double>(ns.totalCost()) / 1000.0;
-}
+};
 
-PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start) {
-  const double lower_bound = turnFreePostmanLength(pg);
-  std::vector<int> y = legalCirculation(pg);
-  double circulation_len = 0.0;
-  for (int e = 0; e < pg.m; ++e)
-    for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) circulation_len += y[sz(k)] * pg.len[sz(pg.next[sz(k)])];
-
-  // Step 3a: components of the support, free merges by swapping successors at junctions.
+UnionFind supportComponents(const PlanGraph& pg, const std::vector<int>& y) {
   UnionFind uf(pg.m);
   for (int e = 0; e < pg.m; ++e)
     for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k)
       if (y[sz(k)] > 0) uf.unite(e, pg.next[sz(k)]);
-  int components = 0;
-  for (int e = 0; e < pg.m; ++e) components += uf.find(e) == e ? 1 : 0;
-  std::vector<std::vector<int>> into(sz(pg.n));
-  for (int e = 0; e < pg.m; ++e) into[sz(pg.v[sz(e)])].push_back(e);
-  int swaps = 0;
+  return uf;
+}
+
+int countRoots(UnionFind& uf, int m) {
+  int c = 0;
+  for (int e = 0; e < m; ++e) c += uf.find(e) == e ? 1 : 0;
+  return c;
+}
+
+/// Step 3a: free merges (swaps and rotations of successors at junctions).
+void freeMerges(const PlanGraph& pg, const std::vector<std::vector<int>>& into, std::vector<int>& y,
+                UnionFind& uf, int& swaps) {
   for (int j = 0; j < pg.n; ++j) {
     bool merged = true;
     while (merged) {
@@ -159,7 +150,7 @@ PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config
             const auto [b, kb] = used[q];
             const auto [c, kc] = used[r];
             const int ra = uf.find(a), rb = uf.find(b), rc = uf.find(c);
-            if (ra == rb && rb == rc) continue;
+            if (ra == rb || rb == rc || ra == rc) continue;  // three distinct trails, else it splits
             if (ka == kb || kb == kc || ka == kc) continue;
             const int k1 = turnIndex(pg, a, pg.next[sz(kb)]);
             const int k2 = turnIndex(pg, b, pg.next[sz(kc)]);
@@ -173,36 +164,25 @@ PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config
           }
     }
   }
-  if (std::getenv("SLAMROUTE_DEBUG_POSTMAN")) {
-    std::map<int, std::pair<int, double>> cs;
-    for (int e = 0; e < pg.m; ++e) {
-      auto& c = cs[uf.find(e)];
-      int cnt = 0;
-      for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) cnt += y[sz(k)];
-      c.first += cnt;
-      c.second += cnt * pg.len[sz(e)];
-    }
-    for (auto& [r, c] : cs) std::fprintf(stderr, "component %d: %d traversals %.0f m\n", r, c.first, c.second);
-  }
+}
+
+/// Steps 3b-3c: merges that cost a detour.
+void detourMerges(const PlanGraph& pg, const TurnPaths& paths, const std::vector<std::vector<int>>& into,
+                  std::vector<int>& y, UnionFind& uf, int e0, Trails& t) {
+  int& one_way = t.one_way;
+  int& detours = t.detours;
+  double& detour_len = t.detour_len;
   // Step 3b: merges that need one detour: at a junction where trail A takes a->a' and trail B
   // takes b->b', with a->b' legal but b->a' not, replace b->a' by the shortest legal path from b
   // to a'. The cheapest such merge is applied first, repeatedly. What still stays apart is
   // joined by the shortest legal closed walk to the main trail (step 3c).
-  const int e0 = pg.out[sz(pg.outBegin(start))];
-  int detours = 0, one_way = 0;
-  double detour_len = 0.0;
   auto addWalk = [&](const std::vector<int>& walk) {
     for (std::size_t i = 1; i < walk.size(); ++i) {
       ++y[sz(turnIndex(pg, walk[i - 1], walk[i]))];
       uf.unite(walk[0], walk[i]);
     }
   };
-  auto countComponents = [&] {
-    int c = 0;
-    for (int e = 0; e < pg.m; ++e) c += uf.find(e) == e ? 1 : 0;
-    return c;
-  };
-  while (countComponents() > 1) {
+  while (countRoots(uf, pg.m) > 1) {
     double best = std::numeric_limits<double>::infinity();
     int best_drop1 = -1, best_drop2 = -1, best_add = -1;
     std::vector<int> best_path;
@@ -266,6 +246,99 @@ PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config
     detour_len += best;
   }
 
+}
+
+}  // namespace
+
+double turnFreePostmanLength(const PlanGraph& pg) {
+  using G = lemon::SmartDigraph;
+  G g;
+  std::vector<G::Node> nodes(sz(pg.n));
+  for (auto& x : nodes) x = g.addNode();
+  G::ArcMap<long long> cost(g);
+  G::NodeMap<long long> supply(g, 0);
+  for (int e = 0; e < pg.m; ++e) {
+    const G::Arc a = g.addArc(nodes[sz(pg.u[sz(e)])], nodes[sz(pg.v[sz(e)])]);
+    cost[a] = mm(pg.len[sz(e)]);
+    supply[nodes[sz(pg.v[sz(e)])]] += 1;  // supply = in - out: surplus arrivals must leave again
+    supply[nodes[sz(pg.u[sz(e)])]] -= 1;
+  }
+  lemon::NetworkSimplex<G, long long, long long> ns(g);
+  ns.costMap(cost).supplyMap(supply);
+  if (ns.run() != lemon::NetworkSimplex<G, long long, long long>::OPTIMAL)
+    throw std::runtime_error("postman: the graph is not strongly connected");
+  return pg.total_edge_len + static_cast<double>(ns.totalCost()) / 1000.0;
+}
+
+PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start) {
+  const double lower_bound = turnFreePostmanLength(pg);
+  const int e0 = pg.out[sz(pg.outBegin(start))];
+  std::vector<std::vector<int>> into(sz(pg.n));
+  for (int e = 0; e < pg.m; ++e) into[sz(pg.v[sz(e)])].push_back(e);
+  std::vector<int> forced;
+  const std::vector<int> y0 = legalCirculation(pg, forced);
+  Trails first;
+  first.y = y0;
+  const double circulation_len = first.length(pg);
+  UnionFind uf0 = supportComponents(pg, y0);
+  const int components = countRoots(uf0, pg.m);
+
+  // Connect (step 3), two ways, the shorter wins: (A) merge the trails of the optimal
+  // circulation with free swaps + detours; (B) re-solve the circulation forcing one legal turn
+  // into a still separate trail (the flow re-routes optimally around it), a few rounds.
+  auto connect = [&](std::vector<int> y) {
+    Trails t;
+    UnionFind uf = supportComponents(pg, y);
+    freeMerges(pg, into, y, uf, t.swaps);
+    if (countRoots(uf, pg.m) > 1) detourMerges(pg, paths, into, y, uf, e0, t);
+    t.y = std::move(y);
+    return t;
+  };
+  Trails best = connect(y0);
+  double best_len = best.length(pg);
+  int forced_rounds = 0;
+  std::vector<int> y = y0;
+  for (int round = 0; round < cfg.postman.max_forcing_rounds; ++round) {
+    UnionFind uf = supportComponents(pg, y);
+    int swaps = 0;
+    std::vector<int> ym = y;
+    freeMerges(pg, into, ym, uf, swaps);
+    if (countRoots(uf, pg.m) == 1) break;
+    // The smallest trail not containing e0: try forcing each legal turn into it.
+    std::map<int, int> size;
+    for (int e = 0; e < pg.m; ++e) ++size[uf.find(e)];
+    int small = -1;
+    for (auto& [r, s] : size)
+      if (r != uf.find(e0) && (small < 0 || s < size[small])) small = r;
+    double trial_best = std::numeric_limits<double>::infinity();
+    std::vector<int> trial_y;
+    int trial_k = -1;
+    for (int e = 0; e < pg.m; ++e) {
+      if (uf.find(e) == small) continue;
+      for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) {
+        if (uf.find(pg.next[sz(k)]) != small || y[sz(k)] > 0) continue;
+        forced.push_back(k);
+        std::vector<int> yt = legalCirculation(pg, forced);
+        forced.pop_back();
+        Trails tt;
+        tt.y = yt;
+        const double l = tt.length(pg);
+        if (l < trial_best) trial_best = l, trial_y = std::move(yt), trial_k = k;
+      }
+    }
+    if (trial_k < 0) break;
+    forced.push_back(trial_k);
+    y = trial_y;
+    ++forced_rounds;
+    Trails t = connect(y);
+    const double l = t.length(pg);
+    if (l < best_len) best = std::move(t), best_len = l;
+  }
+  std::vector<int>& yb = best.y;
+  const int swaps = best.swaps, one_way = best.one_way, detours = best.detours;
+  const double detour_len = best_len - circulation_len;
+  y = yb;
+
   // Step 4: Hierholzer on the line multigraph, starting with e0.
   std::vector<int> ptr(pg.next_off.begin(), pg.next_off.end() - 1);
   std::vector<int> stack{e0}, circuit;
@@ -301,6 +374,7 @@ PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config
                                   {"legal_circulation_m", circulation_len},
                                   {"trails_before_merge", components},
                                   {"free_merges", swaps},
+                                  {"forcing_rounds", forced_rounds},
                                   {"one_way_detours", one_way},
                                   {"closed_walk_detours", detours},
                                   {"detour_length_m", detour_len},

@@ -23,15 +23,19 @@
 //            itself would add an action-independent drift), normalised by u_ref = the mean
 //            per-edge drop of log det L when driving n mean-length edges of weight 1, so that
 //            the paper's weight 20 makes the term ~1 per edge like R_C and R_A (the paper chose
-//            its weights so that the terms have similar magnitude).
+//            its weights so that the terms have similar magnitude). A loop closure can raise
+//            log det L by many u_ref at once; the weighted term is clipped to
+//            +-uncertainty_clip so that seeking closures never outweighs covering new nodes.
+//    The training loop runs the EIF in covariance form (FastEif, algebraically the same filter).
 //    reward = "accuracy" keeps only R_A (paper Table 2).
 //  - Route: greedy roll-out of the table from the start node. The greedy policy is
 //    deterministic, so returning to a state with no coverage progress since its last visit is a
-//    stall (it would cycle forever); then, if complete_with_shortest_paths, the route drives the
+//    stall (it would cycle forever; optionally also stall_steps steps without progress); then, if complete_with_shortest_paths, the route drives the
 //    shortest legal path to the nearest uncovered part and the roll-out resumes (route.json:
 //    completed_by_shortest_paths, and the segment count / length in extra).
 // Cost: episodes * steps, steps <= cap = O(edges): linear in the graph size; nothing is
 // allocated inside the episode loop.
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -114,6 +118,27 @@ struct EpisodeCoverage {
   }
 };
 
+/// The EIF of Eif.hpp in covariance form (S = L^-1), algebraically identical, cheaper per step
+/// (no inversion when driving); used in the training loop only. Metrics use PoseEif.
+struct FastEif {
+  Eigen::Matrix3d S0, S, R_lc;
+  explicit FastEif(const EifConfig& cfg) {
+    const PoseEif ref(cfg);
+    S0 = ref.info().inverse();
+    const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
+    const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
+    R_lc = Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+    S = S0;
+  }
+  void reset() { S = S0; }
+  void drive(const EdgeMotion& mo) { S = mo.F * S * mo.F.transpose() + mo.Q; }
+  void closeLoop(const Eigen::Matrix3d& node_cov) {
+    const Eigen::Matrix3d L = S.inverse() + (node_cov + R_lc).inverse();
+    S = L.inverse();
+  }
+  double logDetCov() const { return std::log(S.determinant()); }
+};
+
 int signature(const Table& t, int s, const std::vector<int>& act, const EpisodeCoverage& cov) {
   int sig = 0;
   const int b = t.act_off[sz(s)];
@@ -158,9 +183,9 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
   const double u_scale = 1.0 / (20.0 * u_ref);
 
   EpisodeCoverage cov(pg, goal);
-  PoseEif eif(cfg.eif);
-  std::vector<Info3> node_info(sz(pg.n));
-  std::vector<double> node_travel(sz(pg.n), 0.0);
+  FastEif eif(cfg.eif);
+  std::vector<Eigen::Matrix3d> node_cov(sz(pg.n));
+  std::vector<double> node_logdet(sz(pg.n), 0.0), node_travel(sz(pg.n), 0.0);
   std::vector<int> node_stamp(sz(pg.n), 0);
   std::mt19937_64 rng(seed);
   auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
@@ -176,10 +201,11 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
                                               std::min(1.0, static_cast<double>(ep) / decay_eps);
     cov.reset(start);
     eif.reset();
-    node_info[sz(start)] = eif.info();
+    node_cov[sz(start)] = eif.S;
+    node_logdet[sz(start)] = eif.logDetCov();
     node_travel[sz(start)] = 0.0;
     node_stamp[sz(start)] = ep + 1;
-    double travel = 0.0, logdet_info = eif.logDetInfo();
+    double travel = 0.0, logdet_cov = eif.logDetCov();
     int s = pg.m + start;
     int sig = signature(t, s, act, cov);
     for (long long step = 0; step < cap; ++step) {
@@ -195,18 +221,24 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
         travel += pg.len[sz(f)];
         eif.drive(motion[sz(f)]);
         const int w = pg.v[sz(f)];
+        double ld = eif.logDetCov();
         if (node_stamp[sz(w)] == ep + 1) {
-          if (travel - node_travel[sz(w)] >= cfg.eif.loop_min_travel_m) eif.closeLoop(node_info[sz(w)]);
-          if (eif.info().determinant() > node_info[sz(w)].determinant()) node_info[sz(w)] = eif.info();
+          if (travel - node_travel[sz(w)] >= cfg.eif.loop_min_travel_m) {
+            eif.closeLoop(node_cov[sz(w)]);
+            ld = eif.logDetCov();
+          }
+          if (ld < node_logdet[sz(w)]) node_cov[sz(w)] = eif.S, node_logdet[sz(w)] = ld;
         } else {
           node_stamp[sz(w)] = ep + 1;
-          node_info[sz(w)] = eif.info();
+          node_cov[sz(w)] = eif.S;
+          node_logdet[sz(w)] = ld;
         }
         node_travel[sz(w)] = travel;
-        const double ld = eif.logDetInfo();
-        r += qc.weight_coverage * (gained - qc.step_length_cost * pg.len[sz(f)] / pg.mean_len) +
-             qc.weight_uncertainty * (ld - logdet_info) * u_scale;
-        logdet_info = ld;
+        // R_U: gain of log det L = drop of log det covariance, clipped (see header).
+        const double ru = std::clamp((logdet_cov - ld) * u_scale * qc.weight_uncertainty,
+                                     -qc.uncertainty_clip, qc.uncertainty_clip);
+        r += qc.weight_coverage * (gained - qc.step_length_cost * pg.len[sz(f)] / pg.mean_len) + ru;
+        logdet_cov = ld;
       }
       ++total_steps;
       const bool done = cov.remaining == 0;
@@ -238,8 +270,11 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
   double sp_len = 0.0;
   int s = pg.m + start;
   const long long roll_cap = 10LL * pg.m + 10;
+  long long progress_step = 0;
   for (long long step = 0; !rc.done() && step < roll_cap; ++step) {
-    if (seen_epoch[sz(s)] == epoch) {  // stall: back in a state without progress
+    const bool stalled = seen_epoch[sz(s)] == epoch ||
+                         (qc.stall_steps > 0 && step - progress_step >= qc.stall_steps);
+    if (stalled) {  // back in a state without progress (or too long without any)
       if (!qc.complete_with_shortest_paths) break;
       auto p = paths.toNearest(s < pg.m ? s : -1, start, [&rc](int e) { return rc.isNew(e); });
       if (!p) break;
@@ -252,6 +287,7 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
       out.completed_by_shortest_paths = true;
       s = out.edges.back();
       ++epoch;
+      progress_step = step;
       continue;
     }
     seen_epoch[sz(s)] = epoch;
@@ -261,7 +297,7 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
       sg |= rc.isNew(act[sz(t.act_off[sz(s)] + i)]) ? (1 << i) : 0;
     const int deg = t.deg(s);
     const int f = act[sz(t.act_off[sz(s)] + greedy(&t.q[t.qoff[sz(s)] + sz(sg) * sz(deg)], deg))];
-    if (rc.drive(f)) ++epoch;
+    if (rc.drive(f)) ++epoch, progress_step = step;
     out.edges.push_back(f);
     s = f;
   }

@@ -142,8 +142,11 @@ int branchesAt(const PointGrid& grid, const std::vector<Point3>& pts, const Poin
     const double rad = s.rel[static_cast<std::size_t>(i)].head<2>().norm();
     s.rmin[r] = std::min(s.rmin[r], rad);
     s.rmax[r] = std::max(s.rmax[r], rad);
-    s.sx[r] += s.rel[static_cast<std::size_t>(i)].x() / rad;
-    s.sy[r] += s.rel[static_cast<std::size_t>(i)].y() / rad;
+    // Bearing from the outer half of the ring: a parallel carriageway looks close to
+    // perpendicular near the inner radius, but runs in the street's direction further out.
+    const double wgt = rad >= 0.5 * (cfg.inner_radius_m + cfg.outer_radius_m) ? 1.0 : 1e-3;
+    s.sx[r] += wgt * s.rel[static_cast<std::size_t>(i)].x() / rad;
+    s.sy[r] += wgt * s.rel[static_cast<std::size_t>(i)].y() / rad;
     // No trace point at the centre (a refined node position): connectivity cannot be tested.
     if (self_root < 0 || s.disk.find(i) == self_root) s.conn[r] = 1;
   }
@@ -273,6 +276,7 @@ IntersectionResult detectIntersections(const std::vector<Point3>& pts, const Nod
   const PointGrid grid(pts, 5.0);
 
   // 1. Hollow-cylinder test of every point (independent -> parallel, deterministic).
+  std::vector<int> nbranch(n, 0);
   tbb::enumerable_thread_specific<Scratch> scratch;
   Progress progress("intersections", n);
   const std::size_t chunk = 20000;
@@ -281,14 +285,18 @@ IntersectionResult detectIntersections(const std::vector<Point3>& pts, const Nod
     tbb::parallel_for(tbb::blocked_range<std::size_t>(b, e, 256), [&](const auto& r) {
       Scratch& s = scratch.local();
       for (std::size_t i = r.begin(); i != r.end(); ++i)
-        res.is_intersection[i] =
-            branchesAt(grid, pts, pts[i], cfg, s, nullptr) >= cfg.min_branches ? 1 : 0;
+        nbranch[i] = branchesAt(grid, pts, pts[i], cfg, s, nullptr);
     });
     progress.update(e);
   }
   progress.finish();
 
-  // 2. Merge intersection points of one junction (Euclidean clustering of the points).
+  for (std::size_t i = 0; i < n; ++i) res.is_intersection[i] = nbranch[i] >= cfg.min_branches;
+
+  // 2. Group the intersection points into junctions: greedy seeds, most branches first, then the
+  //    densest (arms of a junction overlap at its centre); a seed takes the free intersection
+  //    points within node_radius_m. Unlike plain connected components this also splits a chain
+  //    of junctions closer together than the cylinder into several nodes.
   std::vector<int> ipts;
   std::vector<Point3> ipos;
   for (std::size_t i = 0; i < n; ++i)
@@ -296,13 +304,36 @@ IntersectionResult detectIntersections(const std::vector<Point3>& pts, const Nod
       ipts.push_back(static_cast<int>(i));
       ipos.push_back(pts[i]);
     }
-  int ncomp = 0;
-  const auto label = detail::euclideanComponents(ipos, cfg.merge_distance_m, &ncomp);
-  std::vector<std::vector<int>> comps(static_cast<std::size_t>(ncomp));
+  const PointGrid igrid(ipos, std::max(cfg.node_radius_m, 1.0));
+  std::vector<int> density(ipos.size(), 0);
   for (std::size_t k = 0; k < ipos.size(); ++k)
-    comps[static_cast<std::size_t>(label[k])].push_back(static_cast<int>(k));
+    igrid.forEachNear(ipos[k], cfg.merge_distance_m, 0.5 * cfg.height_m,
+                      [&](int) { ++density[k]; });
+  std::vector<int> order(ipos.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const int ba = nbranch[static_cast<std::size_t>(ipts[static_cast<std::size_t>(a)])];
+    const int bb = nbranch[static_cast<std::size_t>(ipts[static_cast<std::size_t>(b)])];
+    if (ba != bb) return ba > bb;
+    if (density[static_cast<std::size_t>(a)] != density[static_cast<std::size_t>(b)])
+      return density[static_cast<std::size_t>(a)] > density[static_cast<std::size_t>(b)];
+    return a < b;
+  });
+  std::vector<char> taken(ipos.size(), 0);
+  std::vector<std::vector<int>> comps;
+  for (int seed : order) {
+    if (taken[static_cast<std::size_t>(seed)]) continue;
+    comps.emplace_back();
+    igrid.forEachNear(ipos[static_cast<std::size_t>(seed)], cfg.node_radius_m, 0.5 * cfg.height_m,
+                      [&](int k) {
+                        if (taken[static_cast<std::size_t>(k)]) return;
+                        taken[static_cast<std::size_t>(k)] = 1;
+                        comps.back().push_back(k);
+                      });
+    std::sort(comps.back().begin(), comps.back().end());
+  }
 
-  // 3. One node per component: median start, least-squares crossing of the arms.
+  // 3. One node per group: median start, least-squares crossing of the arms.
   Scratch s;
   std::vector<Point3> centres;
   std::vector<std::vector<int>> owned;
@@ -319,6 +350,9 @@ IntersectionResult detectIntersections(const std::vector<Point3>& pts, const Nod
     // sees only the two ways of its street from its median.
     const int b0 = branchesAt(grid, pts, c, cfg, s, nullptr);
     if (b0 < cfg.min_branches) continue;
+    logDebug("node: median (" + std::to_string(c.x()) + ", " + std::to_string(c.y()) + ") from " +
+             std::to_string(comp.size()) + " intersection points, " + std::to_string(b0) +
+             " branches");
     if (cfg.refine_centre) {
       // Keep the refined centre only when it still sees the junction's branches (curved arms
       // or wide junctions can mislead the line fit).

@@ -132,9 +132,9 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
     const double t = sim.time();
     sim.guard("following the mapping vehicle", [&] {
       if (contains(libsumo::Simulation::getStartingTeleportIDList(), kMapper))
-        throw std::runtime_error("SUMO teleported the mapping vehicle at t=" + std::to_string(t) +
-                                 " s (stuck on " + edges[static_cast<std::size_t>(last_route_index)] +
-                                 "); the drive is not recorded");
+        throw std::runtime_error(
+            "SUMO teleported the mapping vehicle at t=" + std::to_string(t) + " s (stuck on " +
+            edges[static_cast<std::size_t>(last_route_index)] + "); the drive is not recorded");
       if (!departed && contains(libsumo::Simulation::getDepartedIDList(), kMapper)) {
         departed = true;
         rec.depart_s = t - dc.step_length_s;
@@ -152,7 +152,8 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
       }
       const int ri = libsumo::Vehicle::getRouteIndex(kMapper);
       if (ri < last_route_index || ri >= static_cast<int>(edges.size()))
-        throw std::runtime_error("the mapping vehicle left its route at t=" + std::to_string(t) + " s");
+        throw std::runtime_error("the mapping vehicle left its route at t=" + std::to_string(t) +
+                                 " s");
       if (ri != last_route_index || step % 100 == 0) {
         if (libsumo::Vehicle::getRoute(kMapper) != edges)
           throw std::runtime_error("SUMO rerouted the mapping vehicle at t=" + std::to_string(t) +
@@ -183,8 +184,9 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
   }
   progress.finish();
   if (last_route_index != static_cast<int>(edges.size()) - 1)
-    throw std::runtime_error(where + ": the mapping vehicle left the simulation before the end of "
-                                     "its route (last edge '" +
+    throw std::runtime_error(where +
+                             ": the mapping vehicle left the simulation before the end of "
+                             "its route (last edge '" +
                              edges[static_cast<std::size_t>(last_route_index)] + "')");
   if (rec.groundtruth.size() < 2)
     throw std::runtime_error(where + ": the route is too short to record a trajectory");

@@ -13,9 +13,9 @@ class World;
 
 /// What the simulation produced, before anything is written.
 struct DriveRecord {
-  Trajectory groundtruth;             ///< T_world_sensor per recorded step
-  std::vector<PoseEdge> pose_edges;   ///< one per pose
-  TrafficFrames traffic;              ///< one per pose
+  Trajectory groundtruth;            ///< T_world_sensor per recorded step
+  std::vector<PoseEdge> pose_edges;  ///< one per pose
+  TrafficFrames traffic;             ///< one per pose
   double route_length_m = 0.0;
   double depart_s = 0.0, arrive_s = 0.0;
   int background_vehicles = 0;

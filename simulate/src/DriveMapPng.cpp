@@ -1,9 +1,8 @@
 // renderStackedScansPng: top-down view of scans stacked with ground-truth poses.
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include <algorithm>
 #include <limits>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 #include "slamroute/core/AtomicFile.hpp"
@@ -21,7 +20,8 @@ std::size_t renderStackedScansPng(const ScanSource& scans, const Trajectory& pos
   std::vector<Eigen::Vector3f> pts;
   for (std::size_t i = 0; i < scans.size(); i += o.stride) {
     const Eigen::Isometry3f T = poses[i].T_world_body.cast<float>();
-    for (const ScanPoint& p : scans.scan(i).points) pts.push_back(T * Eigen::Vector3f(p.x, p.y, p.z));
+    for (const ScanPoint& p : scans.scan(i).points)
+      pts.push_back(T * Eigen::Vector3f(p.x, p.y, p.z));
   }
   if (pts.empty()) throw std::runtime_error(png.string() + ": no points to draw");
   Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max()), hi = -lo;
@@ -53,7 +53,8 @@ std::size_t renderStackedScansPng(const ScanSource& scans, const Trajectory& pos
   cv::applyColorMap(grey, colour, cv::COLORMAP_JET);
   colour.copyTo(out, mask);
   std::vector<uchar> buf;
-  if (!cv::imencode(".png", out, buf)) throw std::runtime_error(png.string() + ": PNG encoding failed");
+  if (!cv::imencode(".png", out, buf))
+    throw std::runtime_error(png.string() + ": PNG encoding failed");
   writeFileAtomic(png, std::string(buf.begin(), buf.end()));
   return pts.size();
 }

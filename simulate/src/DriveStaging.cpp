@@ -28,8 +28,11 @@ StagingDir::StagingDir(fs::path target, const std::string& marker)
   checkReplaceable(target_, marker_);
   std::error_code ec;
   fs::create_directories(target_.parent_path(), ec);
-  if (ec) throw std::runtime_error(target_.parent_path().string() + ": cannot create folder (" + ec.message() + ")");
-  tmp_ = target_.parent_path() / ("." + target_.filename().string() + ".tmp." + std::to_string(::getpid()));
+  if (ec)
+    throw std::runtime_error(target_.parent_path().string() + ": cannot create folder (" +
+                             ec.message() + ")");
+  tmp_ = target_.parent_path() /
+         ("." + target_.filename().string() + ".tmp." + std::to_string(::getpid()));
   fs::remove_all(tmp_, ec);
   fs::create_directories(tmp_, ec);
   if (ec) throw std::runtime_error(tmp_.string() + ": cannot create folder (" + ec.message() + ")");
@@ -48,7 +51,8 @@ void StagingDir::commit() {
   if (fs::exists(target_, ec)) fs::remove_all(target_, ec);
   if (ec) throw std::runtime_error(target_.string() + ": cannot replace (" + ec.message() + ")");
   fs::rename(tmp_, target_, ec);
-  if (ec) throw std::runtime_error(target_.string() + ": cannot move into place (" + ec.message() + ")");
+  if (ec)
+    throw std::runtime_error(target_.string() + ": cannot move into place (" + ec.message() + ")");
   committed_ = true;
 }
 

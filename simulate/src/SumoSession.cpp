@@ -28,23 +28,32 @@ SumoSession::SumoSession(SumoSessionOptions opts) : opts_(std::move(opts)) {
                              ": a SUMO session is already open in this process (libsumo runs one "
                              "simulation per process)");
   try {
-    if (!std::filesystem::exists(opts_.net))
-      throw std::runtime_error("net file not found");
+    if (!std::filesystem::exists(opts_.net)) throw std::runtime_error("net file not found");
     if (!(opts_.step_length_s > 0.0)) throw std::runtime_error("step length must be > 0");
     if (!std::getenv("SUMO_HOME")) setenv("SUMO_HOME", "/usr/share/sumo", 0);
     std::vector<std::string> args = {
-        "-n", opts_.net.string(),
-        "--begin", "0",
-        "--step-length", num(opts_.step_length_s),
-        "--seed", std::to_string(opts_.seed % 2147483647ULL),
-        "--no-step-log", "true",
-        "--duration-log.disable", "true",
-        "--xml-validation", "never",
-        "--xml-validation.net", "never",
-        "--time-to-teleport", num(opts_.time_to_teleport_s > 0 ? opts_.time_to_teleport_s : -1),
+        "-n",
+        opts_.net.string(),
+        "--begin",
+        "0",
+        "--step-length",
+        num(opts_.step_length_s),
+        "--seed",
+        std::to_string(opts_.seed % 2147483647ULL),
+        "--no-step-log",
+        "true",
+        "--duration-log.disable",
+        "true",
+        "--xml-validation",
+        "never",
+        "--xml-validation.net",
+        "never",
+        "--time-to-teleport",
+        num(opts_.time_to_teleport_s > 0 ? opts_.time_to_teleport_s : -1),
         // Collisions are logged, not resolved by teleporting (a teleport would be an error
         // for the mapping vehicle).
-        "--collision.action", "warn",
+        "--collision.action",
+        "warn",
     };
     if (!opts_.warnings) args.insert(args.end(), {"--no-warnings", "true"});
     args.insert(args.end(), opts_.extra_args.begin(), opts_.extra_args.end());

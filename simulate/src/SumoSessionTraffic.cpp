@@ -14,8 +14,7 @@
 namespace slamroute::simulate {
 
 BackgroundTraffic::BackgroundTraffic(const SumoSession& session, const SumoNet& net,
-                                     double vehicles_per_km, std::uint64_t seed,
-                                     std::string prefix)
+                                     double vehicles_per_km, std::uint64_t seed, std::string prefix)
     : session_(session), rng_(seed ^ 0x9e3779b97f4a7c15ULL), prefix_(std::move(prefix)) {
   const DriveGraph dg = DriveGraph::fromNet(net);
   double km = 0.0;
@@ -24,7 +23,8 @@ BackgroundTraffic::BackgroundTraffic(const SumoSession& session, const SumoNet& 
     // Long enough for a car to be inserted at a random free position.
     if (dg.in_lscc_edge[i] && dg.edges[i].length_m > 15.0) edges_.push_back(dg.edges[i].sumo_edge);
   }
-  target_ = edges_.size() < 2 ? 0 : static_cast<int>(std::lround(std::max(0.0, vehicles_per_km) * km));
+  target_ =
+      edges_.size() < 2 ? 0 : static_cast<int>(std::lround(std::max(0.0, vehicles_per_km) * km));
 }
 
 void BackgroundTraffic::update() {

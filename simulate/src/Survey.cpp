@@ -35,7 +35,9 @@ constexpr const char* kSurveyPrefix = "survey";
 class GpsNoise {
  public:
   GpsNoise(double sigma, double tau, double dt, std::uint64_t seed)
-      : sigma_(sigma), a_(tau > 0 ? std::exp(-dt / tau) : 0.0), rng_(seed ^ 0x5851f42d4c957f2dULL) {}
+      : sigma_(sigma),
+        a_(tau > 0 ? std::exp(-dt / tau) : 0.0),
+        rng_(seed ^ 0x5851f42d4c957f2dULL) {}
   Vec3 next(const std::string& vehicle) {
     if (!(sigma_ > 0)) return Vec3::Zero();
     std::normal_distribution<double> n(0.0, 1.0);
@@ -119,7 +121,8 @@ SurveyRecord simulate(const SumoNet& net, const DriveGraph& dg,
   rec.survey_vehicles = routes.size();
   BackgroundTraffic traffic(sim, net, sc.traffic_per_km, seed, "bg");
   const double dt_trace = 1.0 / sc.trace_hz;
-  const int steps_per_trace = std::max(1, static_cast<int>(std::lround(dt_trace / sc.step_length_s)));
+  const int steps_per_trace =
+      std::max(1, static_cast<int>(std::lround(dt_trace / sc.step_length_s)));
   GpsNoise noise(sc.noise_sigma_m, sc.noise_tau_s, steps_per_trace * sc.step_length_s, seed);
 
   std::ostringstream traces;
@@ -152,8 +155,8 @@ SurveyRecord simulate(const SumoNet& net, const DriveGraph& dg,
         const Vec3 pos(p.x, p.y, p.z);
         if (road[0] != ':') rec.visited.insert(road);
         const Vec3 n = noise.next(id);
-        traces << fmt(t, 2) << ',' << id << ',' << fmt(p.x + n.x(), 3) << ','
-               << fmt(p.y + n.y(), 3) << ',' << fmt(p.z + n.z(), 3) << ','
+        traces << fmt(t, 2) << ',' << id << ',' << fmt(p.x + n.x(), 3) << ',' << fmt(p.y + n.y(), 3)
+               << ',' << fmt(p.z + n.z(), 3) << ','
                << fmt(normalizeDeg(headingFromSumoAngle(angle)), 2) << ','
                << fmt(libsumo::Vehicle::getSpeed(id), 3) << '\n';
         ++rec.trace_rows;
@@ -222,8 +225,10 @@ SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
   res.drivable_edges = dg.numEdges();
   std::vector<std::string> unvisited;
   for (const auto& e : dg.edges) {
-    if (rec.visited.count(e.sumo_edge)) ++res.visited_edges;
-    else unvisited.push_back(e.sumo_edge);
+    if (rec.visited.count(e.sumo_edge))
+      ++res.visited_edges;
+    else
+      unvisited.push_back(e.sumo_edge);
   }
   res.coverage_pct = res.drivable_edges ? 100.0 * res.visited_edges / res.drivable_edges : 0.0;
   res.planned_coverage_pct = res.drivable_edges ? 100.0 * planned.size() / res.drivable_edges : 0.0;
@@ -254,7 +259,8 @@ SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
   res.bytes_written = folderBytes(staging.path());
   staging.commit();
   res.out_dir = staging.target();
-  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  res.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return res;
 }
 

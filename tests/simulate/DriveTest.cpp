@@ -31,7 +31,8 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "drive_grid";
   const fs::path route = fs::path(SLAMROUTE_TEST_TMP) / "drive_grid_route.json";
   fs::create_directories(SLAMROUTE_TEST_TMP);
-  const std::vector<std::string> edges = {"g00_g01", "g01_g02", "g02_g12", "g12_g11", "g11_g10", "g10_g20"};
+  const std::vector<std::string> edges = {"g00_g01", "g01_g02", "g02_g12",
+                                          "g12_g11", "g11_g10", "g10_g20"};
   std::ofstream(route) << nlohmann::json(edges).dump();
   simulate::Config cfg;
   cfg.lidar.preset = "vlp16";
@@ -96,6 +97,39 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   EXPECT_EQ(j["teleports"].get<int>(), 0);
   EXPECT_EQ(j["frames"].get<std::size_t>(), gt.size());
   EXPECT_NEAR(j["route_length_m"].get<double>(), r.route_length_m, 1e-9);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Drive, TeleportedMapperIsAnErrorAndNothingIsWritten) {
+  // With a 1 s teleport time and dense traffic, SUMO teleports the mapper the first time it
+  // waits (at the traffic light of R1C2): the drive must fail instead of recording a jump.
+  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "drive_teleport";
+  const fs::path route = fs::path(SLAMROUTE_TEST_TMP) / "drive_teleport_route.json";
+  fs::create_directories(SLAMROUTE_TEST_TMP);
+  fs::remove_all(dir);
+  std::ofstream(route)
+      << R"(["R1C1_R1C2","R1C2_R3C2","R3C2_R3C1","R3C1_R3C0","R3C0_R2C0","R2C0_R2C1","R2C1_R2C3"])";
+  simulate::Config cfg;
+  cfg.drive.time_to_teleport_s = 1.0;
+  cfg.drive.traffic_per_km = 20.0;
+  simulate::DriveOptions o;
+  o.net = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  o.route_file = route;
+  o.out_dir = dir;
+  o.seed = 42;
+  try {
+    simulate::runDrive(o, cfg);
+    FAIL() << "a teleported mapper was recorded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("teleported the mapping vehicle"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir));
+  for (const auto& e : fs::directory_iterator(dir.parent_path()))
+    EXPECT_EQ(e.path().filename().string().find(".drive_teleport.tmp"), std::string::npos);
 }
 
 }  // namespace

@@ -10,7 +10,8 @@ namespace {
 using namespace slamroute;
 
 SumoNet grid() {
-  return SumoNet::read(std::filesystem::path(SLAMROUTE_SOURCE_DIR) / "networks/test/grid3x3.net.xml");
+  return SumoNet::read(std::filesystem::path(SLAMROUTE_SOURCE_DIR) /
+                       "networks/test/grid3x3.net.xml");
 }
 
 std::string errorOf(const std::vector<std::string>& edges) {

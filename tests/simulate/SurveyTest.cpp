@@ -49,7 +49,8 @@ TEST(Survey, GridSurveyCoversTheNetWithTracesAndDepthFrames) {
 
   const auto traces = readCsv(out / "traces.csv");
   ASSERT_GT(traces.size(), 100u);
-  EXPECT_EQ(traces[0], (std::vector<std::string>{"t", "vehicle", "x", "y", "z", "heading_deg", "speed"}));
+  EXPECT_EQ(traces[0],
+            (std::vector<std::string>{"t", "vehicle", "x", "y", "z", "heading_deg", "speed"}));
   // 10 Hz per vehicle: consecutive rows of one vehicle are 0.1 s apart.
   std::map<std::string, double> last_t;
   std::size_t checked = 0;
@@ -75,6 +76,29 @@ TEST(Survey, GridSurveyCoversTheNetWithTracesAndDepthFrames) {
   // Nothing half-written beside the result.
   for (const auto& e : fs::directory_iterator(out.parent_path()))
     EXPECT_EQ(e.path().filename().string().find(".survey_grid.tmp"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Survey, DefaultCitySurveyVisitsAtLeast90PercentOfDrivableEdges) {
+  const fs::path out = fs::path(SLAMROUTE_TEST_TMP) / "survey_city";
+  fs::remove_all(out);
+  simulate::Config cfg;
+  cfg.survey.depth_spacing_m = 150.0;  // the default (50 m) renders ~400 frames: 20 s
+  cfg.depth.width = 80;
+  cfg.depth.height = 60;
+  simulate::SurveyOptions o;
+  o.net = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  o.out_dir = out;
+  o.seed = 42;
+  const simulate::SurveyResult r = simulate::runSurvey(o, cfg);
+  EXPECT_EQ(r.drivable_edges, 71u);
+  EXPECT_GE(r.coverage_pct, 90.0) << r.visited_edges << "/" << r.drivable_edges;
+  EXPECT_GT(r.depth_frames, 50u);
+  EXPECT_GT(r.trace_rows, 10000u);
+  EXPECT_LT(r.bytes_written, 300u * 1000u * 1000u);
 }
 
 }  // namespace

@@ -24,7 +24,9 @@ struct AlignOptions {
   int iterations = 10;
   double max_nn_m = 1.0;   ///< all 5 neighbours of a correspondence within this [m]
   double huber_m = 0.1;
+  double plane_max_dev_m = 0.2;  ///< all neighbours within this of their fitted plane [m]
   unsigned dof_mask = kAllDof;
+  double degenerate_eig = 0.0;   ///< > 0: freeze directions with lambda/rows below this
 };
 
 struct AlignResult {

@@ -19,7 +19,7 @@ namespace slamroute::evaluate {
 enum class FrameStatus { Ok, Empty, Invalid, Missing, FewFeatures, Degenerate };
 const char* toString(FrameStatus s);
 
-struct StageTimes {  ///< accumulated seconds per stage
+struct StageTimes {  ///< accumulated CPU seconds (this thread) per stage
   double projection = 0, ground = 0, clustering = 0, features = 0, odometry = 0, mapping = 0,
          local_map = 0, loop_closure = 0, pose_graph = 0, total = 0;
 };

@@ -49,6 +49,8 @@ struct QLearningConfig {
   double weight_accuracy = 1.0;     ///< eq. 7 weight of R_A
   double weight_uncertainty = 20.0; ///< eq. 7 weight of R_U (paper: 20)
   double step_length_cost = 0.1;    ///< R_C: cost per mean edge length driven (eq. 6 l_path)
+  double uncertainty_clip = 1.0;    ///< |w_U * R_U| is clipped to this (one closure != many new nodes)
+  int stall_steps = 2;              ///< roll-out: also a stall after this many steps without progress (0 = off)
   bool complete_with_shortest_paths = true;  ///< finish a stalled greedy roll-out by shortest paths
 };
 
@@ -69,6 +71,10 @@ void visitFields(V& v, QLearningConfig& c) {
   v.field("weight_uncertainty", c.weight_uncertainty, "eq. 7 weight of R_U (paper: 20)");
   v.field("step_length_cost", c.step_length_cost,
           "R_C cost per mean-edge-length driven (the l_path term of eq. 6)");
+  v.field("uncertainty_clip", c.uncertainty_clip,
+          "clip of the weighted uncertainty term |w_U * R_U| per step");
+  v.field("stall_steps", c.stall_steps,
+          "roll-out: a stall also after this many steps without new coverage (0 = only on a repeated state)");
   v.field("complete_with_shortest_paths", c.complete_with_shortest_paths,
           "finish a stalled greedy roll-out with shortest paths to the nearest uncovered part");
 }
@@ -102,12 +108,16 @@ void visitFields(V& v, TspConfig& c) {
 
 struct PostmanConfig {
   bool closed = true;  ///< the circuit returns to its start (Euler circuit)
+  int max_forcing_rounds = 12;  ///< re-solves forcing a turn into a separate trail (0 = detours only)
 };
 
 template <class V>
 void visitFields(V& v, PostmanConfig& c) {
   v.field("closed", c.closed, "route returns to the start node (otherwise the last return leg "
                               "after full coverage is cut)");
+  v.field("max_forcing_rounds", c.max_forcing_rounds,
+          "connectivity repair: re-solve the circulation forcing a turn into a separate trail, at "
+          "most this many rounds (0 = merge by detours only)");
 }
 
 struct Config {

@@ -20,7 +20,8 @@ struct NodeConfig {
   double min_branch_angle_deg = 30.0;  ///< clusters seen closer in bearing are one branch [deg]
   int min_branches = 3;              ///< clusters needed to call a point an intersection point
   bool require_connected = true;     ///< count only branches linked to the point inside the disk
-  double merge_distance_m = 5.0;     ///< intersection points closer than this form one node [m]
+  double node_radius_m = 10.0;       ///< intersection points within this of a seed form its node [m]
+  double merge_distance_m = 5.0;     ///< nodes whose centres end up closer are merged [m]
   int min_node_points = 3;           ///< fewer intersection points are discarded as noise
   bool refine_centre = true;         ///< move the node to the least-squares crossing of its arms
 };
@@ -39,7 +40,9 @@ void visitFields(V& v, NodeConfig& c) {
   v.field("min_branches", c.min_branches, "clusters that make an intersection point (paper 3)");
   v.field("require_connected", c.require_connected,
           "count only branches connected to the point inside the outer disk");
-  v.field("merge_distance_m", c.merge_distance_m, "intersection points closer form one node [m]");
+  v.field("node_radius_m", c.node_radius_m,
+          "intersection points within this of a seed form one node (junction resolution) [m]");
+  v.field("merge_distance_m", c.merge_distance_m, "nodes whose centres end up closer merge [m]");
   v.field("min_node_points", c.min_node_points, "intersection points needed for a node");
   v.field("refine_centre", c.refine_centre, "node at least-squares crossing of its arms");
 }

@@ -33,10 +33,11 @@ namespace slamroute::simulate {
 
 struct DriveOptions {
   std::filesystem::path net;
-  std::filesystem::path route_file;  ///< route.json (planner), a JSON list of edges, or {"sumo_edges":[…]}
+  std::filesystem::path
+      route_file;  ///< route.json (planner), a JSON list of edges, or {"sumo_edges":[…]}
   std::filesystem::path out_dir;
-  bool save_scans = false;           ///< write KITTI scans (else regenerated on demand)
-  bool write_world_mesh = true;      ///< write world.ply
+  bool save_scans = false;       ///< write KITTI scans (else regenerated on demand)
+  bool write_world_mesh = true;  ///< write world.ply
   std::uint64_t seed = 42;
 };
 
@@ -47,21 +48,21 @@ struct PoseEdge {
 
 struct DriveResult {
   std::filesystem::path out_dir;
-  std::vector<std::string> route;     ///< SUMO edges driven
-  Trajectory groundtruth;             ///< sensor poses T_world_sensor
-  std::vector<PoseEdge> pose_edges;   ///< one per pose
-  double route_length_m = 0.0;        ///< sum of the route's edge lengths
-  double driven_m = 0.0;              ///< path length of the recorded positions
+  std::vector<std::string> route;    ///< SUMO edges driven
+  Trajectory groundtruth;            ///< sensor poses T_world_sensor
+  std::vector<PoseEdge> pose_edges;  ///< one per pose
+  double route_length_m = 0.0;       ///< sum of the route's edge lengths
+  double driven_m = 0.0;             ///< path length of the recorded positions
   double depart_s = 0.0, arrive_s = 0.0;
   int teleports = 0;
-  std::size_t traffic_boxes = 0;      ///< rows of traffic.csv
+  std::size_t traffic_boxes = 0;  ///< rows of traffic.csv
   double wall_seconds = 0.0;
 };
 
 /// world.yaml of a drive folder: what regenerates the world (and, with sensor.yaml, the scans).
 struct DriveWorldFile {
-  std::string net;           ///< absolute path of the SUMO net
-  std::uint64_t seed = 42;   ///< seed of the world and the sensor noise
+  std::string net;          ///< absolute path of the SUMO net
+  std::uint64_t seed = 42;  ///< seed of the world and the sensor noise
   WorldConfig world;
 };
 template <class V>

@@ -4,13 +4,16 @@
 namespace slamroute::simulate {
 
 struct DriveConfig {
-  double record_hz = 10.0;            ///< ground-truth pose rate [Hz] (a multiple of the 0.1 s step)
-  double step_length_s = 0.1;         ///< SUMO simulation step [s]
-  double traffic_per_km = 3.0;        ///< background vehicles kept per km of drivable road
-  double traffic_range_m = 0.0;       ///< record other vehicles within this of the sensor; 0 = LiDAR range [m]
-  double mapper_speed_factor = 1.0;   ///< mapper's speed relative to the speed limit
-  double time_to_teleport_s = 300.0;  ///< SUMO teleports a car stuck this long; for the mapper this is an error [s]
-  double min_avg_speed_mps = 1.0;     ///< the drive fails when the route takes longer than length / this + 300 s [m/s]
+  double record_hz = 10.0;      ///< ground-truth pose rate [Hz] (a multiple of the 0.1 s step)
+  double step_length_s = 0.1;   ///< SUMO simulation step [s]
+  double traffic_per_km = 3.0;  ///< background vehicles kept per km of drivable road
+  double traffic_range_m =
+      0.0;  ///< record other vehicles within this of the sensor; 0 = LiDAR range [m]
+  double mapper_speed_factor = 1.0;  ///< mapper's speed relative to the speed limit
+  double time_to_teleport_s =
+      300.0;  ///< SUMO teleports a car stuck this long; for the mapper this is an error [s]
+  double min_avg_speed_mps =
+      1.0;  ///< the drive fails when the route takes longer than length / this + 300 s [m/s]
 };
 
 template <class V>
@@ -18,10 +21,13 @@ void visitFields(V& v, DriveConfig& c) {
   v.field("record_hz", c.record_hz, "ground-truth pose rate [Hz]");
   v.field("step_length_s", c.step_length_s, "SUMO simulation step [s]");
   v.field("traffic_per_km", c.traffic_per_km, "background vehicles per km of drivable road");
-  v.field("traffic_range_m", c.traffic_range_m, "record vehicles within this of the sensor; 0 = LiDAR range [m]");
+  v.field("traffic_range_m", c.traffic_range_m,
+          "record vehicles within this of the sensor; 0 = LiDAR range [m]");
   v.field("mapper_speed_factor", c.mapper_speed_factor, "mapper speed relative to the limit");
-  v.field("time_to_teleport_s", c.time_to_teleport_s, "SUMO teleport time; a mapper teleport is an error [s]");
-  v.field("min_avg_speed_mps", c.min_avg_speed_mps, "give up when slower than this on average (+300 s) [m/s]");
+  v.field("time_to_teleport_s", c.time_to_teleport_s,
+          "SUMO teleport time; a mapper teleport is an error [s]");
+  v.field("min_avg_speed_mps", c.min_avg_speed_mps,
+          "give up when slower than this on average (+300 s) [m/s]");
 }
 
 }  // namespace slamroute::simulate

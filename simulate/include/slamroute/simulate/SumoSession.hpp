@@ -18,12 +18,12 @@ struct SumoNet;
 namespace slamroute::simulate {
 
 struct SumoSessionOptions {
-  std::filesystem::path net;           ///< .net.xml(.gz)
-  std::uint64_t seed = 42;             ///< SUMO's --seed (taken modulo 2^31)
-  double step_length_s = 0.1;          ///< simulation step [s]
-  double time_to_teleport_s = 300.0;   ///< SUMO's --time-to-teleport; <= 0 disables teleports
-  bool warnings = false;               ///< false passes --no-warnings
-  std::vector<std::string> extra_args; ///< appended to the SUMO command line
+  std::filesystem::path net;            ///< .net.xml(.gz)
+  std::uint64_t seed = 42;              ///< SUMO's --seed (taken modulo 2^31)
+  double step_length_s = 0.1;           ///< simulation step [s]
+  double time_to_teleport_s = 300.0;    ///< SUMO's --time-to-teleport; <= 0 disables teleports
+  bool warnings = false;                ///< false passes --no-warnings
+  std::vector<std::string> extra_args;  ///< appended to the SUMO command line
 };
 
 class SumoSession {

@@ -31,14 +31,14 @@ struct SurveyOptions {
 
 struct SurveyResult {
   std::filesystem::path out_dir;
-  std::size_t survey_vehicles = 0;      ///< vehicles on covering routes
+  std::size_t survey_vehicles = 0;  ///< vehicles on covering routes
   std::size_t background_vehicles = 0;
   std::size_t trace_rows = 0;
   std::size_t depth_frames = 0;
-  std::size_t drivable_edges = 0;       ///< passenger edges of the net
-  std::size_t visited_edges = 0;        ///< drivable edges some recorded vehicle drove on
-  double coverage_pct = 0.0;            ///< visited / drivable [%]
-  double planned_coverage_pct = 0.0;    ///< share the covering routes contain [%]
+  std::size_t drivable_edges = 0;     ///< passenger edges of the net
+  std::size_t visited_edges = 0;      ///< drivable edges some recorded vehicle drove on
+  double coverage_pct = 0.0;          ///< visited / drivable [%]
+  double planned_coverage_pct = 0.0;  ///< share the covering routes contain [%]
   double sim_seconds = 0.0;
   double wall_seconds = 0.0;
   std::uint64_t bytes_written = 0;

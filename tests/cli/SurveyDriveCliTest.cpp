@@ -1,0 +1,98 @@
+// `slamroute drive` / `slamroute survey` from the command line: a good drive, and bad input
+// (missing edge, forbidden turn, empty route, unknown net) giving a one-line error naming the
+// file, a non-zero exit and nothing written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "CliTestUtil.hpp"
+
+namespace slamroute {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kGrid = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/grid3x3.net.xml";
+
+fs::path writeRoute(const fs::path& dir, const std::string& name, const std::string& json) {
+  const fs::path p = dir / name;
+  std::ofstream(p) << json;
+  return p;
+}
+
+/// The command fails with one line naming `fragment`, and `dir` holds nothing but `keep`.
+void expectCleanFailure(const std::string& args, const std::string& fragment, const fs::path& dir,
+                        std::size_t keep) {
+  const auto r = test::runCli(args);
+  EXPECT_NE(r.code, 0) << args << "\n" << r.out;
+  EXPECT_EQ(test::countLines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("slamroute: error: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(fragment), std::string::npos) << r.out;
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+  EXPECT_EQ(n, keep) << "something was written for: " << args;
+}
+
+TEST(SurveyDriveCli, DriveWritesTheDriveFolder) {
+  const auto dir = test::cliTempDir("drive_ok");
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11","g11_g21"])");
+  const auto r = test::runCli("--seed 9 drive --net " + kGrid + " --route " + route.string() +
+                              " --out " + (dir / "out").string() + " --no-mesh --log-level warn");
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* f : {"groundtruth.tum", "pose_edges.csv", "sensor.yaml", "world.yaml",
+                        "traffic.csv", "drive.json"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  const auto j = nlohmann::json::parse(std::ifstream(dir / "out/drive.json"));
+  EXPECT_EQ(j["teleports"], 0);
+  EXPECT_EQ(j["seed"], 9);
+  EXPECT_EQ(j["route"], nlohmann::json({"g00_g01", "g01_g11", "g11_g21"}));
+}
+
+TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {
+  const auto dir = test::cliTempDir("drive_missing_edge");
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_gXX"])");
+  expectCleanFailure(
+      "drive --net " + kGrid + " --route " + route.string() + " --out " + (dir / "out").string(),
+      "route.json: edge 'g01_gXX'", dir, 1);
+}
+
+TEST(SurveyDriveCli, DriveRejectsATurnSumoDoesNotAllow) {
+  const auto dir = test::cliTempDir("drive_bad_turn");
+  const auto route = writeRoute(dir, "route.json", R"({"sumo_edges":["g00_g01","g10_g11"]})");
+  expectCleanFailure(
+      "drive --net " + kGrid + " --route " + route.string() + " --out " + (dir / "out").string(),
+      "'g00_g01' -> 'g10_g11'", dir, 1);
+}
+
+TEST(SurveyDriveCli, DriveRejectsAnEmptyRoute) {
+  const auto dir = test::cliTempDir("drive_empty");
+  const auto route = writeRoute(dir, "route.json", "[]");
+  expectCleanFailure(
+      "drive --net " + kGrid + " --route " + route.string() + " --out " + (dir / "out").string(),
+      "route.json", dir, 1);
+}
+
+TEST(SurveyDriveCli, DriveAndSurveyRejectAnUnknownNet) {
+  const auto dir = test::cliTempDir("unknown_net");
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01"])");
+  expectCleanFailure("drive --net " + (dir / "nowhere.net.xml").string() + " --route " +
+                         route.string() + " --out " + (dir / "out").string(),
+                     "nowhere.net.xml", dir, 1);
+  expectCleanFailure(
+      "survey --net " + (dir / "nowhere.net.xml").string() + " --out " + (dir / "out").string(),
+      "nowhere.net.xml", dir, 1);
+}
+
+TEST(SurveyDriveCli, DriveRefusesToOverwriteAForeignFolder) {
+  const auto dir = test::cliTempDir("drive_foreign");
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "precious.txt") << "keep me";
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01"])");
+  const auto r = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
+                              (dir / "out").string());
+  EXPECT_NE(r.code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "out" / "precious.txt"));
+}
+
+}  // namespace
+}  // namespace slamroute

@@ -1,0 +1,87 @@
+// `slamroute plan` end to end (skipped when the CLI is not built): files and one-line errors.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "RlTestUtil.hpp"
+
+namespace slamroute::rl {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CmdResult {
+  int code;
+  std::string output;
+};
+
+CmdResult runCli(const std::string& args) {
+  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "rl_cli";
+  fs::create_directories(dir);
+  const std::string log = (dir / "out.log").string();
+  const int rc = std::system((std::string(SLAMROUTE_BINARY) + " " + args + " > " + log + " 2>&1").c_str());
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, ss.str()};
+}
+
+class PlanCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!fs::exists(SLAMROUTE_BINARY)) GTEST_SKIP() << "slamroute CLI not built";
+    dir_ = fs::path(SLAMROUTE_TEST_TMP) / "rl_cli";
+    fs::create_directories(dir_);
+  }
+  fs::path dir_;
+};
+
+TEST_F(PlanCli, NetWritesRouteJsonAndRouXml) {
+  const auto net = test::bolognaNet();
+  if (!fs::exists(net)) GTEST_SKIP() << net << " missing";
+  const fs::path out = dir_ / "bologna_route.json";
+  fs::remove(out);
+  fs::remove(dir_ / "bologna_route.rou.xml");
+  const auto r = runCli("--log-level error plan --net " + net.string() +
+                        " --planner postman --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_TRUE(fs::exists(dir_ / "bologna_route.rou.xml"));
+  const Route route = Route::readJson(out);
+  EXPECT_EQ(route.planner, "postman");
+  EXPECT_DOUBLE_EQ(route.edge_coverage_pct, 100.0);
+}
+
+TEST_F(PlanCli, GraphJsonInput) {
+  const fs::path graph = dir_ / "grid.json", out = dir_ / "grid_route.json";
+  test::grid(3, 3).writeJson(graph);
+  const auto r = runCli("--log-level error --seed 5 plan --graph " + graph.string() +
+                        " --planner qlearning --reward accuracy --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const Route route = Route::readJson(out);
+  EXPECT_EQ(route.seed, 5u);
+  EXPECT_DOUBLE_EQ(route.node_coverage_pct, 100.0);
+}
+
+TEST_F(PlanCli, BadInputGivesOneLineErrors) {
+  const fs::path out = dir_ / "never.json";
+  fs::remove(out);
+  auto r = runCli("plan --graph " + (dir_ / "missing.json").string() + " --out " + out.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("slamroute: error:"), std::string::npos) << r.output;
+  const fs::path graph = dir_ / "grid2.json";
+  test::grid(2, 2).writeJson(graph);
+  r = runCli("plan --graph " + graph.string() + " --planner nope --out " + out.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("unknown planner 'nope'"), std::string::npos) << r.output;
+  r = runCli("plan --graph " + graph.string() + " --planner postman --start 77 --out " + out.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("start node 77"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace slamroute::rl

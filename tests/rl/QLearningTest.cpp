@@ -1,0 +1,92 @@
+// `qlearning` and `random`: full node coverage, legal turns, determinism, reward variants.
+#include <gtest/gtest.h>
+
+#include "RlTestUtil.hpp"
+
+namespace slamroute::rl {
+namespace {
+
+Config qCfg() {
+  Config c;
+  c.planner = "qlearning";
+  return c;
+}
+
+TEST(QLearning, CoversSmallGrids) {
+  for (int size : {2, 3, 5}) {
+    const Route r = plan(test::grid(size, size + 1), qCfg(), 3);
+    EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0) << size;
+    EXPECT_EQ(test::extra(r)["illegal_turns"].get<int>(), 0) << size;
+    EXPECT_EQ(r.nodes.front(), 0);
+  }
+}
+
+TEST(QLearning, CoversRestrictedOneWayCity) {
+  GridCitySpec s;
+  s.rows = 6;
+  s.cols = 7;
+  s.one_way_fraction = 0.3;
+  s.forbid_u_turns = true;
+  s.weight_min = 0.2;
+  s.seed = 11;
+  const Route r = plan(gridCity(s), qCfg(), 5);
+  EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
+  EXPECT_EQ(test::extra(r)["illegal_turns"].get<int>(), 0);
+}
+
+TEST(QLearning, SameSeedSameRoute) {
+  GridCitySpec s;
+  s.rows = 5;
+  s.cols = 5;
+  s.weight_min = 0.1;
+  s.seed = 3;
+  const RoadGraph g = gridCity(s);
+  const Route a = plan(g, qCfg(), 42), b = plan(g, qCfg(), 42);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.logdet_cov_along, b.logdet_cov_along);
+}
+
+TEST(QLearning, EdgeGoalCoversEveryStreet) {
+  Config c = qCfg();
+  c.goal = "edges";
+  const Route r = plan(test::grid(4, 4), c, 9);
+  EXPECT_NEAR(r.edge_coverage_pct, 100.0, 1e-9);
+}
+
+TEST(QLearning, AccuracyRewardPrefersGoodStreets) {
+  // Accuracy-only reward (paper Table 2) still finishes coverage (completion by shortest paths)
+  // and reports the variant.
+  Config c = qCfg();
+  c.reward = "accuracy";
+  GridCitySpec s;
+  s.rows = 4;
+  s.cols = 4;
+  s.weight_min = 0.0;
+  const Route r = plan(gridCity(s), c, 2);
+  EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
+  EXPECT_EQ(test::extra(r)["reward"], "accuracy");
+}
+
+void coversNet(const std::filesystem::path& net) {
+  if (!std::filesystem::exists(net)) GTEST_SKIP() << net << " missing";
+  const Route r = plan(test::netGraph(net), qCfg(), 42, net.string());
+  EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
+  EXPECT_EQ(test::extra(r)["illegal_turns"].get<int>(), 0);
+  EXPECT_FALSE(r.sumo_edges.empty());
+}
+
+TEST(QLearning, CoversBologna) { coversNet(test::bolognaNet()); }
+TEST(QLearning, CoversIngolstadt) { coversNet(test::ingolstadtNet()); }
+TEST(QLearning, CoversDefaultCity) { coversNet(test::defaultCityNet()); }
+
+TEST(Random, CoversAndIsDeterministic) {
+  Config c;
+  c.planner = "random";
+  const RoadGraph g = test::grid(4, 4);
+  const Route a = plan(g, c, 8), b = plan(g, c, 8);
+  EXPECT_DOUBLE_EQ(a.node_coverage_pct, 100.0);
+  EXPECT_EQ(a.edges, b.edges);
+}
+
+}  // namespace
+}  // namespace slamroute::rl
