@@ -18,8 +18,8 @@
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
-#include "slamroute/core/SyntheticCity.hpp"
 #include "slamroute/rl/Planners.hpp"
+#include "slamroute/rl/SyntheticGraph.hpp"
 
 namespace slamroute::cli {
 namespace fs = std::filesystem;
@@ -60,21 +60,29 @@ std::string table3(const std::vector<int>& sizes, std::uint64_t seed, const rl::
   md << "| planner | nodes | edges | planning time [s] | route length [km] | node coverage [%] | note |\n"
      << "|---|---|---|---|---|---|---|\n";
   for (int n : sizes) {
-    SyntheticCityConfig sc;
-    sc.nodes = n;
-    const RoadGraph g = syntheticCity(sc, seed);
+    // Near-square grid city: 100 m blocks, 15 m jitter, 20 % one-way streets, no U-turns, edge
+    // weights in [0.2, 1] (the same shape bench/bench_planning.cpp measures).
+    rl::GridCitySpec spec;
+    spec.rows = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
+    spec.cols = (n + spec.rows - 1) / spec.rows;
+    spec.jitter_m = 15.0;
+    spec.one_way_fraction = 0.2;
+    spec.forbid_u_turns = true;
+    spec.weight_min = 0.2;
+    spec.seed = seed;
+    const RoadGraph g = rl::gridCity(spec);
     for (const char* p : {"qlearning", "tsp", "postman"}) {
       rl::Config cfg = base;
       cfg.planner = p;
       logInfo("  table 3: " + std::string(p) + " on " + std::to_string(n) + " nodes");
       try {
         const Route r = rl::plan(g, cfg, seed, "synthetic city " + std::to_string(n));
-        md << "| " << p << " | " << n << " | " << g.edges.size() << " | " << std::fixed << std::setprecision(3)
+        md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | " << std::fixed << std::setprecision(3)
            << r.planning_seconds << " | " << std::setprecision(2) << r.length_m / 1000.0 << " | "
            << std::setprecision(1) << r.node_coverage_pct << " | "
            << (r.heuristic ? "heuristic" : "exact/optimal") << " |\n";
       } catch (const std::exception& e) {
-        md << "| " << p << " | " << n << " | " << g.edges.size() << " | – | – | – | " << e.what() << " |\n";
+        md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | – | – | – | " << e.what() << " |\n";
       }
     }
   }
@@ -97,7 +105,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
   sub->add_option("--out", o->out, "output folder")->capture_default_str();
   sub->add_option("--seeds", o->seeds, "seeds per comparison (1..N)")->capture_default_str()->check(CLI::Range(1, 100));
   sub->add_option("--jobs", o->jobs, "steps run at once")->capture_default_str()->check(CLI::Range(1, 64));
-  sub->add_option("--sizes", o->sizes, "graph sizes for Table 3")->capture_default_str();
+  sub->add_option("--sizes", o->sizes, "graph sizes for Table 3 (comma-separated)")->delimiter(',')->capture_default_str();
   sub->add_flag("--table3-only", o->table3_only, "only the planning-time table (no SUMO, no SLAM)");
   sub->callback([&ctx, o] {
     ctx.load();
