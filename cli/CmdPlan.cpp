@@ -30,6 +30,7 @@ void registerPlan(CLI::App& app, Context& ctx) {
   struct Opts {
     std::string graph, net, planner, out, start_junction, reward, goal;
     int start = -1;
+    double max_length_m = -1.0;
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("plan", "Plan a mapping route on a graph or net (paper 3.2)");
@@ -43,6 +44,9 @@ void registerPlan(CLI::App& app, Context& ctx) {
       ->excludes(s_opt);
   sub->add_option("--reward", o->reward, "qlearning reward: full | accuracy (default: rl.reward)");
   sub->add_option("--goal", o->goal, "coverage goal: nodes | edges (default: rl.goal)");
+  sub->add_option("--max-length", o->max_length_m,
+                  "random: stop at this driven length [m] (default: rl.random.budget_m)")
+      ->check(CLI::NonNegativeNumber);
   sub->callback([&ctx, o] {
     ctx.load();
     if (o->graph.empty() && o->net.empty())
@@ -51,6 +55,7 @@ void registerPlan(CLI::App& app, Context& ctx) {
     if (!o->planner.empty()) cfg.planner = o->planner;
     if (!o->reward.empty()) cfg.reward = o->reward;
     if (!o->goal.empty()) cfg.goal = o->goal;
+    if (o->max_length_m >= 0.0) cfg.random.budget_m = o->max_length_m;
     RoadGraph g;
     std::string where;
     if (!o->net.empty()) {

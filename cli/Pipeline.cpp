@@ -21,6 +21,8 @@ Step childStep(const Context& ctx, const std::string& label, std::vector<std::st
   return {label, full, log};
 }
 
+double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }
+
 void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {
   Route r = Route::readJson(route_json);
   if (r.sumo_edges.empty())

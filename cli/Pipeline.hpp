@@ -19,6 +19,9 @@ namespace slamroute::cli {
 Step childStep(const Context& ctx, const std::string& label, std::vector<std::string> args,
                const std::filesystem::path& log, long long seed = -1);
 
+/// Length of a planned route [m] (route.json's length_m).
+double routeLength(const std::filesystem::path& route_json);
+
 /// Routes planned on a trace-built graph know its turns only loosely: joins consecutive SUMO
 /// edges with the shortest legal detour where SUMO forbids the turn (noted in the route), and
 /// writes ROUTE.rou.xml beside it. Throws when the route has no SUMO edges.

@@ -53,10 +53,7 @@ TEST(LoopClosure, FiresOnALoopAndLowersAte) {
               closed.loops.size(),
               static_cast<std::size_t>(std::count_if(open.status.begin(), open.status.end(),
                                                      [](FrameStatus s) { return s != FrameStatus::Ok; })));
-  {
-    const Trajectory gt0 = src.groundTruth();
-    std::printf("ATE open %.4f m\n", compareTrajectories(open.trajectory, gt0, {}).ate.rmse_m);
-  }
+
   ASSERT_GE(closed.loops.size(), 1u);
   EXPECT_LT(closed.loops[0].fitness_m2, cfg.loop_fitness_m2);
   const Trajectory gt = src.groundTruth();

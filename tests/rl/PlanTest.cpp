@@ -1,6 +1,8 @@
 // plan(): bad input and graph preparation (largest legally drivable part).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "RlTestUtil.hpp"
 
 namespace slamroute::rl {
@@ -95,6 +97,23 @@ TEST(Plan, RouteJsonRoundTrip) {
   EXPECT_EQ(back.seed, 7u);
   EXPECT_EQ(back.edges, r.edges);
   EXPECT_NEAR(back.length_m, r.length_m, 1e-6);
+}
+
+TEST(Plan, RandomWalkStopsAtItsLengthBudget) {
+  Config c;
+  c.planner = "random";
+  const RoadGraph g = test::grid(4, 4);  // 100 m blocks
+  const Route free_walk = plan(g, c, 3);
+  EXPECT_DOUBLE_EQ(free_walk.node_coverage_pct, 100.0);
+  c.random.budget_m = 450.0;
+  const Route budgeted = plan(g, c, 3);
+  // Stops on the first edge that reaches the budget: at least 450 m, less than one block more.
+  EXPECT_GE(budgeted.length_m, 450.0);
+  EXPECT_LT(budgeted.length_m, 450.0 + 100.0 + 1e-6);
+  EXPECT_LT(budgeted.node_coverage_pct, 100.0);
+  // Same seed, same prefix: the budgeted walk is the start of the free walk.
+  ASSERT_LE(budgeted.edges.size(), free_walk.edges.size());
+  EXPECT_TRUE(std::equal(budgeted.edges.begin(), budgeted.edges.end(), free_walk.edges.begin()));
 }
 
 }  // namespace

@@ -59,8 +59,8 @@ struct Config {
   double degeneracy_min_eig = 0.02;  ///< min normalised eigenvalue of the translation block
   bool degeneracy_remap = false;     ///< freeze degenerate directions in scan-to-map (LOAM);
                                      ///< off: on the noisy default-city drive it made drift worse
-  double max_step_change_m = 1.0;    ///< odometry/mapping may change the prediction by at most [m]
-  double max_step_change_deg = 5.0;  ///< ... and [deg] per scan; larger: rejected as a failure
+  double max_step_change_m = 2.0;    ///< odometry/mapping may change the prediction by at most [m]
+  double max_step_change_deg = 10.0; ///< ... and [deg] per scan; larger: rejected as a failure
   // --- loop closure + pose graph ---
   bool loop_closure = true;          ///< enable ICP loop closure
   double loop_radius_m = 7.0;        ///< search radius around the new keyframe [m]

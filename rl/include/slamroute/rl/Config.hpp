@@ -81,12 +81,16 @@ void visitFields(V& v, QLearningConfig& c) {
 
 struct RandomConfig {
   double max_steps_per_edge = 1000.0;  ///< random walk step cap = this * edge count, then shortest paths
+  double budget_m = 0.0;  ///< stop the walk at this driven length, goal met or not (0: no budget) [m]
 };
 
 template <class V>
 void visitFields(V& v, RandomConfig& c) {
   v.field("max_steps_per_edge", c.max_steps_per_edge,
           "random walk step cap = this * edge count (then finished by shortest paths)");
+  v.field("budget_m", c.budget_m,
+          "stop at this driven length even if the goal is not met; 0 = no budget [m] (Table 1 "
+          "compares routes of equal length)");
 }
 
 struct TspConfig {
