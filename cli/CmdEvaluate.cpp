@@ -16,6 +16,7 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
   struct Opts {
     std::string drive, out;
     double segment_m = -1.0;
+    int scan_stride = 0;
     bool no_loop_closure = false;
   };
   auto o = std::make_shared<Opts>();
@@ -24,12 +25,15 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
   sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")->required();
   sub->add_option("--segment", o->segment_m, "extra RPE segment length [m] (default: config)");
   sub->add_flag("--no-loop-closure", o->no_loop_closure, "disable loop closure");
+  sub->add_option("--scan-stride", o->scan_stride, "use every n-th scan (default: evaluate.scan_stride)")
+      ->check(CLI::PositiveNumber);
   sub->callback([&ctx, o] {
     ctx.load();
     namespace fs = std::filesystem;
     evaluate::Config cfg = ctx.cfg.evaluate;
     if (o->segment_m > 0) cfg.rpe_segment_m = o->segment_m;
     if (o->no_loop_closure) cfg.loop_closure = false;
+    if (o->scan_stride > 0) cfg.scan_stride = o->scan_stride;
     const fs::path drive(o->drive);
     if (!fs::is_directory(drive)) throw std::invalid_argument(o->drive + ": not a drive folder");
     if (!fs::exists(drive / drive_files::kGroundTruth))

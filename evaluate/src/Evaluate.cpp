@@ -13,6 +13,7 @@
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
 #include "slamroute/evaluate/Output.hpp"
+#include "slamroute/evaluate/StridedScanSource.hpp"
 
 namespace slamroute::evaluate {
 namespace fs = std::filesystem;
@@ -158,8 +159,9 @@ nlohmann::json reliabilityJson(const SlamResult& r) {
   return j;
 }
 
-nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& source, const fs::path& out,
+nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans, const fs::path& out,
                              const Config& cfg) {
+  const StridedScanSource source(all_scans, cfg.scan_stride);
   const Trajectory gt = readTum(drive / drive_files::kGroundTruth);
   if (gt.empty()) throw std::runtime_error((drive / drive_files::kGroundTruth).string() + ": empty");
   if (source.size() == 0) throw std::runtime_error(drive.string() + ": the drive has no scans");
@@ -179,6 +181,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& source, co
   nlohmann::json j = trajectoryJson(m);
   j["initial_pose"] = "first ground-truth pose (estimate is in the world frame)";
   j["scans"] = slam.trajectory.size();
+  j["scan_stride"] = cfg.scan_stride;
   j["keyframes"] = slam.keyframes;
   j["loop_closures"] = slam.loops.size();
   j["loop_candidates"] = slam.loop_candidates;
