@@ -80,7 +80,7 @@ std::string table3(const std::vector<int>& sizes, std::uint64_t seed, const rl::
         md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | " << std::fixed << std::setprecision(3)
            << r.planning_seconds << " | " << std::setprecision(2) << r.length_m / 1000.0 << " | "
            << std::setprecision(1) << r.node_coverage_pct << " | "
-           << (r.heuristic ? "heuristic" : "exact/optimal") << " |\n";
+           << (r.heuristic ? "heuristic" : "exact") << " |\n";
       } catch (const std::exception& e) {
         md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | – | – | – | " << e.what() << " |\n";
       }
@@ -114,8 +114,8 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     fs::create_directories(out / "logs");
     std::ostringstream md;
     md << "# The paper's tables, reproduced\n\nCommand: `slamroute --seed " << ctx.cfg.seed
-       << " experiment paper --out " << o->out << " --seeds " << o->seeds
-       << (o->table3_only ? " --table3-only" : "") << "`\n\n";
+       << " experiment paper --out " << o->out
+       << (o->table3_only ? std::string(" --table3-only") : " --seeds " + std::to_string(o->seeds)) << "`\n\n";
 
     if (!o->table3_only) {
       const std::string net_path = fs::absolute(o->net.empty() ? defaultNetPath() : o->net).string();

@@ -150,10 +150,20 @@ void writeReport(const ReportInputs& in) {
     md << "Survey: " << survey.dump() << "\n\n";
   md << "Extracted graph: " << graph.nodes.size() << " nodes, " << graph.edges.size()
      << " directed edges, " << fmt(graph.totalLength() / 1000.0, 2) << " km.\n\n";
-  if (!gmeta.empty()) {
-    md << "| validation against the SUMO net | value |\n|---|---|\n";
-    for (const auto& [k, v] : gmeta.items())
-      if (v.is_number() || v.is_string() || v.is_boolean()) md << "| " << k << " | " << v.dump() << " |\n";
+  // Scalar figures of the graph's metadata sections (validation against the net, extraction
+  // statistics, depth weights), one table each.
+  for (const char* section : {"validation", "stats", "weights"}) {
+    if (!gmeta.contains(section) || !gmeta[section].is_object()) continue;
+    md << "| " << section << " | value |\n|---|---|\n";
+    for (const auto& [k, v] : gmeta[section].items()) {
+      if (v.is_number_float()) {
+        md << "| " << k << " | " << fmt(v.get<double>(), 3) << " |\n";
+      } else if (v.is_number() || v.is_boolean() || v.is_string()) {
+        md << "| " << k << " | " << v.dump() << " |\n";
+      } else if (v.is_array()) {
+        md << "| " << k << " | " << v.size() << " listed in graph.json |\n";
+      }
+    }
     md << "\n";
   }
   graph.renderPng(rep / "graph_weights.png", "edge weight (depth-normal spread score)");
@@ -169,8 +179,8 @@ void writeReport(const ReportInputs& in) {
     const json r = readJsonOr(in.out / "routes" / (p + ".json"));
     const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
     std::string map_err = "–";
-    if (m.contains("map_error_mean_m"))
-      map_err = num(m, "map_error_mean_m", 3) + " / " + num(m, "map_error_p95_m", 3);
+    if (m.contains("map_mean_dist_m"))
+      map_err = num(m, "map_mean_dist_m", 3) + " / " + num(m, "map_p95_dist_m", 3);
     md << "| " << p << " | " << num(r, "length_m", 2, 1e-3) << " | " << num(r, "edge_coverage_pct", 1)
        << " | " << num(r, "node_coverage_pct", 1) << " | " << num(r, "loop_closures", 0) << " | "
        << num(r, "final_logdet_cov", 2) << " | " << num(r, "planning_seconds", 3) << " | "

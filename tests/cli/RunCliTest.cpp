@@ -1,0 +1,52 @@
+// End to end: `slamroute run` on the plus-shaped test net (survey -> graph -> plan x3 -> drive
+// x3 -> LiDAR SLAM x3 -> report). Every 5th scan keeps it to ~20 s.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "CliTestUtil.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute {
+namespace {
+
+TEST(RunCli, WholePipelineOnThePlusNet) {
+  const auto dir = test::cliTempDir("run_plus");
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\n";
+  const auto r = test::runCli("--config " + (dir / "fast.yaml").string() + " run --net " +
+                              std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
+                              (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto out = dir / "out";
+  for (const std::string p : {"qlearning", "random", "postman"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / "routes" / (p + ".rou.xml"))) << p;
+    EXPECT_TRUE(std::filesystem::exists(out / "drives" / p / "groundtruth.tum")) << p;
+    EXPECT_TRUE(std::filesystem::exists(out / "eval" / p / "estimate.tum")) << p;
+    const auto m = nlohmann::json::parse(readFile(out / "eval" / p / "metrics.json"));
+    for (const char* k : {"ate_rmse_m", "ate_mean_m", "ate_max_m", "rpe_trans_pct", "coverage_edge_pct",
+                          "route_length_m", "loop_closures"})
+      EXPECT_TRUE(m.contains(k)) << p << " lacks " << k;
+    const auto route = nlohmann::json::parse(readFile(out / "routes" / (p + ".json")));
+    EXPECT_GT(route["length_m"].get<double>(), 100.0) << p;
+  }
+  // The random walk is given the Q-learning route's length as its budget.
+  const auto q = nlohmann::json::parse(readFile(out / "routes" / "qlearning.json"));
+  const auto rnd = nlohmann::json::parse(readFile(out / "routes" / "random.json"));
+  EXPECT_LT(rnd["length_m"].get<double>(), q["length_m"].get<double>() + 200.0);
+  const std::string report = readFile(out / "report.md");
+  for (const char* s : {"| qlearning |", "| random |", "| postman |", "Spearman", "report/graph_weights.png",
+                        "node_recall"})
+    EXPECT_NE(report.find(s), std::string::npos) << s;
+  EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
+}
+
+TEST(RunCli, BadNetIsAOneLineErrorAndWritesNothing) {
+  const auto dir = test::cliTempDir("run_bad");
+  const auto r = test::runCli("run --net " + (dir / "missing.net.xml").string() + " --out " + (dir / "out").string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_EQ(test::countLines(r.out), 1) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace slamroute
