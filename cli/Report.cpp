@@ -16,6 +16,9 @@
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/simulate/Drive.hpp"
+#include "slamroute/simulate/World.hpp"
 
 namespace slamroute::cli {
 namespace fs = std::filesystem;
@@ -165,6 +168,18 @@ void writeReport(const ReportInputs& in) {
       }
     }
     md << "\n";
+  }
+  // The simulated 3D city the drives saw (rebuilt from the first drive's world.yaml: same net,
+  // world config and seed for every drive of the run).
+  for (const auto& p : in.planners) {
+    const fs::path drive = in.out / "drives" / p;
+    if (!fs::exists(drive / "world.yaml")) continue;
+    const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
+    simulate::World::build(SumoNet::read(wf.net), wf.world, wf.seed).renderTopDownPng(rep / "world.png", 0.5);
+    md << "The simulated city (top view, coloured by height): buildings, walls, poles and trees "
+          "along the streets; feature-poor (open, long uniform walls) and feature-rich streets.\n\n"
+       << "![simulated world](report/world.png)\n\n";
+    break;
   }
   graph.renderPng(rep / "graph_weights.png", "edge weight (depth-normal spread score)");
   md << "![graph with edge weights](report/graph_weights.png)\n\n";

@@ -129,13 +129,30 @@ void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& 
     const cv::Vec3b c = colours.at<cv::Vec3b>(0, k);
     return cv::Scalar(c[0], c[1], c[2]);
   };
-  for (std::size_t i = 0; i < edges.size(); ++i) {
+  // Both directions of a street share a centreline: draw each directed edge shifted a few
+  // pixels to the right of its travel direction, and the edges without a value (grey) first so
+  // they never hide coloured ones.
+  std::vector<std::size_t> order(edges.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return !std::isfinite(val[a]) && std::isfinite(val[b]);
+  });
+  const double shift_px = 2.5;
+  for (std::size_t i : order) {
     const auto& e = edges[i];
+    std::vector<Point3> world = e.polyline;
+    if (world.size() < 2) world = {nodes[static_cast<std::size_t>(e.u)].pos, nodes[static_cast<std::size_t>(e.v)].pos};
     std::vector<cv::Point> pts;
-    if (e.polyline.size() >= 2) {
-      for (const auto& p : e.polyline) pts.push_back(px(p));
-    } else {
-      pts = {px(nodes[static_cast<std::size_t>(e.u)].pos), px(nodes[static_cast<std::size_t>(e.v)].pos)};
+    for (std::size_t k = 0; k < world.size(); ++k) {
+      const Point3 a = world[k == 0 ? 0 : k - 1], b = world[k == 0 ? 1 : k];
+      Eigen::Vector2d d(b.x() - a.x(), b.y() - a.y());
+      const double n = d.norm();
+      // Right of travel in the image (y points down): (dy, -dx) in world -> (dy, dx) in pixels.
+      Eigen::Vector2d right = Eigen::Vector2d::Zero();
+      if (n > 1e-9) right = Eigen::Vector2d(d.y(), -d.x()) / n;
+      const cv::Point p0 = px(world[k]);
+      pts.emplace_back(p0.x + static_cast<int>(std::lround(right.x() * shift_px)),
+                       p0.y - static_cast<int>(std::lround(right.y() * shift_px)));
     }
     cv::polylines(img, pts, false, colour(val[i]), 3, cv::LINE_AA);
   }
