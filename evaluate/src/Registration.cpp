@@ -116,7 +116,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
     Normal ne;
     const Mat3 R = T.rotation();
     const Vec3 t = T.translation();
-    int edges = 0, planes = 0;
+    int edges = 0, planes = 0, inliers = 0;
     if (target.edges.size() >= kK) {
       for (const auto& pf : src_edges) {
         const Vec3 p = pf.cast<double>();
@@ -134,6 +134,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
         ne.add(R, p, u, u.dot(perp), opt.huber_m);
         ne.add(R, p, v, v.dot(perp), opt.huber_m);
         ++edges;
+        if (perp.norm() < opt.inlier_m) ++inliers;
       }
     }
     if (target.planes.size() >= kK) {
@@ -148,12 +149,15 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
           planar = planar &&
                    std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < opt.plane_max_dev_m;
         if (!planar) continue;
-        ne.add(R, p, n, n.dot(q - s.mean), opt.huber_m);  // point-to-plane (LOAM eq. 3)
+        const double r = n.dot(q - s.mean);
+        ne.add(R, p, n, r, opt.huber_m);  // point-to-plane (LOAM eq. 3)
         ++planes;
+        if (std::abs(r) < opt.inlier_m) ++inliers;
       }
     }
     res.edge_matches = edges;
     res.plane_matches = planes;
+    res.inliers = inliers;
     res.iterations = it + 1;
     last = ne;
     if (ne.rows < 6) break;

@@ -27,6 +27,7 @@ struct AlignOptions {
   double plane_max_dev_m = 0.2;  ///< all neighbours within this of their fitted plane [m]
   unsigned dof_mask = kAllDof;
   double degenerate_eig = 0.0;   ///< > 0: freeze directions with lambda/rows below this
+  double inlier_m = 0.1;         ///< residuals below this count as inliers (hypothesis score) [m]
 };
 
 struct AlignResult {
@@ -34,6 +35,7 @@ struct AlignResult {
   int iterations = 0;
   int edge_matches = 0;
   int plane_matches = 0;
+  int inliers = 0;  ///< correspondences of the last iteration with a residual below inlier_m
   double min_eig_translation = 0;  ///< smallest eigenvalue of the normalised translation block
   bool converged = false;
 };
