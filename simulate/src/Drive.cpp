@@ -43,6 +43,38 @@ Pose3 sensorPose(double x, double y, double z, double sumo_angle_deg, double slo
   return T;
 }
 
+/// SUMO's vehicle angle is the lane direction at the vehicle's position; entering an internal
+/// junction lane (a U-turn at a dead end, a sharp turn) makes it jump by up to ~100 degrees
+/// within one 0.1 s step, which no real car does and which would make the simulated scans jump
+/// with it. The recorded heading is therefore the direction of motion of the reference point,
+/// from the positions 0.5 s before and after (central difference), keeping SUMO's pitch; where
+/// the vehicle moved less than 0.2 m in that window (standing at a light) the previous heading is
+/// kept.
+void headingsFromMotion(Trajectory& traj) {
+  const std::size_t n = traj.size(), k = 5;
+  if (n < 3) return;
+  std::vector<double> yaw(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 x_axis = traj[i].T_world_body.linear().col(0);
+    yaw[i] = std::atan2(x_axis.y(), x_axis.x());
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t a = i >= k ? i - k : 0, b = std::min(n - 1, i + k);
+    const Vec3 d = traj[b].T_world_body.translation() - traj[a].T_world_body.translation();
+    if (std::hypot(d.x(), d.y()) >= 0.2) {
+      yaw[i] = std::atan2(d.y(), d.x());
+    } else if (i > 0) {
+      yaw[i] = yaw[i - 1];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 x_axis = traj[i].T_world_body.linear().col(0);
+    const double pitch = std::asin(std::clamp(x_axis.z(), -1.0, 1.0));
+    traj[i].T_world_body.linear() =
+        (Eigen::AngleAxisd(yaw[i], Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY())).toRotationMatrix();
+  }
+}
+
 struct TypeDims {
   double length, width, height;
 };
@@ -190,6 +222,7 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
                              edges[static_cast<std::size_t>(last_route_index)] + "')");
   if (rec.groundtruth.size() < 2)
     throw std::runtime_error(where + ": the route is too short to record a trajectory");
+  headingsFromMotion(rec.groundtruth);
   rec.route_length_m = route_len;
   rec.background_vehicles = traffic.spawned();
   sim.close();

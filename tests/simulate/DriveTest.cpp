@@ -92,6 +92,12 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   const Polyline& s0 = net.findEdge(edges[0])->lanes[0].shape;
   const Vec3 dir0 = (s0.back() - s0.front()).normalized();
   EXPECT_GT(gt[5].T_world_body.linear().col(0).dot(dir0), 0.999);
+  // The route turns at four junctions: the heading turns smoothly (a car does not rotate by tens
+  // of degrees in 0.1 s, as SUMO's lane angle does when it enters an internal lane).
+  for (std::size_t i = 1; i < gt.size(); ++i) {
+    const Vec3 a = gt[i - 1].T_world_body.linear().col(0), b = gt[i].T_world_body.linear().col(0);
+    EXPECT_GT(a.dot(b), std::cos(25.0 * M_PI / 180.0)) << "pose " << i;
+  }
 
   const auto j = nlohmann::json::parse(std::ifstream(dir / drive_files::kDriveInfo));
   EXPECT_EQ(j["teleports"].get<int>(), 0);
