@@ -124,6 +124,7 @@ nlohmann::json trajectoryJson(const TrajectoryMetrics& m) {
   j["rpe_segment_rot_deg_per_m"] = nanToNull(m.rpe_segment.rot_deg_per_m);
   j["rpe_segment_count"] = m.rpe_segment.segments;
   j["route_length_m"] = m.route_length_m;
+  j["evaluated_length_m"] = m.distance_m.empty() ? 0.0 : m.distance_m.back();
   const Eigen::Quaterniond q(m.T_gt_est.rotation());
   const Vec3 t = m.T_gt_est.translation();
   j["alignment_T_gt_est"] = {{"t", {t.x(), t.y(), t.z()}}, {"q_xyzw", {q.x(), q.y(), q.z(), q.w()}}};
@@ -161,25 +162,35 @@ nlohmann::json reliabilityJson(const SlamResult& r) {
 
 nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans, const fs::path& out,
                              const Config& cfg) {
-  const StridedScanSource source(all_scans, cfg.scan_stride);
+  // The window here; the stride (with denser sampling in turns) inside runSlam.
+  const StridedScanSource source(all_scans, 1, cfg.start_s, cfg.end_s);
   const Trajectory gt = readTum(drive / drive_files::kGroundTruth);
   if (gt.empty()) throw std::runtime_error((drive / drive_files::kGroundTruth).string() + ": empty");
-  if (source.size() == 0) throw std::runtime_error(drive.string() + ": the drive has no scans");
+  if (source.size() == 0)
+    throw std::runtime_error(drive.string() + (all_scans.size() == 0 ? ": the drive has no scans"
+                                                                     : ": no scans in the time window"));
   fs::create_directories(out);
   // Initial pose = the ground-truth pose at the first scan (documented in metrics.json).
-  const Trajectory first = {StampedPose{source.time(0), Pose3::Identity()}};
-  const auto p0 = associate(first, gt, 0.5 * std::max(cfg.assoc_max_dt_s, 0.1));
+  // Initial motion = the ground-truth motion between the first two scans (SUMO vehicles depart
+  // at speed; a real crew would take it from wheel odometry).
+  const double tol = 0.5 * std::max(cfg.assoc_max_dt_s, 0.1);
+  Trajectory first = {StampedPose{source.time(0), Pose3::Identity()}};
+  if (source.size() > 1) first.push_back(StampedPose{source.time(1), Pose3::Identity()});
+  const auto p0 = associate(first, gt, tol);
   const Pose3 T0 = p0.empty() ? gt.front().T_world_body : p0.front().gt;
+  std::optional<Pose3> V0;
+  if (p0.size() == 2) V0 = p0[0].gt.inverse() * p0[1].gt;
 
   Progress progress("evaluate: SLAM", source.size());
-  SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); });
+  SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0);
   progress.finish();
   writeTum(out / "estimate.tum", slam.trajectory);
   writePcd(out / "map.pcd", slam.map);
 
   const TrajectoryMetrics m = compareTrajectories(slam.trajectory, gt, metricsOptions(cfg));
   nlohmann::json j = trajectoryJson(m);
-  j["initial_pose"] = "first ground-truth pose (estimate is in the world frame)";
+  j["initial_pose"] =
+      "ground-truth pose of the first scan and motion to the second (estimate is in the world frame)";
   j["scans"] = slam.trajectory.size();
   j["scan_stride"] = cfg.scan_stride;
   j["keyframes"] = slam.keyframes;

@@ -47,13 +47,32 @@ Cloud capped(Cloud c, int max_n) {
 
 double rotationAngle(const Pose3& T) { return Eigen::AngleAxisd(T.rotation()).angle(); }
 
-/// A registration that moves the pose far from its initial guess within one scan (0.1 s) is a
-/// failure (wrong correspondences), not motion.
-/// `scale`: frame interval over 0.1 s (a scan stride of 2 allows twice the change).
-bool plausible(const Pose3& init, const Pose3& result, const Config& cfg, double scale) {
-  const Pose3 d = init.inverse() * result;
-  return d.translation().norm() <= scale * cfg.max_step_change_m &&
-         rotationAngle(d) <= scale * cfg.max_step_change_deg * std::numbers::pi / 180.0;
+/// The motion `m` scaled to the share `f` of itself (rotation angle and translation scaled alike;
+/// exact for a constant turn rate and speed up to the small-angle chord error).
+Pose3 scaledMotion(const Pose3& m, double f) {
+  const Eigen::AngleAxisd aa(m.rotation());
+  Pose3 out = Pose3::Identity();
+  out.linear() = Eigen::AngleAxisd(aa.angle() * f, aa.axis()).toRotationMatrix();
+  out.translation() = m.translation() * f;
+  return out;
+}
+
+/// Highest turn rate a car can drive at `speed` [rad/s]: lateral acceleration over speed, capped by
+/// cfg.max_step_change_deg per 0.1 s.
+double maxTurnRate(const Config& cfg, double speed_mps) {
+  const double cap = cfg.max_step_change_deg * std::numbers::pi / 180.0 / 0.1;
+  if (cfg.max_lateral_accel_mps2 <= 0) return cap;
+  return std::min(cap, cfg.max_lateral_accel_mps2 / std::max(speed_mps, 0.5));
+}
+
+/// A registration that moves the pose far from the constant-velocity prediction within one frame
+/// interval `dt` is a failure (wrong correspondences, e.g. a passing car filling half the view),
+/// not motion: a car's heading can change at most by its highest turn rate at the current speed.
+bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps) {
+  const Pose3 d = pred.inverse() * result;
+  const double scale = std::max(1.0, dt / 0.1);
+  const double max_rot = maxTurnRate(cfg, speed_mps) * dt + cfg.rotation_slack_deg * std::numbers::pi / 180.0;
+  return d.translation().norm() <= scale * cfg.max_step_change_m && rotationAngle(d) <= max_rot;
 }
 
 struct Keyframe {
@@ -103,12 +122,21 @@ struct LidarSlam::Impl {
   Pose3 T_world_last = Pose3::Identity();  ///< last frame (good or predicted)
   Pose3 T_world_good = Pose3::Identity();  ///< last well-registered frame
   int good_frame = -1;
-  Pose3 velocity = Pose3::Identity();      ///< motion per frame, body frame
+  Pose3 velocity = Pose3::Identity();      ///< motion over velocity_dt, body frame
+  double velocity_dt = 0.1;                ///< [s]
   bool have_velocity = false;              ///< velocity measured (not the initial guess)
-  int last_inliers = 0;                    ///< scan-to-map inliers of the previous scan (0: none)
+  bool last_failed = false;                ///< the previous scan failed
+  double dense_until_t = -1e18;            ///< take every scan until then (after a failure) [s]
+  bool check_motion = true;                ///< apply the dynamics check (off after a relocalisation,
+                                           ///< whose jump makes the next prediction unreliable)
+  double inlier_ref = 0;                   ///< recent scan-to-map inlier level (0: none)
   StageTimes times;
 
-  Pose3 predict() const { return T_world_last * velocity; }
+  /// Constant-velocity prediction of the pose at time t (frames may be unevenly spaced).
+  Pose3 predict(double t) const {
+    if (frames.empty()) return T_world_last;
+    return T_world_last * scaledMotion(velocity, (t - frames.back().t) / velocity_dt);
+  }
 
   void record(double t, const Pose3& T_world, FrameStatus s, double min_eig) {
     FrameRecord r;
@@ -123,7 +151,7 @@ struct LidarSlam::Impl {
   }
 
   FrameStatus addUnusable(double t, FrameStatus s) {
-    const Pose3 T = frames.empty() ? T_world_first : predict();
+    const Pose3 T = frames.empty() ? T_world_first : predict(t);
     record(t, T, s, 0.0);
     return s;
   }
@@ -244,7 +272,7 @@ struct LidarSlam::Impl {
   /// iterations; the one with the most inliers wins if it is not the prediction itself and has
   /// clearly more inliers than the prediction, and is then refined.
   bool relocalize(const Pose3& pred, const Cloud& src_edges, const Cloud& src_planes,
-                  const AlignOptions& mo, Pose3& out) {
+                  const AlignOptions& mo, int failed_inliers, Pose3& out, int& inliers) {
     const int cap = std::max(50, cfg.relocalize_max_points);
     const Cloud ce = capped(src_edges, cap / 4), cp = capped(src_planes, cap);
     AlignOptions co = mo;
@@ -276,10 +304,14 @@ struct LidarSlam::Impl {
         best = k;
       }
     }
-    if (best == 0 || best_inl < 1.5 * inl_ref + 20) return false;
+    // Another hypothesis must clearly beat the prediction; the prediction's own coarse result
+    // (wider basin than the failed registration) must beat that registration's inliers.
+    if (best != 0 && best_inl < 1.5 * inl_ref + 20) return false;
     const AlignResult m = alignFeatures(local_map, src_edges, src_planes, best_T, mo);
     if (m.edge_matches < cfg.min_edge_features || m.plane_matches < cfg.min_plane_features) return false;
+    if (best == 0 && m.inliers < 1.5 * failed_inliers + 20) return false;
     out = m.T_target_source;
+    inliers = m.inliers;
     logDebug("relocalised: inliers " + std::to_string(best_inl) + " vs " + std::to_string(inl_ref));
     return true;
   }
@@ -319,7 +351,7 @@ struct LidarSlam::Impl {
 
     const int index = static_cast<int>(frames.size());
     if (!have_prev) {  // first usable scan: start (or restart) at the prediction
-      const Pose3 T = frames.empty() ? T_world_first : predict();
+      const Pose3 T = frames.empty() ? T_world_first : predict(scan.t);
       have_prev = true;
       prev_scan.build(f.less_sharp, f.less_flat);
       T_world_good = T;
@@ -331,8 +363,10 @@ struct LidarSlam::Impl {
     }
     // 3. scan-to-scan odometry (LeGO-LOAM two-step: planar -> z/roll/pitch, edges -> x/y/yaw)
     t0 = Clock::now();
-    const Pose3 pred = predict();
-    const double scale = std::max(1.0, (scan.t - frames.back().t) / 0.1);
+    const Pose3 pred = predict(scan.t);
+    const double dt = scan.t - frames.back().t;
+    const double scale = std::max(1.0, dt / 0.1);
+    const double speed = have_velocity ? velocity.translation().norm() / velocity_dt : 0.0;
     const Pose3 T_prev_pred = T_world_good.inverse() * pred;
     Pose3 T_prev_curr = T_prev_pred;
     AlignOptions ao;
@@ -352,7 +386,8 @@ struct LidarSlam::Impl {
       if (r.edge_matches + r.plane_matches >= cfg.min_plane_features) T_prev_curr = r.T_target_source;
     }
     bool implausible = false;
-    if (have_velocity && !plausible(T_prev_pred, T_prev_curr, cfg, scale)) {
+    const bool check = have_velocity && check_motion;
+    if (check && !plausible(T_prev_pred, T_prev_curr, cfg, dt, speed)) {
       T_prev_curr = T_prev_pred;
       implausible = true;
     }
@@ -378,7 +413,7 @@ struct LidarSlam::Impl {
       co.degenerate_eig = 0;
       const AlignResult c = alignFeatures(local_map, capped(src_edges, cap / 4), capped(src_planes, cap), T_world, co);
       if (c.edge_matches >= cfg.min_edge_features && c.plane_matches >= cfg.min_plane_features &&
-          plausible(T_world, c.T_target_source, cfg, scale))
+          plausible(pred, c.T_target_source, cfg, dt, speed))
         T_world = c.T_target_source;
     }
     const AlignResult m = alignFeatures(local_map, src_edges, src_planes, T_world, mo);
@@ -392,9 +427,15 @@ struct LidarSlam::Impl {
     FrameStatus status = implausible ? FrameStatus::Degenerate : FrameStatus::Ok;
     bool failed = false;
     if (m.edge_matches < cfg.min_edge_features || m.plane_matches < cfg.min_plane_features) {
-      status = FrameStatus::FewFeatures;  // keep the odometry pose
+      status = FrameStatus::FewFeatures;  // keep the odometry pose in x, y, yaw
       failed = true;
-    } else if (have_velocity && !plausible(T_world, m.T_target_source, cfg, scale)) {
+      // Too few edges (an open street): the planes still fix height, roll and pitch.
+      AlignOptions po = mo;
+      po.dof_mask = kZ | kRoll | kPitch;
+      const AlignResult g = alignFeatures(local_map, {}, src_planes, T_world, po);
+      if (g.plane_matches >= cfg.min_plane_features && plausible(pred, g.T_target_source, cfg, dt, speed))
+        T_world = g.T_target_source;
+    } else if (check && !plausible(pred, m.T_target_source, cfg, dt, speed)) {
       status = FrameStatus::Degenerate;   // keep the odometry pose
       failed = true;
     } else {
@@ -403,28 +444,53 @@ struct LidarSlam::Impl {
     }
     // A sudden drop of the inliers (residual < 0.1 m) against the previous scan means the
     // registration settled in a wrong minimum (e.g. a heading jump): try the hypotheses too.
-    const bool inlier_drop = last_inliers > 0 && m.inliers < cfg.relocalize_inlier_drop * last_inliers;
-    bool relocalized = false;
+    const bool inlier_drop = inlier_ref > 0 && m.inliers < cfg.relocalize_inlier_drop * inlier_ref;
+    int inliers = m.inliers;
+    check_motion = true;
+    if ((failed || inlier_drop) && !last_failed) dense_until_t = scan.t + cfg.dense_after_failure_s;
     if ((failed || inlier_drop || !have_velocity) && cfg.relocalize) {
       Pose3 T_reloc;
-      if (relocalize(pred, src_edges, src_planes, mo, T_reloc)) {
+      if (relocalize(pred, src_edges, src_planes, mo, m.inliers, T_reloc, inliers)) {
         T_world = T_reloc;
         status = FrameStatus::Ok;
         failed = false;
-        relocalized = true;
+        check_motion = false;
       }
     }
-    last_inliers = failed ? 0 : (relocalized ? 0 : m.inliers);
+    if (failed || inlier_drop || !check_motion || implausible) {
+      const auto yawDeg = [](const Pose3& T) {
+        return std::to_string(std::atan2(T.rotation()(1, 0), T.rotation()(0, 0)) * 180.0 / std::numbers::pi);
+      };
+      logDebug("t=" + std::to_string(scan.t) + " s: " + toString(status) + (failed ? " (failed)" : "") +
+               (check_motion ? "" : " relocalised") + (implausible ? " odometry implausible" : "") +
+               ", inliers " + std::to_string(m.inliers) + " (recent " + std::to_string(static_cast<int>(inlier_ref)) +
+               "), edge/plane matches " + std::to_string(m.edge_matches) + "/" + std::to_string(m.plane_matches) +
+               ", yaw " + yawDeg(T_world) + " deg (predicted " + yawDeg(pred) + ")");
+    }
+    // The reference follows rising inlier counts at once and falling ones slowly, so a sudden drop
+    // stands out while a gradual change of scenery does not trigger searches.
+    if (!failed) inlier_ref = std::max(static_cast<double>(inliers), cfg.relocalize_ref_decay * inlier_ref);
     times.mapping += since(t0);
     // motion model for the next prediction
-    const int gap = index - good_frame;
-    if (relocalized && have_velocity) {
-      // The jump is not motion: keep moving straight ahead at the last speed.
+    // Motion model. A relocalised pose is a correction, not motion: keep the speed and go
+    // straight ahead (the next scans are taken densely, so a fast turn is followed from there).
+    // The turn rate is clamped to what a car can drive at that speed, so a wrong pose cannot make
+    // the prediction spin on.
+    // A failed scan measures no motion: keep the speed, let the turn rate fade (streets are
+    // mostly straight where features are missing).
+    if (failed && have_velocity) {
+      velocity.linear() = scaledMotion(velocity, cfg.failed_turn_decay).linear();
+    } else if (!check_motion && have_velocity) {
       velocity.linear().setIdentity();
-    } else if (gap == 1) {
+    } else if (index - good_frame == 1) {
       velocity = T_world_good.inverse() * T_world;
+      velocity_dt = std::max(1e-3, dt);
       have_velocity = true;
+      const double angle = rotationAngle(velocity);
+      const double max_angle = maxTurnRate(cfg, velocity.translation().norm() / velocity_dt) * velocity_dt;
+      if (angle > max_angle) velocity.linear() = scaledMotion(velocity, max_angle / angle).linear();
     }
+    last_failed = failed;
     prev_scan.build(f.less_sharp, f.less_flat);
     T_world_good = T_world;
     good_frame = index;
@@ -476,17 +542,37 @@ LidarSlam::LidarSlam(const Config& cfg, const LidarSpec& spec, const Pose3& T_wo
   impl_->T_world_last = T_world_first;
 }
 LidarSlam::~LidarSlam() = default;
+void LidarSlam::setInitialMotion(const Pose3& T_first_second, double dt_s) {
+  if (!(dt_s > 0)) throw std::invalid_argument("initial motion: time step must be positive");
+  impl_->velocity = T_first_second;
+  impl_->velocity_dt = dt_s;
+  impl_->have_velocity = true;
+}
 FrameStatus LidarSlam::addScan(const Scan& scan) { return impl_->addScan(scan); }
 FrameStatus LidarSlam::addMissing(double t) { return impl_->addUnusable(t, FrameStatus::Missing); }
 Pose3 LidarSlam::currentPose() const { return impl_->T_world_last; }
+double LidarSlam::turnRateDegPerS() const {
+  if (!impl_->have_velocity) return 0.0;
+  return rotationAngle(impl_->velocity) / impl_->velocity_dt * 180.0 / std::numbers::pi;
+}
+bool LidarSlam::wantsEveryScan() const {
+  const Impl& s = *impl_;
+  if (s.frames.empty()) return false;
+  if (s.frames.back().t < s.dense_until_t) return true;
+  return s.cfg.dense_turn_rate_deg_s > 0 && turnRateDegPerS() > s.cfg.dense_turn_rate_deg_s;
+}
 SlamResult LidarSlam::finish() { return impl_->finish(); }
 
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
-                   const std::function<void(std::size_t, std::size_t)>& progress) {
+                   const std::function<void(std::size_t, std::size_t)>& progress,
+                   const std::optional<Pose3>& T_first_second) {
   LidarSlam slam(cfg, source.spec(), T_world_first);
+  if (T_first_second && source.size() > 1)
+    slam.setInitialMotion(*T_first_second, source.time(1) - source.time(0));
   const std::size_t n = source.size();
+  const std::size_t stride = static_cast<std::size_t>(std::max(1, cfg.scan_stride));
   std::size_t missing = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n;) {
     Scan scan;
     bool ok = true;
     try {
@@ -503,6 +589,8 @@ SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_w
       slam.addMissing(source.time(i));
     }
     if (progress) progress(i + 1, n);
+    // Every scan while turning fast or just after a failure, else every stride-th.
+    i += slam.wantsEveryScan() ? 1 : stride;
   }
   if (missing > 5) logWarn(std::to_string(missing) + " scans could not be read in total");
   return slam.finish();

@@ -49,7 +49,7 @@ Pose3 sensorPose(double x, double y, double z, double sumo_angle_deg, double slo
 /// with it. The recorded heading is therefore the direction of motion of the reference point,
 /// from the positions 0.5 s before and after (central difference), keeping SUMO's pitch; where
 /// the vehicle moved less than 0.2 m in that window (standing at a light) the previous heading is
-/// kept.
+/// kept. The heading then turns at most as fast as a car can (see the limits below).
 void headingsFromMotion(Trajectory& traj) {
   const std::size_t n = traj.size(), k = 5;
   if (n < 3) return;
@@ -66,6 +66,18 @@ void headingsFromMotion(Trajectory& traj) {
     } else if (i > 0) {
       yaw[i] = yaw[i - 1];
     }
+  }
+  // A car turns its heading only while it moves: at most kMaxCurvature per metre driven, plus
+  // kMinTurnRate while (nearly) standing. Without this the heading snapped by ~20 degrees within
+  // 0.1 s when a vehicle waiting at a junction started along a differently directed internal lane.
+  constexpr double kMaxCurvature = 0.5;            // [rad/m], a 2 m turning radius
+  constexpr double kMinTurnRate = 30.0 * kPi / 180.0;  // [rad/s]
+  for (std::size_t i = 1; i < n; ++i) {
+    const Vec3 step = traj[i].T_world_body.translation() - traj[i - 1].T_world_body.translation();
+    const double dt = std::max(0.0, traj[i].t - traj[i - 1].t);
+    const double limit = std::max(kMaxCurvature * std::hypot(step.x(), step.y()), kMinTurnRate * dt);
+    const double diff = std::remainder(yaw[i] - yaw[i - 1], 2.0 * kPi);
+    yaw[i] = yaw[i - 1] + std::clamp(diff, -limit, limit);
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 x_axis = traj[i].T_world_body.linear().col(0);

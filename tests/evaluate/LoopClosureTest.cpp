@@ -40,10 +40,12 @@ class LoopSource : public ScanSource {
 TEST(LoopClosure, FiresOnALoopAndLowersAte) {
   const LoopSource src;
   Config cfg;
+  cfg.scan_stride = 1;  // every scan of the synthetic lap
   cfg.loop_min_time_gap_s = 10.0;  // the synthetic lap takes 20 s
   // The synthetic path enters its corners with an instant yaw-rate step (0 -> 8.6 deg per scan),
   // which no car does; let the plausibility gate accept it.
   cfg.max_step_change_deg = 15.0;
+  cfg.max_lateral_accel_mps2 = 0;  // 86 deg/s at 15 m/s: 22 m/s^2, no car does that
   cfg.loop_closure = false;
   const SlamResult open = runSlam(src, cfg, src.pose(0));
   cfg.loop_closure = true;

@@ -12,6 +12,13 @@ struct Config {
   /// constant-velocity prediction bridges the ~2.5 m between scans at city speed. On the noisy
   /// 1.77 km vlp16 drive (bench/RESULTS.md "Odometry") stride 2 gave ATE 0.083 m, stride 1 0.088 m.
   int scan_stride = 2;
+  /// ... but every scan while the estimated turn rate exceeds this (0 = never) [deg/s]. SUMO
+  /// drives U-turns at up to ~90 deg/s; at 5 Hz that is 18 deg between scans, beyond the reach
+  /// of local registration.
+  double dense_turn_rate_deg_s = 10.0;
+  double dense_after_failure_s = 1.0;  ///< ... and for this long after a failed scan [s]
+  double start_s = 0.0;  ///< evaluate only scans from this drive time on [s]
+  double end_s = 0.0;    ///< ... up to this drive time; 0 = to the end [s]
   // --- range image (LeGO-LOAM "imageProjection") ---
   bool use_ring_field = true;        ///< use ScanPoint.ring when >= 0, else ring from elevation
   bool ring_zero_is_bottom = true;   ///< ring 0 is the lowest beam (KITTI/Velodyne order)
@@ -64,7 +71,13 @@ struct Config {
   bool degeneracy_remap = false;     ///< freeze degenerate directions in scan-to-map (LOAM);
                                      ///< off: on the noisy default-city drive it made drift worse
   double max_step_change_m = 2.0;    ///< odometry/mapping may change the prediction by at most [m]
-  double max_step_change_deg = 10.0; ///< ... and [deg] per scan; larger: rejected as a failure
+  double max_step_change_deg = 10.0; ///< ... and [deg] per 0.1 s; larger: rejected as a failure
+  /// Car dynamics: the turn rate is at most this over the speed (6 m/s^2: 25 deg/s at 50 km/h).
+  /// A registration turning further from the prediction is rejected: at 5 Hz a car passing 3 m
+  /// away pulled the scan-to-map 14 deg off on a straight street. 0 = off [m/s^2]
+  double max_lateral_accel_mps2 = 6.0;
+  double rotation_slack_deg = 1.5;   ///< allowed on top of the dynamic bound per scan [deg]
+  double failed_turn_decay = 0.9;    ///< a failed scan keeps the speed, the turn rate times this
   // --- relocalisation (not in LeGO-LOAM) ---
   // Simulated drives have heading jumps of up to ~100 deg within one scan where SUMO switches a
   // vehicle onto a junction's internal lane. Local registration cannot converge from there; a
@@ -74,7 +87,8 @@ struct Config {
                                         ///< (not in LeGO-LOAM; stride-2 turns need it) [m]
   bool relocalize = true;               ///< yaw search when scan-to-map fails
   double relocalize_inlier_drop = 0.5;  ///< ... or when the inliers fall below this share of
-                                        ///< the previous scan's
+                                        ///< the recent inlier level
+  double relocalize_ref_decay = 0.8;    ///< the recent level decays by this per scan
   double relocalize_yaw_step_deg = 15.0;  ///< spacing of the yaw hypotheses over 360 deg [deg]
   int relocalize_iterations = 6;        ///< Gauss-Newton iterations per hypothesis
   int relocalize_max_points = 1500;     ///< source features per hypothesis (strided)
@@ -109,6 +123,10 @@ struct Config {
 template <class V>
 void visitFields(V& v, Config& c) {
   v.field("scan_stride", c.scan_stride, "use every n-th scan (1 = all, 10 Hz)");
+  v.field("dense_turn_rate_deg_s", c.dense_turn_rate_deg_s, "every scan above this turn rate, 0 = off [deg/s]");
+  v.field("dense_after_failure_s", c.dense_after_failure_s, "every scan this long after a failure [s]");
+  v.field("start_s", c.start_s, "evaluate scans from this drive time on [s]");
+  v.field("end_s", c.end_s, "evaluate scans up to this drive time, 0 = to the end [s]");
   v.field("use_ring_field", c.use_ring_field, "use ScanPoint.ring when >= 0");
   v.field("ring_zero_is_bottom", c.ring_zero_is_bottom, "ring 0 is the lowest beam");
   v.field("min_range_m", c.min_range_m, "points closer are dropped [m]");
@@ -152,9 +170,13 @@ void visitFields(V& v, Config& c) {
   v.field("degeneracy_remap", c.degeneracy_remap, "freeze degenerate directions");
   v.field("max_step_change_m", c.max_step_change_m, "max change of the prediction per scan [m]");
   v.field("max_step_change_deg", c.max_step_change_deg, "max change of the prediction per scan [deg]");
+  v.field("max_lateral_accel_mps2", c.max_lateral_accel_mps2, "turn rate bound: this over the speed, 0 = off [m/s^2]");
+  v.field("rotation_slack_deg", c.rotation_slack_deg, "rotation allowed on top of the bound per scan [deg]");
+  v.field("failed_turn_decay", c.failed_turn_decay, "turn rate kept per failed scan (share)");
   v.field("map_coarse_nn_m", c.map_coarse_nn_m, "coarse scan-to-map radius, 0 = off [m]");
   v.field("relocalize", c.relocalize, "yaw search when scan-to-map fails");
   v.field("relocalize_inlier_drop", c.relocalize_inlier_drop, "inlier drop share triggering the search");
+  v.field("relocalize_ref_decay", c.relocalize_ref_decay, "decay of the recent inlier level per scan");
   v.field("relocalize_yaw_step_deg", c.relocalize_yaw_step_deg, "yaw hypothesis spacing [deg]");
   v.field("relocalize_iterations", c.relocalize_iterations, "iterations per yaw hypothesis");
   v.field("relocalize_max_points", c.relocalize_max_points, "source features per hypothesis");

@@ -4,6 +4,7 @@
 // Ceres pose graph. The estimate starts at a given pose (the first ground-truth pose), so it is
 // expressed in the world frame.
 #include <functional>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,12 +48,21 @@ class LidarSlam {
   ~LidarSlam();
   LidarSlam(const LidarSlam&) = delete;
   LidarSlam& operator=(const LidarSlam&) = delete;
+  /// Motion between the first two scans (body frame of the first), e.g. from wheel odometry or the
+  /// ground truth; without it the first scan-to-map step starts from standstill.
+  void setInitialMotion(const Pose3& T_first_second, double dt_s);
   /// Processes one scan; returns its status. Never throws on bad scan content.
   FrameStatus addScan(const Scan& scan);
   /// Records a scan that could not be read (constant-velocity prediction).
   FrameStatus addMissing(double t);
   /// Current pose estimate of the last frame.
   Pose3 currentPose() const;
+  /// Turn rate of the current motion estimate [deg/s] (0 before any motion is known).
+  double turnRateDegPerS() const;
+  /// True while the vehicle turns faster than cfg.dense_turn_rate_deg_s or within
+  /// cfg.dense_after_failure_s of a failed or relocalised scan: the caller should then feed every
+  /// scan instead of every cfg.scan_stride-th.
+  bool wantsEveryScan() const;
   SlamResult finish();
 
  private:
@@ -60,9 +70,12 @@ class LidarSlam {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Runs the pipeline over a whole scan source. `progress(done, total)` is called after each scan.
+/// Runs the pipeline over a scan source: every cfg.scan_stride-th scan, and every scan while the
+/// vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the motion from the
+/// source's scan 0 to scan 1, if known. `progress(done, total)` is called after each scan.
 /// A scan the source cannot produce is recorded as Missing and the run continues.
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
-                   const std::function<void(std::size_t, std::size_t)>& progress = {});
+                   const std::function<void(std::size_t, std::size_t)>& progress = {},
+                   const std::optional<Pose3>& T_first_second = std::nullopt);
 
 }  // namespace slamroute::evaluate

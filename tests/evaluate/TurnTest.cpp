@@ -1,0 +1,75 @@
+// A SUMO-style U-turn: the car slows down and turns 180 deg in 2 s (90 deg/s, 18 deg between scans
+// at the default stride of 2). runSlam must take every scan while turning and keep the heading.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "SyntheticScene.hpp"
+#include "slamroute/evaluate/Metrics.hpp"
+#include "slamroute/evaluate/Slam.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+/// 10 Hz: 2 s straight at 3 m/s, a 2 s U-turn of radius 1.5 m (2.4 m/s), 2 s straight back.
+class UTurnSource : public ScanSource {
+ public:
+  UTurnSource() : scene_(test::cityScene(100.0)) {
+    spec_.channels = 32;
+    spec_.horizontal_samples = 900;
+  }
+  std::size_t size() const override { return 60; }
+  double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
+  static Pose3 pose(std::size_t i) {
+    const double t = 0.1 * static_cast<double>(i);
+    const double x0 = -8.0, v = 3.0, r = 1.5;
+    if (t <= 2.0) return test::poseXYZYaw(x0 + v * t, 0.0, 1.8, 0.0);
+    if (t <= 4.0) {
+      const double a = (t - 2.0) / 2.0 * std::numbers::pi;  // 0 .. 180 deg
+      return test::poseXYZYaw(x0 + 2 * v + r * std::sin(a), r - r * std::cos(a), 1.8, a);
+    }
+    return test::poseXYZYaw(x0 + 2 * v - v * (t - 4.0), 2 * r, 1.8, std::numbers::pi);
+  }
+  Scan scan(std::size_t i) const override { return test::scanScene(scene_, pose(i), spec_, time(i), 0.02, 7 + i); }
+  LidarSpec spec() const override { return spec_; }
+
+ private:
+  test::Scene scene_;
+  LidarSpec spec_;
+};
+
+double finalYawErrorDeg(const SlamResult& r) {
+  const Pose3 err = UTurnSource::pose(59).inverse() * r.trajectory.back().T_world_body;
+  return Eigen::AngleAxisd(err.rotation()).angle() / kDeg;
+}
+
+TEST(Turn, EveryScanWhileTurningFast) {
+  const UTurnSource src;
+  Config cfg;
+  cfg.loop_closure = false;
+  ASSERT_EQ(cfg.scan_stride, 2);
+  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
+  // Every scan of the turn (t = 2.1 ... 4.0) is used; fewer than all 60 overall.
+  int in_turn = 0;
+  for (const auto& p : r.trajectory) in_turn += p.t > 2.05 && p.t < 4.05;
+  EXPECT_EQ(in_turn, 20);
+  EXPECT_LT(r.trajectory.size(), 58u);
+  EXPECT_LT(finalYawErrorDeg(r), 1.0);
+  const Vec3 d = r.trajectory.back().T_world_body.translation() - UTurnSource::pose(59).translation();
+  EXPECT_LT(d.norm(), 0.3) << d.transpose();
+}
+
+TEST(Turn, FixedStrideTakesHalfTheScans) {
+  const UTurnSource src;
+  Config cfg;
+  cfg.loop_closure = false;
+  cfg.dense_turn_rate_deg_s = 0;  // off
+  cfg.dense_after_failure_s = 0;
+  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
+  EXPECT_EQ(r.trajectory.size(), 30u);
+}
+
+}  // namespace
+}  // namespace slamroute::evaluate
