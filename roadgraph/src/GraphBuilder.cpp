@@ -102,13 +102,15 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
   std::vector<Point3> raw;
   raw.reserve(traces.points.size());
   for (const auto& p : traces.points) raw.push_back(p.pos);
-  const Downsampled ds = downsample(raw, cfg.nodes.downsample_m);
+  const std::vector<Vec3> travel =
+      travelDirections(traces, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
+  const Downsampled ds = downsample(raw, cfg.nodes.downsample_m, &travel);
   st.voxels = ds.points.size();
   logInfo("build-graph: " + std::to_string(raw.size()) + " trace points -> " +
           std::to_string(ds.points.size()) + " voxels");
 
   // Step 1: nodes (hollow cylinder).
-  const IntersectionResult ir = detectIntersections(ds.points, cfg.nodes);
+  const IntersectionResult ir = detectIntersections(ds.points, cfg.nodes, &ds.axes);
   st.intersection_points = static_cast<std::size_t>(
       std::count(ir.is_intersection.begin(), ir.is_intersection.end(), 1));
   if (ir.nodes.empty())

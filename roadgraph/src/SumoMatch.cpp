@@ -208,12 +208,12 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
     }
     return {};
   };
-  std::size_t unmapped = 0, gaps = 0;
+  std::size_t unmapped = 0, gaps = 0, dropped = 0;
   for (auto& ge : graph.edges) {
     ge.sumo_edges.clear();
     const auto& pl = ge.polyline;
     const double total = polylineLength(pl);
-    std::vector<int> seq;
+    std::vector<int> seq, cnt;  // SUMO edges along the polyline, samples on each
     double s = 0.0;
     for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
       const Vec3 d = pl[k + 1] - pl[k];
@@ -236,18 +236,59 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
             best = sample_edge[static_cast<std::size_t>(j)];
           }
         });
-        if (best >= 0 && (seq.empty() || seq.back() != best)) seq.push_back(best);
+        if (best >= 0 && (seq.empty() || seq.back() != best)) {
+          seq.push_back(best);
+          cnt.push_back(0);
+        }
+        if (best >= 0) ++cnt.back();
       }
       s += len;
     }
     // Drop A-B-A flickers (a sample snapping to a neighbouring edge for one step).
     for (std::size_t k = 1; k + 1 < seq.size();) {
       if (seq[k - 1] == seq[k + 1]) {
+        cnt[k - 1] += cnt[k + 1];
         seq.erase(seq.begin() + static_cast<long>(k), seq.begin() + static_cast<long>(k) + 2);
+        cnt.erase(cnt.begin() + static_cast<long>(k), cnt.begin() + static_cast<long>(k) + 2);
         k = std::max<std::size_t>(1, k - 1);
       } else {
         ++k;
       }
+    }
+    // Keep the drivable chain with the most samples (longest path in the DAG of the sequence
+    // whose links are allowed turns or bridgeable within 4 edges): samples snapping to the other
+    // carriageway or a crossing street for a few steps cannot be driven and are dropped.
+    if (seq.size() > 1) {
+      const std::size_t m = seq.size();
+      std::map<std::pair<int, int>, bool> linkable;
+      auto link = [&](int a, int b) {
+        if (a == b) return true;
+        const auto key = std::make_pair(a, b);
+        const auto it = linkable.find(key);
+        if (it != linkable.end()) return it->second;
+        const SumoEdge* ea = edges[static_cast<std::size_t>(a)];
+        const SumoEdge* eb = edges[static_cast<std::size_t>(b)];
+        const bool ok = net.turnAllowed(ea->id, eb->id) || !bridge(ea, eb).empty();
+        linkable.emplace(key, ok);
+        return ok;
+      };
+      std::vector<int> score(m, 0), parent(m, -1);
+      for (std::size_t k = 0; k < m; ++k) {
+        score[k] = cnt[k];
+        for (std::size_t j = 0; j < k; ++j)
+          if (score[j] + cnt[k] > score[k] && link(seq[j], seq[k])) {
+            score[k] = score[j] + cnt[k];
+            parent[k] = static_cast<int>(j);
+          }
+      }
+      int k = static_cast<int>(std::max_element(score.begin(), score.end()) - score.begin());
+      std::vector<int> chain;
+      for (; k >= 0; k = parent[static_cast<std::size_t>(k)]) {
+        const int e = seq[static_cast<std::size_t>(k)];
+        if (chain.empty() || chain.back() != e) chain.push_back(e);
+      }
+      dropped += m - chain.size();
+      seq.assign(chain.rbegin(), chain.rend());
     }
     for (std::size_t k = 0; k < seq.size(); ++k) {
       const SumoEdge* cur = edges[static_cast<std::size_t>(seq[k])];
@@ -264,6 +305,9 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
     }
     if (ge.sumo_edges.empty()) ++unmapped;
   }
+  if (dropped > 0)
+    logInfo("build-graph: " + std::to_string(dropped) +
+            " SUMO edge match(es) dropped that no drivable chain along their graph edge passes");
   if (gaps > 0)
     logWarn("build-graph: " + std::to_string(gaps) +
             " gap(s) between consecutive SUMO edges could not be bridged");

@@ -8,7 +8,7 @@ namespace slamroute::roadgraph {
 
 /// Intersection (node) detection with the hollow cylinder (paper §3.1, Fig. 2b).
 struct NodeConfig {
-  double downsample_m = 1.0;         ///< voxel size trace points are thinned to first [m]
+  double downsample_m = 2.0;         ///< voxel size trace points are thinned to first [m]
   double inner_radius_m = 10.0;      ///< hollow cylinder inner radius [m] (paper)
   double outer_radius_m = 25.0;      ///< hollow cylinder outer radius [m] (paper)
   double height_m = 10.0;            ///< hollow cylinder height, centred on the point [m] (paper)
@@ -18,11 +18,29 @@ struct NodeConfig {
   int min_cluster_points = 3;        ///< smaller clusters in the cylinder are noise [points]
   double min_branch_span_m = 4.0;    ///< a cluster must span this much radially to be a branch [m]
   double min_branch_angle_deg = 30.0;  ///< clusters seen closer in bearing are one branch [deg]
+  /// Parallel clusters (axes within parallel_angle_deg) on the same side of the point whose centre
+  /// lines are closer than carriageway_gap_m are the two carriageways of one divided road.
+  double parallel_angle_deg = 15.0;  ///< [deg]
+  double carriageway_gap_m = 15.0;   ///< [m]
+  /// Radii factor of a second, larger ring tried where the paper's ring sees too few branches
+  /// (big junctions whose turning traffic links the arms inside the ring); <= 1 disables it.
+  double wide_scale = 1.5;
+  /// ... tried only where the paper's ring has points over at least this range of bearings [deg]
+  double wide_min_coverage_deg = 100.0;
   int min_branches = 3;              ///< clusters needed to call a point an intersection point
   bool require_connected = true;     ///< count only branches linked to the point inside the disk
-  double node_radius_m = 10.0;       ///< intersection points within this of a seed form its node [m]
-  double merge_distance_m = 5.0;     ///< nodes whose centres end up closer are merged [m]
-  int min_node_points = 3;           ///< fewer intersection points are discarded as noise
+  /// With travel directions: an arm's axis is its vehicles' mean axis when the doubled-angle
+  /// mean has at least this length relative to the sum of lengths (1 = all parallel).
+  double min_axis_coherence = 0.5;
+  double travel_span_m = 5.0;        ///< travel direction from the trace this far behind/ahead [m]
+  int vote_iterations = 2;           ///< crossing re-evaluations per intersection point's vote
+  double vote_max_m = 25.0;          ///< crossings farther from the point are not accepted [m]
+  double vote_radius_m = 3.0;        ///< vote density radius (seed order) [m]
+  double node_radius_m = 10.0;       ///< votes within this of a seed vote form its node [m]
+  double merge_distance_m = 8.0;     ///< weaker nodes this close to a stronger one are absorbed [m]
+  /// Candidates with fewer votes than this fraction of the median candidate's are dropped.
+  double min_vote_fraction = 0.25;
+  int min_node_points = 3;           ///< groups with fewer votes are discarded as noise
   bool refine_centre = true;         ///< move the node to the least-squares crossing of its arms
 };
 template <class V>
@@ -37,13 +55,33 @@ void visitFields(V& v, NodeConfig& c) {
           "radial extent a cluster needs to count as a branch (noise stubs do not) [m]");
   v.field("min_branch_angle_deg", c.min_branch_angle_deg,
           "clusters closer in bearing from the point are one branch (divided roads) [deg]");
+  v.field("parallel_angle_deg", c.parallel_angle_deg,
+          "parallel clusters (axes within this) on the same side may be one divided road [deg]");
+  v.field("carriageway_gap_m", c.carriageway_gap_m,
+          "parallel clusters whose centre lines are closer are one divided road [m]");
+  v.field("wide_scale", c.wide_scale,
+          "radii factor of a second ring tried where the paper's sees too few branches (<=1 off)");
+  v.field("wide_min_coverage_deg", c.wide_min_coverage_deg,
+          "second ring only where the first has points over this range of bearings [deg]");
   v.field("min_branches", c.min_branches, "clusters that make an intersection point (paper 3)");
   v.field("require_connected", c.require_connected,
           "count only branches connected to the point inside the outer disk");
+  v.field("min_axis_coherence", c.min_axis_coherence,
+          "arm axis from travel directions when their doubled-angle mean is this coherent (0-1)");
+  v.field("travel_span_m", c.travel_span_m,
+          "travel direction of a trace point from its trace this far behind/ahead [m]");
+  v.field("vote_iterations", c.vote_iterations,
+          "crossing re-evaluations per intersection point's centre vote");
+  v.field("vote_max_m", c.vote_max_m,
+          "crossings farther from the voting point are not accepted (it votes for itself) [m]");
+  v.field("vote_radius_m", c.vote_radius_m, "vote density radius for the seed order [m]");
   v.field("node_radius_m", c.node_radius_m,
-          "intersection points within this of a seed form one node (junction resolution) [m]");
-  v.field("merge_distance_m", c.merge_distance_m, "nodes whose centres end up closer merge [m]");
-  v.field("min_node_points", c.min_node_points, "intersection points needed for a node");
+          "centre votes within this of a seed vote form one node (junction resolution) [m]");
+  v.field("merge_distance_m", c.merge_distance_m,
+          "a node this close to one with more votes is absorbed by it [m]");
+  v.field("min_vote_fraction", c.min_vote_fraction,
+          "nodes need this fraction of the median node's centre votes (0 = off)");
+  v.field("min_node_points", c.min_node_points, "centre votes needed for a node");
   v.field("refine_centre", c.refine_centre, "node at least-squares crossing of its arms");
 }
 
