@@ -2,13 +2,17 @@
 // scans, then ATE/RPE/per-edge/map metrics against the drive's ground truth.
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "Commands.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/simulate/Drive.hpp"
 #include "slamroute/simulate/SimulatedScanSource.hpp"
+#include "slamroute/simulate/World.hpp"
 
 namespace slamroute::cli {
 
@@ -56,7 +60,22 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
       source = std::make_unique<simulate::SimulatedScanSource>(drive);
     }
     logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + o->drive);
-    const nlohmann::json j = evaluate::evaluateDrive(drive, *source, o->out, cfg);
+    // Simulated drives: label each street with the kind the world lines it with (rich / wall /
+    // open), so metrics.json shows the drift per kind of street.
+    std::map<std::string, std::string> kinds;
+    if (fs::exists(drive / drive_files::kWorld)) {
+      const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
+      const SumoNet net = SumoNet::read(wf.net);
+      const simulate::World world = simulate::World::build(net, wf.world, wf.seed);
+      for (const auto& e : net.edges) {
+        if (e.isInternal()) continue;
+        try {
+          kinds[e.id] = simulate::streetKindName(world.streetKind(e.id));
+        } catch (const std::exception&) {
+        }
+      }
+    }
+    const nlohmann::json j = evaluate::evaluateDrive(drive, *source, o->out, cfg, kinds);
     std::cout << "ATE rmse " << j["ate_rmse_m"] << " m, RPE " << j["rpe_trans_pct"] << " %, loop closures "
               << j["loop_closures"] << ", " << j["evaluated_length_m"] << " m evaluated -> " << o->out << "\n";
   });

@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "slamroute/core/AtomicFile.hpp"
@@ -86,6 +87,30 @@ std::map<std::string, std::pair<double, double>> pooledDrift(const fs::path& out
     }
   }
   return acc;
+}
+
+/// Length-weighted mean drift per kind of street the simulated world lined the edge with: the
+/// ground truth behind the depth-image weight (rich streets should drift least).
+std::string driftByStreetKind(const simulate::World& world,
+                              const std::map<std::string, std::pair<double, double>>& drift) {
+  std::map<std::string, std::pair<double, double>> by_kind;  // kind -> (sum drift*len, sum len)
+  for (const auto& [edge, dl] : drift) {
+    std::string kind;
+    try {
+      kind = simulate::streetKindName(world.streetKind(edge));
+    } catch (const std::exception&) {
+      continue;  // not a street of this world
+    }
+    by_kind[kind].first += dl.first;
+    by_kind[kind].second += dl.second;
+  }
+  std::ostringstream md;
+  md << "Drift by the kind of street the simulated city lines it with (all drives pooled, "
+        "length-weighted):\n\n| street kind | driven [km] | drift [%] |\n|---|---|---|\n";
+  for (const auto& [kind, dl] : by_kind)
+    md << "| " << kind << " | " << fmt(dl.second / 1000.0, 2) << " | " << fmt(dl.first / dl.second, 2) << " |\n";
+  md << "\n";
+  return md.str();
 }
 
 void scatterPng(const fs::path& path, const std::vector<double>& x, const std::vector<double>& y,
@@ -171,11 +196,13 @@ void writeReport(const ReportInputs& in) {
   }
   // The simulated 3D city the drives saw (rebuilt from the first drive's world.yaml: same net,
   // world config and seed for every drive of the run).
+  std::optional<simulate::World> world;
   for (const auto& p : in.planners) {
     const fs::path drive = in.out / "drives" / p;
     if (!fs::exists(drive / "world.yaml")) continue;
     const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
-    simulate::World::build(SumoNet::read(wf.net), wf.world, wf.seed).renderTopDownPng(rep / "world.png", 0.5);
+    world.emplace(simulate::World::build(SumoNet::read(wf.net), wf.world, wf.seed));
+    world->renderTopDownPng(rep / "world.png", 0.5);
     md << "The simulated city (top view, coloured by height): buildings, walls, poles and trees "
           "along the streets; feature-poor (open, long uniform walls) and feature-rich streets.\n\n"
        << "![simulated world](report/world.png)\n\n";
@@ -248,6 +275,8 @@ void writeReport(const ReportInputs& in) {
     scatterPng(rep / "weight_vs_drift.png", w, d, "edge weight", "drift [%]");
     md << "![weight vs drift](report/weight_vs_drift.png)\n\n";
   }
+
+  if (world) md << driftByStreetKind(*world, drift);
 
   md << "## Step times\n\n| step | seconds |\n|---|---|\n";
   for (const auto& [name, s] : in.step_seconds) md << "| " << name << " | " << fmt(s, 1) << " |\n";

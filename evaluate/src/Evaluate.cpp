@@ -67,6 +67,20 @@ void addCoverage(const fs::path& drive, const std::vector<PoseEdge>& pose_edges,
   if (total > 0) j["coverage_edge_pct"] = 100.0 * static_cast<double>(hit) / static_cast<double>(total);
 }
 
+/// Length-weighted mean drift per label over edges driven >= 20 m (shorter pieces: noise).
+nlohmann::json driftByLabel(const std::vector<EdgeError>& rows, const std::map<std::string, std::string>& labels) {
+  std::map<std::string, std::pair<double, double>> acc;  // label -> (sum drift*len, sum len)
+  for (const auto& r : rows) {
+    const auto it = labels.find(r.edge);
+    if (it == labels.end() || !std::isfinite(r.drift_pct) || r.length_m < 20.0) continue;
+    acc[it->second].first += r.drift_pct * r.length_m;
+    acc[it->second].second += r.length_m;
+  }
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [label, dl] : acc) j[label] = {{"driven_m", dl.second}, {"drift_pct", dl.first / dl.second}};
+  return j;
+}
+
 }  // namespace
 
 LidarSpec readSensorSpec(const fs::path& path) {
@@ -161,7 +175,7 @@ nlohmann::json reliabilityJson(const SlamResult& r) {
 }
 
 nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans, const fs::path& out,
-                             const Config& cfg) {
+                             const Config& cfg, const std::map<std::string, std::string>& edge_labels) {
   // The window here; the stride (with denser sampling in turns) inside runSlam.
   const StridedScanSource source(all_scans, 1, cfg.start_s, cfg.end_s);
   const Trajectory gt = readTum(drive / drive_files::kGroundTruth);
@@ -207,7 +221,9 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   const fs::path pe_path = drive / drive_files::kPoseEdges;
   if (fs::exists(pe_path)) {
     pose_edges = readPoseEdges(pe_path);
-    writePerEdgeCsv(out / "per_edge.csv", perEdgeErrors(m, pose_edges, cfg.assoc_max_dt_s));
+    const std::vector<EdgeError> per_edge = perEdgeErrors(m, pose_edges, cfg.assoc_max_dt_s);
+    writePerEdgeCsv(out / "per_edge.csv", per_edge);
+    if (!edge_labels.empty()) j["drift_by_label"] = driftByLabel(per_edge, edge_labels);
   }
   addCoverage(drive, pose_edges, j);
 

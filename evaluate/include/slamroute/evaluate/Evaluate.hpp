@@ -2,6 +2,8 @@
 // `slamroute evaluate` and `slamroute compare` as library calls: run the SLAM pipeline on a drive
 // folder, write estimate.tum / metrics.json / map.pcd / per_edge.csv / plots.
 #include <filesystem>
+#include <map>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "slamroute/core/Scan.hpp"
@@ -26,7 +28,10 @@ nlohmann::json reliabilityJson(const SlamResult& r);
 /// Runs the whole evaluation of a drive folder and writes the outputs into `out`.
 /// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
 /// still computed after SE(3) alignment. Returns the metrics.json content.
+/// `edge_labels` (optional): a label per SUMO edge (e.g. the simulated world's street kind);
+/// metrics.json then gets "drift_by_label": the length-weighted mean drift per label.
 nlohmann::json evaluateDrive(const std::filesystem::path& drive, const ScanSource& source,
-                             const std::filesystem::path& out, const Config& cfg);
+                             const std::filesystem::path& out, const Config& cfg,
+                             const std::map<std::string, std::string>& edge_labels = {});
 
 }  // namespace slamroute::evaluate

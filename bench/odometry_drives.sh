@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# SLAM accuracy on drives from `slamroute drive` in the default city (bench/RESULTS.md,
+# "Odometry" > "Accuracy"). Usage: bench/odometry_drives.sh [BUILD_DIR] [OUT_DIR]
+#   route1k: 1.2 km through building-lined and open streets; loop: one block, back to its start;
+#   city: the three 7 km routes of `slamroute run` (out/default_city/routes, if it exists).
+# Prints one Markdown row per evaluation. Takes ~15 min on 2 cores (~45 min with the city).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+build="${1:-$here/../build}"
+out="${2:-/tmp/slamroute_odometry_bench}"
+bin="$build/cli/slamroute"
+mkdir -p "$out"
+printf 'simulate:\n  lidar:\n    range_sigma_m: 0.0\n    dropout_prob: 0.0\n' > "$out/noisefree.yaml"
+
+drive() {  # name route [extra args]
+  local name=$1 route=$2; shift 2
+  [ -f "$out/$name/groundtruth.tum" ] || "$bin" --log-level warn "$@" drive --route "$route" --out "$out/$name"
+}
+evaluate() {  # drive eval [extra args]
+  local d=$1 e=$2; shift 2
+  "$bin" --log-level warn evaluate --drive "$out/$d" --out "$out/$e" "$@" > /dev/null
+  python3 - "$out/$e/metrics.json" "$e" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+f = lambda k, p=3: ("%.*f" % (p, j[k])) if isinstance(j.get(k), (int, float)) else "–"
+print(f"| {sys.argv[2]} | {j['evaluated_length_m']/1000:.2f} | {f('ate_rmse_m')} | {f('ate_max_m',2)} | "
+      f"{f('rpe_trans_pct',2)} | {f('rpe_segment_trans_pct',2)} | {j['loop_closures']} | "
+      f"{f('map_mean_dist_m',2)} / {f('map_p95_dist_m',2)} | {j['reliability']['unreliable_scans']} | "
+      f"{j['scans']} | {f('scans_per_s',1)} | " +
+      " / ".join("%.2f" % j["drift_by_label"][k]["drift_pct"] if k in j.get("drift_by_label", {}) else "–"
+                 for k in ("rich", "wall", "open")) + " |")
+PY
+}
+
+echo "| evaluation | km | ATE RMSE [m] | ATE max [m] | RPE 100-800 m [%] | RPE 50 m [%] | loop closures | map error mean / p95 [m] | unreliable scans | scans used | scans/s (1 core) | drift rich / wall / open streets [%] |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+drive drive1k_clean "$here/routes/route1k.json" --config "$out/noisefree.yaml"
+drive drive1k_noisy "$here/routes/route1k.json"
+drive loop_noisy "$here/routes/loop.json"
+evaluate drive1k_clean route1k_noisefree
+evaluate drive1k_noisy route1k_noisy_no_loop_closure --no-loop-closure
+evaluate loop_noisy loop_noisy_no_loop_closure --no-loop-closure
+evaluate loop_noisy loop_noisy
+city="$here/../out/default_city/routes"
+if [ -d "$city" ] && [ "${SKIP_CITY:-0}" != 1 ]; then
+  for p in qlearning random postman; do
+    drive "city_$p" "$city/$p.json"
+    evaluate "city_$p" "city_${p}"
+    evaluate "city_$p" "city_${p}_no_loop_closure" --no-loop-closure
+  done
+fi
