@@ -28,10 +28,16 @@
 //   inside the ring, so its principal axis tilts by tens of degrees when seen off-centre, and
 //   that tilt moves the crossing by metres. Opposite branches on one line are fitted together.
 // - Votes are grouped greedily (densest first, node_radius_m); a group's node is the median of its
-//   votes and must itself see >= 3 branches. Groups with fewer than min_vote_fraction of the
-//   median group's votes are dropped (a bend, a lane split, a noisy stretch collect a handful of
-//   votes, a junction tens to hundreds), and a group within merge_distance_m of a stronger one is
-//   absorbed by it: the ring cannot resolve junctions much closer than its inner radius.
+//   votes and must itself see >= 3 branches in either ring (both are always tried there), unless
+//   it holds strong_vote_factor x the median group's votes: at big junctions (SUMO clusters,
+//   4-lane arms) turning traffic links the arms in both rings around the centre while the
+//   points voting for it, off-centre, see them apart (Ingolstadt: 7 true junctions with 47-139
+//   votes were dropped by the test). Groups with fewer than min_vote_fraction of the median
+//   group's votes are dropped (a bend, a lane split, a noisy stretch collect a handful of votes,
+//   a junction tens to hundreds), and a group within merge_distance_m (18 m) of a stronger one
+//   is absorbed by it: the carriageway crossings of two divided roads and the corners of a big
+//   junction box collect votes of their own 10-16 m apart, and the ring cannot resolve separate
+//   junctions that close anyway (they are lost; see bench/RESULTS.md).
 #include "slamroute/roadgraph/Intersections.hpp"
 
 #include <tbb/blocked_range.h>
@@ -91,77 +97,6 @@ double median(std::vector<double> v) {
 }
 
 }  // namespace
-
-Downsampled downsample(const std::vector<Point3>& pts, double voxel_m,
-                       const std::vector<Vec3>* travel) {
-  if (!(voxel_m > 0.0)) throw std::invalid_argument("roadgraph.nodes.downsample_m must be > 0");
-  if (travel && travel->size() != pts.size())
-    throw std::invalid_argument("downsample: travel directions and points differ in number");
-  Downsampled out;
-  out.voxel_of.resize(pts.size());
-  std::unordered_map<std::uint64_t, int> index;
-  index.reserve(pts.size() / 2 + 16);
-  std::vector<int> count;
-  auto q = [&](double v) {
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / voxel_m))) &
-           0x1FFFFFu;
-  };
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const std::uint64_t key = (q(pts[i].x()) << 42) | (q(pts[i].y()) << 21) | q(pts[i].z());
-    auto [it, inserted] = index.emplace(key, static_cast<int>(out.points.size()));
-    if (inserted) {
-      out.points.push_back(Point3::Zero());
-      count.push_back(0);
-      if (travel) out.axes.push_back(Eigen::Vector2d::Zero());
-    }
-    out.points[static_cast<std::size_t>(it->second)] += pts[i];
-    if (travel) {
-      const Vec3& d = (*travel)[i];
-      const double n2 = d.x() * d.x() + d.y() * d.y();
-      if (n2 > 1e-12)
-        out.axes[static_cast<std::size_t>(it->second)] +=
-            Eigen::Vector2d(d.x() * d.x() - d.y() * d.y(), 2.0 * d.x() * d.y()) / n2;
-    }
-    ++count[static_cast<std::size_t>(it->second)];
-    out.voxel_of[i] = it->second;
-  }
-  for (std::size_t v = 0; v < out.points.size(); ++v) out.points[v] /= count[v];
-  return out;
-}
-
-std::vector<Vec3> travelDirections(const Traces& traces, double span_m, double max_gap_s) {
-  const auto& P = traces.points;
-  std::vector<std::size_t> order(P.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return P[a].vehicle != P[b].vehicle ? P[a].vehicle < P[b].vehicle : P[a].t < P[b].t;
-  });
-  auto linked = [&](std::size_t a, std::size_t b) {  // consecutive in order, same run
-    return P[a].vehicle == P[b].vehicle && std::abs(P[b].t - P[a].t) <= max_gap_s;
-  };
-  const double span2 = span_m * span_m;
-  const std::size_t max_steps = 200;  // bounds the search at very slow speeds
-  std::vector<Vec3> dir(P.size(), Vec3::Zero());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const Point3& p = P[order[k]].pos;
-    std::size_t ahead = k, behind = k;
-    for (std::size_t s = 0; s < max_steps && ahead + 1 < order.size() &&
-                            linked(order[ahead], order[ahead + 1]);
-         ++s) {
-      ++ahead;
-      if ((P[order[ahead]].pos - p).head<2>().squaredNorm() >= span2) break;
-    }
-    for (std::size_t s = 0; s < max_steps && behind > 0 && linked(order[behind - 1], order[behind]);
-         ++s) {
-      --behind;
-      if ((P[order[behind]].pos - p).head<2>().squaredNorm() >= span2) break;
-    }
-    Vec3 d = P[order[ahead]].pos - P[order[behind]].pos;
-    d.z() = 0.0;
-    if (d.norm() >= span_m) dir[order[k]] = d.normalized();
-  }
-  return dir;
-}
 
 int countBranches(const std::vector<Point3>& pts, const Point3& centre, const NodeConfig& cfg) {
   PointGrid grid(pts, 5.0);
@@ -252,6 +187,14 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
     if (is_wide) *is_wide = b2 > b1;
     return std::max(b1, b2);
   };
+  // At a candidate node both rings are always tried (a handful of tests, not one per point).
+  auto branchesNode = [&](const Point3& c, Scratch& s, bool* is_wide) {
+    const int b1 = branchesAt(grid, pts, c, cfg, s, nullptr);
+    const int b2 =
+        use_wide && b1 < cfg.min_branches ? branchesAt(grid, pts, c, wide, s, nullptr) : 0;
+    if (is_wide) *is_wide = b2 > b1;
+    return std::max(b1, b2);
+  };
 
   // 1. Hollow-cylinder test of every point (independent -> parallel, deterministic).
   std::vector<int> nbranch(n, 0);
@@ -322,9 +265,17 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
     std::sort(comps.back().begin(), comps.back().end());
   }
 
-  // 4. One node per group: median of its votes (robust centre), then the crossing of the arms
-  //    seen from there.
+  // 4. One node per group: median of its votes (robust centre), optionally (refine_centre) the
+  //    crossing of the arms seen from there.
   Scratch s;
+  double median_votes = 0.0;
+  {
+    std::vector<double> sizes;
+    for (const auto& comp : comps)
+      if (static_cast<int>(comp.size()) >= cfg.min_node_points)
+        sizes.push_back(static_cast<double>(comp.size()));
+    if (!sizes.empty()) median_votes = median(sizes);
+  }
   std::vector<Point3> centres;
   std::vector<std::vector<int>> owned;
   for (const auto& comp : comps) {
@@ -337,10 +288,13 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
     }
     Point3 c(median(xs), median(ys), median(zs));
     // The node must pass the test itself: a fragment of intersection points on an arm (noise)
-    // sees only the two ways of its street from its median.
+    // sees only the two ways of its street from its median. A strongly voted group need not.
     bool w0 = false;
-    const int b0 = branchesBoth(c, s, &w0);
-    if (b0 < cfg.min_branches) continue;
+    const int b0 = branchesNode(c, s, &w0);
+    if (b0 < cfg.min_branches &&
+        !(cfg.strong_vote_factor > 0.0 &&
+          static_cast<double>(comp.size()) >= cfg.strong_vote_factor * median_votes))
+      continue;
     logDebug("node: vote median (" + std::to_string(c.x()) + ", " + std::to_string(c.y()) +
              ") from " + std::to_string(comp.size()) + " votes, " + std::to_string(b0) +
              " branches");
@@ -349,7 +303,7 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
       // or wide junctions can mislead the line fit).
       Point3 cr;
       crossingFrom(grid, pts, axes, c, w0 ? wide : cfg, s, 3, cfg.inner_radius_m, cr);
-      if (branchesBoth(cr, s, nullptr) >= b0) c = cr;
+      if (branchesNode(cr, s, nullptr) >= b0) c = cr;
     }
     centres.push_back(c);
     owned.push_back(comp);
@@ -365,8 +319,11 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
     std::size_t kept = 0;
     for (std::size_t k = 0; k < centres.size(); ++k)
       if (static_cast<double>(owned[k].size()) >= need) {
-        centres[kept] = centres[k];
-        owned[kept++] = std::move(owned[k]);
+        if (kept != k) {  // a self-move would empty the vote list
+          centres[kept] = centres[k];
+          owned[kept] = std::move(owned[k]);
+        }
+        ++kept;
       }
     centres.resize(kept);
     owned.resize(kept);
@@ -392,7 +349,7 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
     for (int q : owned[k])
       res.node_of_point[static_cast<std::size_t>(ipts[static_cast<std::size_t>(q)])] = node;
   }
-  for (const auto& c : res.nodes) res.branches.push_back(branchesBoth(c, s, nullptr));
+  for (const auto& c : res.nodes) res.branches.push_back(branchesNode(c, s, nullptr));
   return res;
 }
 

@@ -193,5 +193,54 @@ TEST(Intersections, ParallelStreetDoesNotMakeNodes) {
   EXPECT_EQ(r.nodes.size(), 2u);
 }
 
+TEST(Intersections, IntersectionPointsAtTheCrossingBelongToItsNode) {
+  // Every kept node keeps its votes: the intersection points around the crossing are assigned
+  // to it (node_of_point), none is left without a node.
+  const Traces tr = makeTraces(plusRoads(), 0.5, 5);
+  const NodeConfig cfg;
+  const auto ds = downsample(positions(tr), cfg.downsample_m);
+  const auto r = detectIntersections(ds.points, cfg);
+  ASSERT_EQ(r.nodes.size(), 1u);
+  int near = 0;
+  for (std::size_t i = 0; i < ds.points.size(); ++i) {
+    if (!r.is_intersection[i] || ds.points[i].head<2>().norm() > 5.0) continue;
+    ++near;
+    EXPECT_EQ(r.node_of_point[i], 0) << "point " << ds.points[i].transpose();
+  }
+  EXPECT_GT(near, 5);
+}
+
+/// Two divided roads (one-way carriageways of `lanes` lanes, centre lines `gap` apart) crossing
+/// at the origin, with left and right turns between all carriageways.
+Traces dividedCrossing(double gap, int lanes, std::uint64_t seed) {
+  const double h = 0.5 * gap, L = 150.0;
+  Traces tr = multiLane({{line({-L, -h, 0}, {L, -h, 0}), false}, {line({L, h, 0}, {-L, h, 0}), false},
+                         {line({h, -L, 0}, {h, L, 0}), false}, {line({-h, L, 0}, {-h, -L, 0}), false}},
+                        lanes, 0.5, seed, 2);
+  // Right and left turns from each carriageway, as Bezier-like three-point paths.
+  std::vector<Road> turns;
+  for (int k = 0; k < 4; ++k) {
+    const double a = k * M_PI / 2, c = std::cos(a), s = std::sin(a);
+    auto rot = [&](double x, double y) { return Point3(c * x - s * y, s * x + c * y, 0); };
+    // Arriving eastbound on y = -h from the west.
+    turns.push_back({{rot(-60, -h), rot(-h - 6, -h), rot(-h, -h - 6), rot(-h, -60)}, false});  // right
+    turns.push_back({{rot(-60, -h), rot(h - 6, -h), rot(h, -h + 6), rot(h, 60)}, false});       // left
+  }
+  append(tr, makeTraces(turns, 0.5, seed + 50, 1.0, 2));
+  return tr;
+}
+
+TEST(Intersections, CrossingOfTwoDividedRoadsIsOneNode) {
+  // Carriageway centre lines 16 m apart (two lanes each): the junction box is ~30 m wide. Each
+  // of the four carriageway crossings (+-8, +-8) collects votes of its own, 10-16 m apart (with
+  // merge_distance_m 8 this gave 4 nodes); merged, the node lies at the strongest crossing's
+  // vote median, inside the box (6.6 / 7.4 m from its centre for these seeds).
+  for (std::uint64_t seed : {1u, 2u}) {
+    const auto r = detectWithAxes(dividedCrossing(16.0, 2, seed));
+    ASSERT_EQ(r.nodes.size(), 1u) << "seed " << seed;
+    EXPECT_LT(r.nodes[0].head<2>().norm(), 10.0) << "seed " << seed << ": " << r.nodes[0].transpose();
+  }
+}
+
 }  // namespace
 }  // namespace slamroute::roadgraph

@@ -37,11 +37,21 @@ struct NodeConfig {
   double vote_max_m = 25.0;          ///< crossings farther from the point are not accepted [m]
   double vote_radius_m = 3.0;        ///< vote density radius (seed order) [m]
   double node_radius_m = 10.0;       ///< votes within this of a seed vote form its node [m]
-  double merge_distance_m = 8.0;     ///< weaker nodes this close to a stronger one are absorbed [m]
+  /// Weaker nodes this close to a stronger one are absorbed [m]. 18 m: the carriageway crossings
+  /// of two divided roads (or the corners of a big junction box) collect votes of their own
+  /// 10-16 m apart; separate junctions that close become one node (bench/RESULTS.md).
+  double merge_distance_m = 18.0;
   /// Candidates with fewer votes than this fraction of the median candidate's are dropped.
   double min_vote_fraction = 0.25;
   int min_node_points = 3;           ///< groups with fewer votes are discarded as noise
-  bool refine_centre = true;         ///< move the node to the least-squares crossing of its arms
+  /// A group with at least this many times the median group's votes is a node even when its
+  /// centre sees < min_branches (big junctions whose turning traffic links the arms in both
+  /// rings around the centre, while the points voting for it see them apart) [ratio]; 0 = off.
+  double strong_vote_factor = 1.5;
+  /// Move the node to the least-squares crossing of its arms seen from the vote median. Off: at big
+  /// junctions the arms seen from one spot include links of the junction box and pull the node
+  /// metres off, while the median of hundreds of votes is stable (Bologna F1 +0.017).
+  bool refine_centre = false;
 };
 template <class V>
 void visitFields(V& v, NodeConfig& c) {
@@ -82,6 +92,9 @@ void visitFields(V& v, NodeConfig& c) {
   v.field("min_vote_fraction", c.min_vote_fraction,
           "nodes need this fraction of the median node's centre votes (0 = off)");
   v.field("min_node_points", c.min_node_points, "centre votes needed for a node");
+  v.field("strong_vote_factor", c.strong_vote_factor,
+          "groups with this many times the median group's votes are nodes even when their centre "
+          "sees too few branches (0 = off) [ratio]");
   v.field("refine_centre", c.refine_centre, "node at least-squares crossing of its arms");
 }
 
