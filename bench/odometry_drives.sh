@@ -3,6 +3,7 @@
 # "Odometry" > "Accuracy"). Usage: bench/odometry_drives.sh [BUILD_DIR] [OUT_DIR]
 #   route1k: 1.2 km through building-lined and open streets; loop: one block, back to its start;
 #   city: the three 7 km routes of `slamroute run` (out/default_city/routes, if it exists).
+# Drives record wheel odometry + gyro (odometry.csv); "lidar_only" rows ignore it.
 # Prints one Markdown row per evaluation. Takes ~15 min on 2 cores (~45 min with the city).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -10,15 +11,19 @@ build="${1:-$here/../build}"
 out="${2:-/tmp/slamroute_odometry_bench}"
 bin="$build/cli/slamroute"
 mkdir -p "$out"
-printf 'simulate:\n  lidar:\n    range_sigma_m: 0.0\n    dropout_prob: 0.0\n' > "$out/noisefree.yaml"
+# Noise-free: LiDAR and wheel odometry + gyro without noise.
+printf 'simulate:\n  lidar:\n    range_sigma_m: 0.0\n    dropout_prob: 0.0\n  drive:\n    odometry_scale_sigma: 0.0\n    odometry_speed_noise_mps: 0.0\n    gyro_bias_sigma_deg_s: 0.0\n    gyro_noise_deg_s: 0.0\n' > "$out/noisefree.yaml"
+printf 'evaluate:\n  use_odometry: false\n' > "$out/lidar_only.yaml"
+printf 'evaluate:\n  loop_closure: false\n' > "$out/nolc.yaml"
+printf 'evaluate:\n  loop_closure: false\n  use_odometry: false\n' > "$out/nolc_lidar_only.yaml"
 
 drive() {  # name route [extra args]
   local name=$1 route=$2; shift 2
   [ -f "$out/$name/groundtruth.tum" ] || "$bin" --log-level warn "$@" drive --route "$route" --out "$out/$name"
 }
-evaluate() {  # drive eval [extra args]
+evaluate() {  # drive eval [global args] (e.g. --config F)
   local d=$1 e=$2; shift 2
-  "$bin" --log-level warn evaluate --drive "$out/$d" --out "$out/$e" "$@" > /dev/null
+  "$bin" --log-level warn "$@" evaluate --drive "$out/$d" --out "$out/$e" "$@" > /dev/null
   python3 - "$out/$e/metrics.json" "$e" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
@@ -38,14 +43,16 @@ drive drive1k_clean "$here/routes/route1k.json" --config "$out/noisefree.yaml"
 drive drive1k_noisy "$here/routes/route1k.json"
 drive loop_noisy "$here/routes/loop.json"
 evaluate drive1k_clean route1k_noisefree
-evaluate drive1k_noisy route1k_noisy_no_loop_closure --no-loop-closure
-evaluate loop_noisy loop_noisy_no_loop_closure --no-loop-closure
+evaluate drive1k_clean route1k_noisefree_lidar_only --config "$out/lidar_only.yaml"
+evaluate drive1k_noisy route1k_noisy_no_loop_closure --config "$out/nolc.yaml"
+evaluate drive1k_noisy route1k_noisy_lidar_only_no_loop_closure --config "$out/nolc_lidar_only.yaml"
+evaluate loop_noisy loop_noisy_no_loop_closure --config "$out/nolc.yaml"
 evaluate loop_noisy loop_noisy
 city="$here/../out/default_city/routes"
 if [ -d "$city" ] && [ "${SKIP_CITY:-0}" != 1 ]; then
   for p in qlearning random postman; do
     drive "city_$p" "$city/$p.json"
     evaluate "city_$p" "city_${p}"
-    evaluate "city_$p" "city_${p}_no_loop_closure" --no-loop-closure
+    evaluate "city_$p" "city_${p}_no_loop_closure" --config "$out/nolc.yaml"
   done
 fi

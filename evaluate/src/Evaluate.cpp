@@ -195,8 +195,16 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   std::optional<Pose3> V0;
   if (p0.size() == 2) V0 = p0[0].gt.inverse() * p0[1].gt;
 
+  // Wheel odometry + gyro, when the drive recorded them (slamroute drive does).
+  WheelOdometry odometry;
+  const fs::path odo_file = drive / drive_files::kOdometry;
+  if (cfg.use_odometry && fs::exists(odo_file)) odometry = readOdometryCsv(odo_file);
+  if (cfg.use_odometry && odometry.empty())
+    logInfo("evaluate: no " + odo_file.string() + ": predicting motion with a constant-velocity model");
+
   Progress progress("evaluate: SLAM", source.size());
-  SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0);
+  SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
+                            odometry.empty() ? nullptr : &odometry);
   progress.finish();
   writeTum(out / "estimate.tum", slam.trajectory);
   writePcd(out / "map.pcd", slam.map);
@@ -205,6 +213,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   nlohmann::json j = trajectoryJson(m);
   j["initial_pose"] =
       "ground-truth pose of the first scan and motion to the second (estimate is in the world frame)";
+  j["motion_prior"] = odometry.empty() ? "constant velocity" : "wheel odometry + gyro (odometry.csv)";
   j["scans"] = slam.trajectory.size();
   j["scan_stride"] = cfg.scan_stride;
   j["keyframes"] = slam.keyframes;

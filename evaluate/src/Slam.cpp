@@ -130,12 +130,18 @@ struct LidarSlam::Impl {
   bool check_motion = true;                ///< apply the dynamics check (off after a relocalisation,
                                            ///< whose jump makes the next prediction unreliable)
   double inlier_ref = 0;                   ///< recent scan-to-map inlier level (0: none)
+  WheelOdometry odometry;                  ///< wheel speed + gyro (empty: constant velocity)
   StageTimes times;
 
-  /// Constant-velocity prediction of the pose at time t (frames may be unevenly spaced).
+  /// Prediction of the pose at time t (frames may be unevenly spaced): the wheel odometry's
+  /// planar motion (height from the velocity) when there is odometry, else constant velocity.
   Pose3 predict(double t) const {
     if (frames.empty()) return T_world_last;
-    return T_world_last * scaledMotion(velocity, (t - frames.back().t) / velocity_dt);
+    const Pose3 v = scaledMotion(velocity, (t - frames.back().t) / velocity_dt);
+    if (odometry.empty()) return T_world_last * v;
+    Pose3 m = odometry.motion(frames.back().t, t);
+    if (have_velocity) m.translation().z() = v.translation().z();
+    return T_world_last * m;
   }
 
   void record(double t, const Pose3& T_world, FrameStatus s, double min_eig) {
@@ -448,7 +454,9 @@ struct LidarSlam::Impl {
     int inliers = m.inliers;
     check_motion = true;
     if ((failed || inlier_drop) && !last_failed) dense_until_t = scan.t + cfg.dense_after_failure_s;
-    if ((failed || inlier_drop || !have_velocity) && cfg.relocalize) {
+    // The search needs edges: in a featureless stretch (open field) it cannot succeed.
+    const bool searchable = static_cast<int>(src_edges.size()) >= cfg.min_edge_features;
+    if ((failed || inlier_drop || !have_velocity) && cfg.relocalize && searchable) {
       Pose3 T_reloc;
       if (relocalize(pred, src_edges, src_planes, mo, m.inliers, T_reloc, inliers)) {
         T_world = T_reloc;
@@ -551,7 +559,10 @@ void LidarSlam::setInitialMotion(const Pose3& T_first_second, double dt_s) {
 FrameStatus LidarSlam::addScan(const Scan& scan) { return impl_->addScan(scan); }
 FrameStatus LidarSlam::addMissing(double t) { return impl_->addUnusable(t, FrameStatus::Missing); }
 Pose3 LidarSlam::currentPose() const { return impl_->T_world_last; }
+void LidarSlam::setOdometry(WheelOdometry odometry) { impl_->odometry = std::move(odometry); }
 double LidarSlam::turnRateDegPerS() const {
+  if (!impl_->odometry.empty() && !impl_->frames.empty())
+    return std::abs(impl_->odometry.yawRate(impl_->frames.back().t)) * 180.0 / std::numbers::pi;
   if (!impl_->have_velocity) return 0.0;
   return rotationAngle(impl_->velocity) / impl_->velocity_dt * 180.0 / std::numbers::pi;
 }
@@ -565,8 +576,9 @@ SlamResult LidarSlam::finish() { return impl_->finish(); }
 
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress,
-                   const std::optional<Pose3>& T_first_second) {
+                   const std::optional<Pose3>& T_first_second, const WheelOdometry* odometry) {
   LidarSlam slam(cfg, source.spec(), T_world_first);
+  if (odometry && cfg.use_odometry) slam.setOdometry(*odometry);
   if (T_first_second && source.size() > 1)
     slam.setInitialMotion(*T_first_second, source.time(1) - source.time(0));
   const std::size_t n = source.size();

@@ -66,6 +66,7 @@ DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
 
   writeTum(dir / drive_files::kGroundTruth, rec.groundtruth);
   writeFileAtomic(dir / drive_files::kPoseEdges, poseEdgesCsv(rec));
+  writeOdometryCsv(dir / drive_files::kOdometry, simulateOdometry(rec.groundtruth, cfg.drive, opts.seed));
 
   std::vector<double> times;
   times.reserve(rec.groundtruth.size());

@@ -2,7 +2,9 @@
 // at the default stride of 2). runSlam must take every scan while turning and keep the heading.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "SyntheticScene.hpp"
 #include "slamroute/evaluate/Metrics.hpp"
@@ -16,7 +18,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 /// 10 Hz: 2 s straight at 3 m/s, a 2 s U-turn of radius 1.5 m (2.4 m/s), 2 s straight back.
 class UTurnSource : public ScanSource {
  public:
-  UTurnSource() : scene_(test::cityScene(100.0)) {
+  explicit UTurnSource(test::Scene scene = test::cityScene(100.0)) : scene_(std::move(scene)) {
     spec_.channels = 32;
     spec_.horizontal_samples = 900;
   }
@@ -69,6 +71,53 @@ TEST(Turn, FixedStrideTakesHalfTheScans) {
   cfg.dense_after_failure_s = 0;
   const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
   EXPECT_EQ(r.trajectory.size(), 30u);
+}
+
+/// Wheel odometry + gyro of the U-turn (exact): speed and yaw rate of each 0.1 s interval.
+WheelOdometry uTurnOdometry() {
+  std::vector<OdometrySample> s;
+  for (std::size_t i = 0; i + 1 < 60; ++i) {
+    const Pose3 d = UTurnSource::pose(i).inverse() * UTurnSource::pose(i + 1);
+    s.push_back({0.1 * static_cast<double>(i), d.translation().norm() / 0.1,
+                 std::atan2(d.rotation()(1, 0), d.rotation()(0, 0)) / 0.1});
+  }
+  return WheelOdometry(std::move(s));
+}
+
+// An open field: the LiDAR sees only the flat ground, which fixes height, roll and pitch but
+// nothing of x, y and yaw. Without odometry the estimate drives on straight through the U-turn;
+// with the wheel odometry + gyro it turns with the car.
+TEST(Turn, UTurnInAnOpenFieldFollowsTheWheelOdometry) {
+  test::Scene field;  // ground only
+  const UTurnSource src(field);
+  Config cfg;
+  cfg.loop_closure = false;
+  const Pose3 T0 = UTurnSource::pose(0), V0 = T0.inverse() * UTurnSource::pose(1);
+  const SlamResult blind = runSlam(src, cfg, T0, {}, V0);
+  EXPECT_GT(finalYawErrorDeg(blind), 90.0);
+  const WheelOdometry odo = uTurnOdometry();
+  const SlamResult aided = runSlam(src, cfg, T0, {}, V0, &odo);
+  EXPECT_LT(finalYawErrorDeg(aided), 1.0);
+  const auto& last = aided.trajectory.back();  // scan 58 or 59 (stride 2 on the straight)
+  const Vec3 d = last.T_world_body.translation() -
+                 UTurnSource::pose(static_cast<std::size_t>(std::lround(last.t / 0.1))).translation();
+  EXPECT_LT(d.norm(), 0.2) << d.transpose();
+  // use_odometry: false ignores it.
+  cfg.use_odometry = false;
+  EXPECT_GT(finalYawErrorDeg(runSlam(src, cfg, T0, {}, V0, &odo)), 90.0);
+}
+
+// In a street with features the odometry only seeds the registration: the result is as good.
+TEST(Turn, OdometryKeepsTheUTurnInTheCityAccurate) {
+  const UTurnSource src;
+  Config cfg;
+  cfg.loop_closure = false;
+  const WheelOdometry odo = uTurnOdometry();
+  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {},
+                               UTurnSource::pose(0).inverse() * UTurnSource::pose(1), &odo);
+  EXPECT_LT(finalYawErrorDeg(r), 1.0);
+  const Vec3 d = r.trajectory.back().T_world_body.translation() - UTurnSource::pose(59).translation();
+  EXPECT_LT(d.norm(), 0.3) << d.transpose();
 }
 
 }  // namespace

@@ -103,6 +103,35 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
     EXPECT_LE(turn, limit + 1e-6) << "pose " << i;
   }
 
+  // odometry.csv: integrated over the whole drive, the wheel odometry + gyro (1 % scale, gyro
+  // bias, noise) ends within a few metres and degrees of the ground truth's relative motion.
+  const WheelOdometry odo = readOdometryCsv(dir / drive_files::kOdometry);
+  ASSERT_EQ(odo.samples().size() + 1, gt.size());
+  const Pose3 dg = gt.front().T_world_body.inverse() * gt.back().T_world_body;
+  const Pose3 dm = odo.motion(gt.front().t, gt.back().t);
+  const double path = r.driven_m;
+  EXPECT_LT((dm.translation() - dg.translation()).head<2>().norm(), 0.05 * path);
+  EXPECT_LT(Eigen::AngleAxisd(dg.rotation().transpose() * dm.rotation()).angle(), 5.0 * M_PI / 180.0);
+  // Noise-free odometry reproduces each step of the ground truth (to a few cm: in sharp junction
+  // turns the rate-limited heading lets the sensor move slightly sideways, which wheels do not see).
+  simulate::DriveConfig exact;
+  exact.odometry_scale_sigma = exact.odometry_speed_noise_mps = 0;
+  exact.gyro_bias_sigma_deg_s = exact.gyro_noise_deg_s = 0;
+  const WheelOdometry clean = simulate::simulateOdometry(gt, exact, 5);
+  for (std::size_t i = 10; i + 1 < gt.size(); i += 37) {
+    const Pose3 step = gt[i].T_world_body.inverse() * gt[i + 1].T_world_body;
+    const Pose3 m = clean.motion(gt[i].t, gt[i + 1].t);
+    EXPECT_LT((m.translation() - step.translation()).head<2>().norm(), 0.05) << i;
+  }
+  // Same seed, same odometry; another seed, another bias.
+  const auto a1 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
+  const auto a2 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
+  const auto a3 = simulate::simulateOdometry(gt, cfg.drive, 6).samples();
+  ASSERT_EQ(a1.size(), a2.size());
+  for (std::size_t i = 0; i < a1.size(); ++i) ASSERT_EQ(a1[i].yaw_rate_rad_s, a2[i].yaw_rate_rad_s);
+  EXPECT_NE(a1[3].yaw_rate_rad_s, a3[3].yaw_rate_rad_s);
+  EXPECT_NEAR(a1[3].yaw_rate_rad_s, odo.samples()[3].yaw_rate_rad_s, 1e-6);  // file = 7 decimals
+
   const auto j = nlohmann::json::parse(std::ifstream(dir / drive_files::kDriveInfo));
   EXPECT_EQ(j["teleports"].get<int>(), 0);
   EXPECT_EQ(j["frames"].get<std::size_t>(), gt.size());

@@ -85,6 +85,7 @@ struct Config {
   // prediction and keeps the one with the most inliers.
   double map_coarse_nn_m = 3.0;         ///< > 0: coarse scan-to-map stage with this radius first
                                         ///< (not in LeGO-LOAM; stride-2 turns need it) [m]
+  bool use_odometry = true;             ///< predict with the drive's odometry.csv when it has one
   bool relocalize = true;               ///< yaw search when scan-to-map fails
   double relocalize_inlier_drop = 0.5;  ///< ... or when the inliers fall below this share of
                                         ///< the recent inlier level
@@ -123,6 +124,8 @@ struct Config {
 template <class V>
 void visitFields(V& v, Config& c) {
   v.field("scan_stride", c.scan_stride, "use every n-th scan (1 = all, 10 Hz)");
+  v.field("use_odometry", c.use_odometry,
+          "predict the motion between scans from the drive's wheel odometry + gyro (odometry.csv) if present");
   v.field("dense_turn_rate_deg_s", c.dense_turn_rate_deg_s, "every scan above this turn rate, 0 = off [deg/s]");
   v.field("dense_after_failure_s", c.dense_after_failure_s, "every scan this long after a failure [s]");
   v.field("start_s", c.start_s, "evaluate scans from this drive time on [s]");

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "slamroute/core/Odometry.hpp"
 #include "slamroute/core/Scan.hpp"
 #include "slamroute/core/Trajectory.hpp"
 #include "slamroute/evaluate/Config.hpp"
@@ -51,13 +52,18 @@ class LidarSlam {
   /// Motion between the first two scans (body frame of the first), e.g. from wheel odometry or the
   /// ground truth; without it the first scan-to-map step starts from standstill.
   void setInitialMotion(const Pose3& T_first_second, double dt_s);
+  /// Wheel odometry + gyro of the drive (sensor frame axes): predicts the motion between scans
+  /// instead of the constant-velocity model, which carries the estimate through featureless
+  /// stretches (open fields) and turns in them.
+  void setOdometry(WheelOdometry odometry);
   /// Processes one scan; returns its status. Never throws on bad scan content.
   FrameStatus addScan(const Scan& scan);
   /// Records a scan that could not be read (constant-velocity prediction).
   FrameStatus addMissing(double t);
   /// Current pose estimate of the last frame.
   Pose3 currentPose() const;
-  /// Turn rate of the current motion estimate [deg/s] (0 before any motion is known).
+  /// Turn rate [deg/s]: the gyro's at the last frame with odometry, else the current motion
+  /// estimate's (0 before any motion is known).
   double turnRateDegPerS() const;
   /// True while the vehicle turns faster than cfg.dense_turn_rate_deg_s or within
   /// cfg.dense_after_failure_s of a failed or relocalised scan: the caller should then feed every
@@ -72,10 +78,11 @@ class LidarSlam {
 
 /// Runs the pipeline over a scan source: every cfg.scan_stride-th scan, and every scan while the
 /// vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the motion from the
-/// source's scan 0 to scan 1, if known. `progress(done, total)` is called after each scan.
+/// source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when cfg.use_odometry). `progress(done, total)` is called after each scan.
 /// A scan the source cannot produce is recorded as Missing and the run continues.
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress = {},
-                   const std::optional<Pose3>& T_first_second = std::nullopt);
+                   const std::optional<Pose3>& T_first_second = std::nullopt,
+                   const WheelOdometry* odometry = nullptr);
 
 }  // namespace slamroute::evaluate

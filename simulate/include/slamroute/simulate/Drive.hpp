@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "slamroute/core/Scan.hpp"
+#include "slamroute/core/Odometry.hpp"
 #include "slamroute/core/Trajectory.hpp"
 #include "slamroute/simulate/Config.hpp"
 
@@ -91,6 +92,11 @@ struct MapPngOptions {
 };
 std::size_t renderStackedScansPng(const ScanSource& scans, const Trajectory& poses,
                                   const std::filesystem::path& png, const MapPngOptions& o = {});
+
+/// The wheel odometry + gyro a survey car records, from the ground-truth sensor poses: forward
+/// speed and yaw rate per pose interval, with a per-drive speed scale error and gyro bias and
+/// white noise per sample (DriveConfig odometry_* / gyro_*), seeded. Deterministic.
+WheelOdometry simulateOdometry(const Trajectory& groundtruth, const DriveConfig& cfg, std::uint64_t seed);
 
 /// Runs the drive (reads the net and the route, validates, simulates, writes out_dir).
 DriveResult runDrive(const DriveOptions& opts, const Config& cfg);

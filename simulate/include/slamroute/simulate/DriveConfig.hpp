@@ -14,6 +14,11 @@ struct DriveConfig {
       300.0;  ///< SUMO teleports a car stuck this long; for the mapper this is an error [s]
   double min_avg_speed_mps =
       1.0;  ///< the drive fails when the route takes longer than length / this + 300 s [m/s]
+  /// Wheel odometry + gyro recorded with the drive (odometry.csv, from the ground truth):
+  double odometry_scale_sigma = 0.01;     ///< wheel-speed scale error, 1 sigma, one per drive
+  double odometry_speed_noise_mps = 0.05; ///< white speed noise per sample, 1 sigma [m/s]
+  double gyro_bias_sigma_deg_s = 0.05;    ///< yaw-rate bias, 1 sigma, one per drive [deg/s]
+  double gyro_noise_deg_s = 0.1;          ///< white yaw-rate noise per sample, 1 sigma [deg/s]
 };
 
 template <class V>
@@ -28,6 +33,12 @@ void visitFields(V& v, DriveConfig& c) {
           "SUMO teleport time; a mapper teleport is an error [s]");
   v.field("min_avg_speed_mps", c.min_avg_speed_mps,
           "give up when slower than this on average (+300 s) [m/s]");
+  v.field("odometry_scale_sigma", c.odometry_scale_sigma,
+          "wheel odometry speed scale error, 1 sigma, one per drive (0.01 = 1 %)");
+  v.field("odometry_speed_noise_mps", c.odometry_speed_noise_mps,
+          "wheel odometry white speed noise, 1 sigma [m/s]");
+  v.field("gyro_bias_sigma_deg_s", c.gyro_bias_sigma_deg_s, "gyro yaw-rate bias, 1 sigma, one per drive [deg/s]");
+  v.field("gyro_noise_deg_s", c.gyro_noise_deg_s, "gyro white yaw-rate noise, 1 sigma [deg/s]");
 }
 
 }  // namespace slamroute::simulate

@@ -1,0 +1,100 @@
+// Wheel odometry + gyro: integration and the odometry.csv format.
+#include "slamroute/core/Odometry.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute {
+
+WheelOdometry::WheelOdometry(std::vector<OdometrySample> samples) : samples_(std::move(samples)) {
+  for (std::size_t i = 0; i < samples_.size(); ++i) {
+    const auto& s = samples_[i];
+    if (!std::isfinite(s.t) || !std::isfinite(s.speed_mps) || !std::isfinite(s.yaw_rate_rad_s))
+      throw std::invalid_argument("odometry sample " + std::to_string(i) + " is not finite");
+    if (i > 0 && !(s.t > samples_[i - 1].t))
+      throw std::invalid_argument("odometry sample " + std::to_string(i) + ": times must increase");
+  }
+}
+
+double WheelOdometry::yawRate(double t) const {
+  if (samples_.empty()) return 0.0;
+  auto it = std::upper_bound(samples_.begin(), samples_.end(), t,
+                             [](double v, const OdometrySample& s) { return v < s.t; });
+  if (it != samples_.begin()) --it;
+  return it->yaw_rate_rad_s;
+}
+
+Pose3 WheelOdometry::motion(double t0, double t1) const {
+  Pose3 M = Pose3::Identity();
+  if (samples_.empty() || !(t1 > t0)) return M;
+  double x = 0, y = 0, th = 0;
+  // Index of the sample in force at t0.
+  std::size_t k = static_cast<std::size_t>(
+      std::upper_bound(samples_.begin(), samples_.end(), t0,
+                       [](double v, const OdometrySample& s) { return v < s.t; }) -
+      samples_.begin());
+  k = k > 0 ? k - 1 : 0;
+  double t = t0;
+  while (t < t1) {
+    const double next = k + 1 < samples_.size() ? std::max(t, samples_[k + 1].t) : t1;
+    const double end = std::min(t1, next);
+    const double dt = end - t;
+    if (dt > 0) {
+      const double w = samples_[k].yaw_rate_rad_s, v = samples_[k].speed_mps;
+      const double mid = th + 0.5 * w * dt;
+      x += v * std::cos(mid) * dt;
+      y += v * std::sin(mid) * dt;
+      th += w * dt;
+    }
+    t = end;
+    if (k + 1 < samples_.size() && t >= samples_[k + 1].t) ++k;
+  }
+  M.linear() = Eigen::AngleAxisd(th, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  M.translation() = Eigen::Vector3d(x, y, 0.0);
+  return M;
+}
+
+WheelOdometry readOdometryCsv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open odometry file");
+  std::string line;
+  std::vector<OdometrySample> out;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty() || line[0] == '#' || line[0] == 't') continue;  // comment or header
+    OdometrySample s;
+    char c1 = 0, c2 = 0;
+    std::istringstream ls(line);
+    if (!(ls >> s.t >> c1 >> s.speed_mps >> c2 >> s.yaw_rate_rad_s) || c1 != ',' || c2 != ',')
+      throw std::runtime_error(path.string() + ":" + std::to_string(n) +
+                               ": expected t,speed_mps,yaw_rate_rad_s");
+    out.push_back(s);
+  }
+  try {
+    return WheelOdometry(std::move(out));
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
+void writeOdometryCsv(const std::filesystem::path& path, const WheelOdometry& odo) {
+  std::ostringstream os;
+  os << "t,speed_mps,yaw_rate_rad_s\n";
+  char buf[96];
+  for (const auto& s : odo.samples()) {
+    std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f\n", s.t, s.speed_mps, s.yaw_rate_rad_s);
+    os << buf;
+  }
+  writeFileAtomic(path, os.str());
+}
+
+}  // namespace slamroute

@@ -1,0 +1,62 @@
+// Wheel odometry + gyro: integration against known motions, the odometry.csv format.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "TestUtil.hpp"
+#include "slamroute/core/Odometry.hpp"
+
+namespace slamroute {
+namespace {
+
+WheelOdometry constant(double v, double w, double dt, int n) {
+  std::vector<OdometrySample> s;
+  for (int i = 0; i < n; ++i) s.push_back({dt * i, v, w});
+  return WheelOdometry(std::move(s));
+}
+
+TEST(Odometry, StraightAtConstantSpeed) {
+  const WheelOdometry o = constant(10.0, 0.0, 0.1, 20);
+  const Pose3 m = o.motion(0.25, 1.25);  // 1 s, across sample boundaries
+  EXPECT_NEAR(m.translation().x(), 10.0, 1e-9);
+  EXPECT_NEAR(m.translation().y(), 0.0, 1e-9);
+  EXPECT_NEAR(o.motion(1.0, 1.0).translation().norm(), 0.0, 1e-12);
+}
+
+TEST(Odometry, FullCircleClosesAndQuarterHasTheRadius) {
+  // v = 10 m/s, one turn in 20 s: radius 10 / (2 pi / 20) = 31.83 m.
+  const double w = 2 * std::numbers::pi / 20.0;
+  const WheelOdometry o = constant(10.0, w, 0.1, 200);
+  const Pose3 full = o.motion(0.0, 20.0);
+  EXPECT_NEAR(full.translation().norm(), 0.0, 1e-6);
+  const Pose3 quarter = o.motion(0.0, 5.0);  // left turn: ends at (r, r), heading +90 deg
+  const double r = 10.0 / w;
+  EXPECT_NEAR(quarter.translation().x(), r, 1e-3 * r);
+  EXPECT_NEAR(quarter.translation().y(), r, 1e-3 * r);
+  EXPECT_NEAR(std::atan2(quarter.rotation()(1, 0), quarter.rotation()(0, 0)), std::numbers::pi / 2, 1e-9);
+  EXPECT_NEAR(o.yawRate(3.33), w, 1e-12);
+}
+
+TEST(Odometry, CsvRoundTripAndBadFiles) {
+  const auto dir = test::tempDir("odometry");
+  const WheelOdometry o({{0.0, 1.5, 0.01}, {0.1, 1.6, -0.02}, {0.2, 1.7, 0.0}});
+  writeOdometryCsv(dir / "odometry.csv", o);
+  const WheelOdometry r = readOdometryCsv(dir / "odometry.csv");
+  ASSERT_EQ(r.samples().size(), 3u);
+  EXPECT_NEAR(r.samples()[1].speed_mps, 1.6, 1e-9);
+  EXPECT_NEAR(r.samples()[1].yaw_rate_rad_s, -0.02, 1e-9);
+  test::writeText(dir / "bad.csv", "t,speed_mps,yaw_rate_rad_s\n0,1,0\n0.1,x,0\n");
+  try {
+    readOdometryCsv(dir / "bad.csv");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv:3"), std::string::npos) << e.what();
+  }
+  test::writeText(dir / "order.csv", "0.1,1,0\n0.1,1,0\n");
+  EXPECT_THROW(readOdometryCsv(dir / "order.csv"), std::runtime_error);
+  EXPECT_THROW(readOdometryCsv(dir / "missing.csv"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace slamroute
