@@ -69,6 +69,8 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
         {"streets", st.streets},
         {"one_way_streets", st.one_way_streets},
         {"unknown_direction_streets", st.unknown_direction_streets},
+        {"merged_end_pairs", st.merged_end_pairs},
+        {"dropped_fragments", st.dropped_fragments},
         {"seconds", st.seconds}}},
       {"weights",
        {{"depth_index", in.depth_index.string()},

@@ -40,6 +40,7 @@ struct Street {
   Polyline centre;           ///< ordered A -> B, without node positions
   int a = -1, b = -1;        ///< end points (subset indices)
   int u = -1, v = -1;        ///< node ids (end nodes appended after intersections)
+  int comp = -1;             ///< street cluster label
 };
 
 /// Arc-length position of the projection of p on a polyline.
@@ -84,6 +85,49 @@ void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::
       }
     });
   }
+}
+
+/// Dead ends within `radius` of each other (and at one height) become one node at their mean:
+/// two streets whose ends nearly touch meet there, e.g. at a corner no survey vehicle drove
+/// round (each street then looks like a dead end). Streets left with both ends on one node are
+/// dropped; end nodes that lose all streets stay and are dropped later as isolated.
+void mergeNearbyEnds(std::vector<Point3>& nodes, std::size_t n_inter, double radius, double half_h,
+                     std::vector<Street>& streets, GraphBuildStats& st) {
+  if (radius <= 0 || nodes.size() <= n_inter + 1) return;
+  std::vector<std::size_t> root(nodes.size());
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (std::size_t i = n_inter; i < nodes.size(); ++i)
+    for (std::size_t j = i + 1; j < nodes.size(); ++j)
+      if ((nodes[i] - nodes[j]).head<2>().norm() <= radius &&
+          std::abs(nodes[i].z() - nodes[j].z()) <= half_h)
+        root[find(j)] = find(i);
+  std::vector<Point3> sum(nodes.size(), Point3::Zero());
+  std::vector<int> cnt(nodes.size(), 0);
+  for (std::size_t i = n_inter; i < nodes.size(); ++i) {
+    sum[find(i)] += nodes[i];
+    ++cnt[find(i)];
+  }
+  for (std::size_t i = n_inter; i < nodes.size(); ++i)
+    if (find(i) == i && cnt[i] > 1) {
+      nodes[i] = sum[i] / cnt[i];
+      st.dead_ends -= static_cast<std::size_t>(cnt[i] - 1);
+      ++st.merged_end_pairs;
+    }
+  std::vector<Street> kept;
+  for (auto& s : streets) {
+    s.u = static_cast<int>(find(static_cast<std::size_t>(s.u)));
+    s.v = static_cast<int>(find(static_cast<std::size_t>(s.v)));
+    if (s.u == s.v) {
+      ++st.dropped_fragments;
+      continue;
+    }
+    kept.push_back(std::move(s));
+  }
+  streets = std::move(kept);
 }
 
 }  // namespace
@@ -211,18 +255,23 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
     };
     s.u = na >= 0 ? na : endNode(s.centre.front());
     s.v = nb >= 0 ? nb : endNode(s.centre.back());
-    street_of_comp[static_cast<std::size_t>(c)] = static_cast<int>(streets.size());
+    s.comp = c;
     streets.push_back(std::move(s));
   }
+  mergeNearbyEnds(nodes, n_inter, ec.end_merge_m, half_h, streets, st);
   st.streets = streets.size();
+  for (std::size_t k = 0; k < streets.size(); ++k)
+    street_of_comp[static_cast<std::size_t>(streets[k].comp)] = static_cast<int>(k);
 
   // Full polylines node u -> node v.
   std::vector<Polyline> polys;
   for (const auto& s : streets) {
     Polyline pl;
-    if (s.u < static_cast<int>(n_inter)) pl.push_back(nodes[static_cast<std::size_t>(s.u)]);
+    // Intersections, and dead ends moved by a merge, are not on the centreline yet.
+    const Point3 &nu = nodes[static_cast<std::size_t>(s.u)], &nv = nodes[static_cast<std::size_t>(s.v)];
+    if ((nu - s.centre.front()).norm() > 0.5) pl.push_back(nu);
     pl.insert(pl.end(), s.centre.begin(), s.centre.end());
-    if (s.v < static_cast<int>(n_inter)) pl.push_back(nodes[static_cast<std::size_t>(s.v)]);
+    if ((nv - s.centre.back()).norm() > 0.5) pl.push_back(nv);
     if (pl.size() < 2) pl.push_back(pl.back());
     polys.push_back(std::move(pl));
   }
@@ -240,16 +289,25 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
     return pa.vehicle != pb.vehicle ? pa.vehicle < pb.vehicle : pa.t < pb.t;
   });
   std::vector<int> fwd(streets.size(), 0), bwd(streets.size(), 0);
-  auto closeRun = [&](int s, std::size_t first, std::size_t last) {
-    if (s < 0 || first == last) return;
+  // A run counts in each direction it progresses along the street by `need`: a vehicle that
+  // drives into a dead end and turns round there travels it both ways in one run.
+  auto closeRun = [&](int s, std::size_t k_first, std::size_t k_last) {
+    if (s < 0 || k_first == k_last) return;
     const auto& pl = polys[static_cast<std::size_t>(s)];
     const double len = polylineLength(pl);
     const double need = std::min(ec.min_run_m, 0.4 * len);
-    const double ds_ = arcPosition(pl, traces.points[last].pos) - arcPosition(pl, traces.points[first].pos);
-    if (ds_ > need) ++fwd[static_cast<std::size_t>(s)];
-    if (ds_ < -need) ++bwd[static_cast<std::size_t>(s)];
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, rise = 0.0, fall = 0.0;
+    for (std::size_t k = k_first; k <= k_last; ++k) {
+      const double a = arcPosition(pl, traces.points[order[k]].pos);
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+      rise = std::max(rise, a - lo);
+      fall = std::max(fall, hi - a);
+    }
+    if (rise > need) ++fwd[static_cast<std::size_t>(s)];
+    if (fall > need) ++bwd[static_cast<std::size_t>(s)];
   };
-  std::size_t run_first = order.empty() ? 0 : order[0];
+  std::size_t run_first = 0;
   for (std::size_t k = 1; k <= order.size(); ++k) {
     const std::size_t prev = order[k - 1];
     const bool breaks =
@@ -258,8 +316,8 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
         traces.points[order[k]].t - traces.points[prev].t > ec.max_gap_s ||
         street_of_point[order[k]] != street_of_point[prev];
     if (!breaks) continue;
-    closeRun(street_of_point[prev], run_first, prev);
-    if (k < order.size()) run_first = order[k];
+    closeRun(street_of_point[prev], run_first, k - 1);
+    run_first = k;
   }
 
   // Assemble the RoadGraph; nodes without edges are dropped (a planner must reach every node).

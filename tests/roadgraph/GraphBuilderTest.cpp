@@ -80,6 +80,45 @@ TEST(GraphBuilder, OneWayStreetIsOneDirectedEdge) {
   EXPECT_EQ(east, 1);
 }
 
+TEST(GraphBuilder, DeadEndDrivenInAndBackInOneRunIsTwoWay) {
+  // The east arm's only vehicle drives to its end, turns round and comes back: one run, both
+  // directions of travel, so the dead end is not a one-way trap.
+  std::vector<Road> roads = {{line({-100, 0, 0}, {0, 0, 0})},
+                             {{{0, 0, 0}, {100, 0, 0}, {0, 0, 0}}, /*two_way=*/false},
+                             {line({0, -100, 0}, {0, 100, 0})}};
+  const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3), Config{});
+  EXPECT_EQ(r.stats.one_way_streets, 0u);
+  EXPECT_EQ(r.graph.edges.size(), 8u);
+}
+
+TEST(GraphBuilder, CornerNoVehicleDroveRoundKeepsItsStreetsConnected) {
+  // The east arm ends 12 m short of a street running north that no vehicle entered from the
+  // arm: two dead ends 13 m apart are one corner node.
+  const std::vector<Road> roads = {{line({-100, 0, 0}, {100, 0, 0})},
+                                   {line({0, -100, 0}, {0, 100, 0})},
+                                   {line({108, 10, 0}, {108, 200, 0})}};
+  const auto tr = makeTraces(roads, 0.5, 3);
+  const auto r = buildRoadGraph(tr, Config{});
+  EXPECT_EQ(r.stats.merged_end_pairs, 1u);
+  EXPECT_EQ(r.stats.dead_ends, 5u);  // west, south, north, top of the north street, corner
+  EXPECT_EQ(countStreets(r.graph), 5u);
+  int corner = -1;
+  for (std::size_t n = 0; n < r.graph.nodes.size(); ++n) {
+    int deg = 0;
+    for (const auto& e : r.graph.edges) deg += (e.u == static_cast<int>(n)) + (e.v == static_cast<int>(n));
+    if (r.node_is_end[n] && deg == 4) corner = static_cast<int>(n);
+  }
+  ASSERT_GE(corner, 0) << "the corner node joins two two-way streets";
+  EXPECT_NEAR(r.graph.nodes[static_cast<std::size_t>(corner)].pos.x(), 104.0, 5.0);
+  EXPECT_NEAR(r.graph.nodes[static_cast<std::size_t>(corner)].pos.y(), 5.0, 5.0);
+
+  Config off;
+  off.edges.end_merge_m = 0.0;
+  const auto apart = buildRoadGraph(tr, off);
+  EXPECT_EQ(apart.stats.merged_end_pairs, 0u);
+  EXPECT_EQ(apart.stats.dead_ends, 6u);
+}
+
 TEST(GraphBuilder, OverpassStreetPassesUnderTheBridge) {
   Polyline bridge;
   for (double y = -200; y <= 200; y += 5) {

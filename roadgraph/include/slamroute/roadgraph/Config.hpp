@@ -104,6 +104,7 @@ struct EdgeConfig {
   double cluster_tolerance_m = 4.0;   ///< Euclidean clustering distance of street points [m]
   int min_street_points = 5;          ///< smaller leftover clusters are dropped [points]
   double attach_max_m = 22.0;         ///< a street end farther than this from a node dead-ends [m]
+  double end_merge_m = 20.0;          ///< dead ends this close are one node (an undriven corner) [m]
   double polyline_step_m = 5.0;       ///< centreline vertex spacing [m]
   double min_run_m = 8.0;             ///< travel along a street counted as a direction [m]
   double max_gap_s = 3.0;             ///< a vehicle's trace breaks at larger time gaps [s]
@@ -115,6 +116,9 @@ void visitFields(V& v, EdgeConfig& c) {
   v.field("cluster_tolerance_m", c.cluster_tolerance_m, "street clustering distance [m]");
   v.field("min_street_points", c.min_street_points, "smaller clusters are dropped [points]");
   v.field("attach_max_m", c.attach_max_m, "street end farther from any node is a dead end [m]");
+  v.field("end_merge_m", c.end_merge_m,
+          "dead ends this close together are one node: streets whose ends meet at a corner no "
+          "survey vehicle drove round stay connected (0 = off) [m]");
   v.field("polyline_step_m", c.polyline_step_m, "centreline vertex spacing [m]");
   v.field("min_run_m", c.min_run_m, "travel along a street counted as a direction [m]");
   v.field("max_gap_s", c.max_gap_s, "a vehicle's trace breaks at larger time gaps [s]");

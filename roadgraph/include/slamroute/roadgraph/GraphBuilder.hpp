@@ -14,6 +14,7 @@ struct GraphBuildStats {
   std::size_t trace_points = 0, voxels = 0, intersection_points = 0;
   std::size_t intersections = 0, dead_ends = 0, streets = 0, one_way_streets = 0;
   std::size_t unknown_direction_streets = 0, dropped_fragments = 0, isolated_nodes_dropped = 0;
+  std::size_t merged_end_pairs = 0;  ///< groups of nearby dead ends made one node
   double seconds = 0.0;
 };
 
