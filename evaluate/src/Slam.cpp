@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/PoseGraph.hpp"
 #include "slamroute/evaluate/RangeImage.hpp"
 #include "slamroute/evaluate/Registration.hpp"
@@ -43,36 +44,6 @@ Cloud capped(Cloud c, int max_n) {
   const double step = static_cast<double>(c.size()) / max_n;
   for (int i = 0; i < max_n; ++i) out.push_back(c[static_cast<std::size_t>(i * step)]);
   return out;
-}
-
-double rotationAngle(const Pose3& T) { return Eigen::AngleAxisd(T.rotation()).angle(); }
-
-/// The motion `m` scaled to the share `f` of itself (rotation angle and translation scaled alike;
-/// exact for a constant turn rate and speed up to the small-angle chord error).
-Pose3 scaledMotion(const Pose3& m, double f) {
-  const Eigen::AngleAxisd aa(m.rotation());
-  Pose3 out = Pose3::Identity();
-  out.linear() = Eigen::AngleAxisd(aa.angle() * f, aa.axis()).toRotationMatrix();
-  out.translation() = m.translation() * f;
-  return out;
-}
-
-/// Highest turn rate a car can drive at `speed` [rad/s]: lateral acceleration over speed, capped by
-/// cfg.max_step_change_deg per 0.1 s.
-double maxTurnRate(const Config& cfg, double speed_mps) {
-  const double cap = cfg.max_step_change_deg * std::numbers::pi / 180.0 / 0.1;
-  if (cfg.max_lateral_accel_mps2 <= 0) return cap;
-  return std::min(cap, cfg.max_lateral_accel_mps2 / std::max(speed_mps, 0.5));
-}
-
-/// A registration that moves the pose far from the constant-velocity prediction within one frame
-/// interval `dt` is a failure (wrong correspondences, e.g. a passing car filling half the view),
-/// not motion: a car's heading can change at most by its highest turn rate at the current speed.
-bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps) {
-  const Pose3 d = pred.inverse() * result;
-  const double scale = std::max(1.0, dt / 0.1);
-  const double max_rot = maxTurnRate(cfg, speed_mps) * dt + cfg.rotation_slack_deg * std::numbers::pi / 180.0;
-  return d.translation().norm() <= scale * cfg.max_step_change_m && rotationAngle(d) <= max_rot;
 }
 
 struct Keyframe {
@@ -135,6 +106,12 @@ struct LidarSlam::Impl {
 
   /// Prediction of the pose at time t (frames may be unevenly spaced): the wheel odometry's
   /// planar motion (height from the velocity) when there is odometry, else constant velocity.
+  /// `plausible`, and with wheel odometry also within its slack of the odometry's prediction.
+  bool plausibleStep(const Pose3& pred, const Pose3& result, double dt, double speed) const {
+    return plausible(pred, result, cfg, dt, speed) &&
+           (odometry.empty() || plausibleWithOdometry(pred, result, cfg, dt));
+  }
+
   Pose3 predict(double t) const {
     if (frames.empty()) return T_world_last;
     const Pose3 v = scaledMotion(velocity, (t - frames.back().t) / velocity_dt);
@@ -393,7 +370,7 @@ struct LidarSlam::Impl {
     }
     bool implausible = false;
     const bool check = have_velocity && check_motion;
-    if (check && !plausible(T_prev_pred, T_prev_curr, cfg, dt, speed)) {
+    if (check && !plausibleStep(T_prev_pred, T_prev_curr, dt, speed)) {
       T_prev_curr = T_prev_pred;
       implausible = true;
     }
@@ -419,7 +396,7 @@ struct LidarSlam::Impl {
       co.degenerate_eig = 0;
       const AlignResult c = alignFeatures(local_map, capped(src_edges, cap / 4), capped(src_planes, cap), T_world, co);
       if (c.edge_matches >= cfg.min_edge_features && c.plane_matches >= cfg.min_plane_features &&
-          plausible(pred, c.T_target_source, cfg, dt, speed))
+          plausibleStep(pred, c.T_target_source, dt, speed))
         T_world = c.T_target_source;
     }
     const AlignResult m = alignFeatures(local_map, src_edges, src_planes, T_world, mo);
@@ -435,13 +412,15 @@ struct LidarSlam::Impl {
     if (m.edge_matches < cfg.min_edge_features || m.plane_matches < cfg.min_plane_features) {
       status = FrameStatus::FewFeatures;  // keep the odometry pose in x, y, yaw
       failed = true;
+      // Scan-to-scan on a handful of edges is no better: wheel odometry + gyro are, when present.
+      if (!odometry.empty()) T_world = pred;
       // Too few edges (an open street): the planes still fix height, roll and pitch.
       AlignOptions po = mo;
       po.dof_mask = kZ | kRoll | kPitch;
       const AlignResult g = alignFeatures(local_map, {}, src_planes, T_world, po);
-      if (g.plane_matches >= cfg.min_plane_features && plausible(pred, g.T_target_source, cfg, dt, speed))
+      if (g.plane_matches >= cfg.min_plane_features && plausibleStep(pred, g.T_target_source, dt, speed))
         T_world = g.T_target_source;
-    } else if (check && !plausible(pred, m.T_target_source, cfg, dt, speed)) {
+    } else if (check && !plausibleStep(pred, m.T_target_source, dt, speed)) {
       status = FrameStatus::Degenerate;   // keep the odometry pose
       failed = true;
     } else {

@@ -77,6 +77,10 @@ struct Config {
   /// away pulled the scan-to-map 14 deg off on a straight street. 0 = off [m/s^2]
   double max_lateral_accel_mps2 = 6.0;
   double rotation_slack_deg = 1.5;   ///< allowed on top of the dynamic bound per scan [deg]
+  /// With wheel odometry + gyro: a registration may move the odometry's prediction at most this
+  /// far in x/y and yaw per 0.1 s (the gyro drifts ~0.05 deg/s, the wheels ~1 %) [m], [deg]
+  double odometry_translation_slack_m = 0.25;
+  double odometry_rotation_slack_deg = 0.5;
   double failed_turn_decay = 0.9;    ///< a failed scan keeps the speed, the turn rate times this
   // --- relocalisation (not in LeGO-LOAM) ---
   // Simulated drives have heading jumps of up to ~100 deg within one scan where SUMO switches a
@@ -175,6 +179,10 @@ void visitFields(V& v, Config& c) {
   v.field("max_step_change_deg", c.max_step_change_deg, "max change of the prediction per scan [deg]");
   v.field("max_lateral_accel_mps2", c.max_lateral_accel_mps2, "turn rate bound: this over the speed, 0 = off [m/s^2]");
   v.field("rotation_slack_deg", c.rotation_slack_deg, "rotation allowed on top of the bound per scan [deg]");
+  v.field("odometry_translation_slack_m", c.odometry_translation_slack_m,
+          "with wheel odometry: registration may move its prediction this far per 0.1 s [m]");
+  v.field("odometry_rotation_slack_deg", c.odometry_rotation_slack_deg,
+          "with wheel odometry: ... and turn it this much in yaw per 0.1 s [deg]");
   v.field("failed_turn_decay", c.failed_turn_decay, "turn rate kept per failed scan (share)");
   v.field("map_coarse_nn_m", c.map_coarse_nn_m, "coarse scan-to-map radius, 0 = off [m]");
   v.field("relocalize", c.relocalize, "yaw search when scan-to-map fails");

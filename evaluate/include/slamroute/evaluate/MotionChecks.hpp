@@ -1,0 +1,31 @@
+#pragma once
+// What a car can do between two scans: the bounds the SLAM front end checks a registration
+// against before it believes it (evaluate/src/Slam.cpp).
+#include "slamroute/core/Types.hpp"
+#include "slamroute/evaluate/Config.hpp"
+
+namespace slamroute::evaluate {
+
+/// Rotation angle of a pose [rad].
+double rotationAngle(const Pose3& T);
+
+/// The motion `m` scaled to the share `f` of itself (rotation angle and translation scaled alike;
+/// exact for a constant turn rate and speed up to the small-angle chord error).
+Pose3 scaledMotion(const Pose3& m, double f);
+
+/// Highest turn rate a car can drive at `speed_mps` [rad/s]: lateral acceleration over speed,
+/// capped by cfg.max_step_change_deg per 0.1 s.
+double maxTurnRate(const Config& cfg, double speed_mps);
+
+/// A registration that moves the pose far from the prediction within one frame interval `dt` [s]
+/// is a failure (wrong correspondences, e.g. a passing car filling half the view), not motion: a
+/// car's heading can change at most by its highest turn rate at the current speed.
+bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps);
+
+/// With wheel odometry + gyro the prediction itself is a measurement, good to centimetres and a
+/// fraction of a degree over one scan interval: a registration may move it at most
+/// cfg.odometry_translation_slack_m in x/y and cfg.odometry_rotation_slack_deg in yaw per 0.1 s,
+/// or it slid along a featureless street or locked onto a few stray edges.
+bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt);
+
+}  // namespace slamroute::evaluate

@@ -1,0 +1,41 @@
+// Motion plausibility checks (see MotionChecks.hpp).
+#include "slamroute/evaluate/MotionChecks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace slamroute::evaluate {
+
+double rotationAngle(const Pose3& T) { return Eigen::AngleAxisd(T.rotation()).angle(); }
+
+Pose3 scaledMotion(const Pose3& m, double f) {
+  const Eigen::AngleAxisd aa(m.rotation());
+  Pose3 out = Pose3::Identity();
+  out.linear() = Eigen::AngleAxisd(aa.angle() * f, aa.axis()).toRotationMatrix();
+  out.translation() = m.translation() * f;
+  return out;
+}
+
+double maxTurnRate(const Config& cfg, double speed_mps) {
+  const double cap = cfg.max_step_change_deg * std::numbers::pi / 180.0 / 0.1;
+  if (cfg.max_lateral_accel_mps2 <= 0) return cap;
+  return std::min(cap, cfg.max_lateral_accel_mps2 / std::max(speed_mps, 0.5));
+}
+
+bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps) {
+  const Pose3 d = pred.inverse() * result;
+  const double scale = std::max(1.0, dt / 0.1);
+  const double max_rot = maxTurnRate(cfg, speed_mps) * dt + cfg.rotation_slack_deg * std::numbers::pi / 180.0;
+  return d.translation().norm() <= scale * cfg.max_step_change_m && rotationAngle(d) <= max_rot;
+}
+
+bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt) {
+  const Pose3 d = pred.inverse() * result;
+  const double scale = std::max(1.0, dt / 0.1);
+  const double yaw = std::abs(std::atan2(d.rotation()(1, 0), d.rotation()(0, 0)));
+  return d.translation().head<2>().norm() <= scale * cfg.odometry_translation_slack_m &&
+         yaw <= scale * cfg.odometry_rotation_slack_deg * std::numbers::pi / 180.0;
+}
+
+}  // namespace slamroute::evaluate

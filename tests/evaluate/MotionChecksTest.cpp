@@ -1,0 +1,56 @@
+// The bounds a registration must stay within before the SLAM believes it.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "slamroute/evaluate/MotionChecks.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+Pose3 pose(double x, double y, double yaw_deg) {
+  Pose3 T = Pose3::Identity();
+  T.linear() = Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  T.translation() = Vec3(x, y, 0.0);
+  return T;
+}
+
+TEST(MotionChecks, TurnRateFallsWithSpeed) {
+  const Config cfg;  // 6 m/s^2 lateral, cap 10 deg per 0.1 s
+  EXPECT_NEAR(maxTurnRate(cfg, 12.0), 0.5, 1e-12);
+  EXPECT_NEAR(maxTurnRate(cfg, 0.0), 10.0 * std::numbers::pi / 180.0 / 0.1, 1e-12);  // capped
+}
+
+TEST(MotionChecks, ScaledMotionHalvesAngleAndTranslation) {
+  const Pose3 h = scaledMotion(pose(2.0, 1.0, 20.0), 0.5);
+  EXPECT_NEAR(rotationAngle(h) * 180.0 / std::numbers::pi, 10.0, 1e-9);
+  EXPECT_NEAR(h.translation().x(), 1.0, 1e-12);
+}
+
+TEST(MotionChecks, HeadingJumpBeyondWhatACarCanTurnIsImplausible) {
+  const Config cfg;
+  const Pose3 pred = pose(100, 50, 30);
+  // At 14 m/s a car turns <= 6/14 rad/s: over 0.2 s 4.9 deg, + 1.5 deg slack.
+  EXPECT_TRUE(plausible(pred, pred * pose(0.1, 0, 5.0), cfg, 0.2, 14.0));
+  EXPECT_FALSE(plausible(pred, pred * pose(0.1, 0, 8.7), cfg, 0.2, 14.0));
+  EXPECT_FALSE(plausible(pred, pred * pose(4.5, 0, 0), cfg, 0.2, 14.0));  // > 2 m per 0.1 s
+}
+
+TEST(MotionChecks, WithOdometryOnlyItsSmallErrorsMayBeCorrected) {
+  // The 8.7 deg jump that a few stray edges on an open street caused (city drive, t = 33.9 s)
+  // passes the car-dynamics bound at low estimated speed but not the odometry's.
+  const Config cfg;  // slack 0.25 m, 0.5 deg per 0.1 s
+  const Pose3 pred = pose(40, 520, -96);
+  const Pose3 jump = pred * pose(0, 0, -8.7);
+  EXPECT_TRUE(plausible(pred, jump, cfg, 0.2, 5.6));
+  EXPECT_FALSE(plausibleWithOdometry(pred, jump, cfg, 0.2));
+  EXPECT_TRUE(plausibleWithOdometry(pred, pred * pose(0.3, -0.2, 0.8), cfg, 0.2));  // within 2x slack
+  EXPECT_FALSE(plausibleWithOdometry(pred, pred * pose(0.6, 0, 0), cfg, 0.2));       // slid 0.6 m
+  // Roll and pitch are the planes' business: a 3 deg pitch change is not an odometry conflict.
+  Pose3 pitched = pred;
+  pitched.linear() = pred.rotation() * Eigen::AngleAxisd(0.05, Vec3::UnitY()).toRotationMatrix();
+  EXPECT_TRUE(plausibleWithOdometry(pred, pitched, cfg, 0.1));
+}
+
+}  // namespace
+}  // namespace slamroute::evaluate
