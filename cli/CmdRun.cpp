@@ -12,6 +12,7 @@
 #include "Report.hpp"
 #include "Subprocess.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoNet.hpp"
 
 namespace slamroute::cli {
@@ -108,8 +109,14 @@ void registerRun(CLI::App& app, Context& ctx) {
     record(s4, runSteps(s4, o->jobs));
 
     logInfo("[5/6] LiDAR SLAM on each drive");
-    std::vector<Step> s5;
+    // Longest route first: with two evaluations at a time the last one to start is then the
+    // shortest, and the run ends soonest.
+    std::vector<std::pair<double, std::string>> by_length;
     for (const auto& p : planners)
+      by_length.emplace_back(-Route::readJson(out / "routes" / (p + ".json")).length_m, p);
+    std::stable_sort(by_length.begin(), by_length.end());
+    std::vector<Step> s5;
+    for (const auto& [neg_len, p] : by_length)
       s5.push_back(childStep(ctx, "evaluate " + p,
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));

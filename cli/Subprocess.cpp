@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -45,9 +46,12 @@ pid_t spawnStep(const Step& s) {
   for (auto& a : argv_s) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), environ);
+  // Exec this very image through /proc/self/exe: every step runs the same version as the parent,
+  // even when the binary on disk is rebuilt (and replaced) during a long run.
+  const int rc = posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("cannot start '" + s.label + "': " + std::to_string(rc));
+  if (rc != 0)
+    throw std::runtime_error("cannot start '" + s.label + "' (" + exe + "): " + std::strerror(rc));
   return pid;
 }
 
