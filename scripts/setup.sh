@@ -8,7 +8,7 @@ PACKAGES=(
   sumo sumo-tools                       # SUMO binaries, libsumo (libsumocpp.so + headers), tools
   libeigen3-dev libboost-graph-dev libpcl-dev libopencv-dev libembree-dev liblemon-dev
   libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
-  libtbb-dev libpugixml-dev zlib1g-dev mpi-default-dev
+  libtbb-dev libpugixml-dev libnanoflann-dev zlib1g-dev mpi-default-dev
 )
 
 missing=()

@@ -1,13 +1,32 @@
-// The only PCL k-d tree translation unit of the module.
+// k-d tree behind the KdTree interface: nanoflann (header-only, Debian libnanoflann-dev). It was
+// PCL's KdTreeFLANN; that one allocates on every query (malloc/free were ~12 % of the SLAM time
+// and the search ~60 %).
 #include "slamroute/evaluate/KdTree.hpp"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_types.h>
+#include <nanoflann.hpp>
 
 namespace slamroute::evaluate {
+namespace {
+
+/// nanoflann's dataset interface over the stored points.
+struct PointsAdaptor {
+  const std::vector<Eigen::Vector3f>* points = nullptr;
+  std::size_t kdtree_get_point_count() const { return points->size(); }
+  float kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
+  template <class BBox>
+  bool kdtree_get_bbox(BBox& /*bb*/) const { return false; }
+};
+
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointsAdaptor>,
+                                                 PointsAdaptor, 3, std::uint32_t>;
+constexpr std::size_t kLeafSize = 10;  ///< points per leaf (nanoflann's default)
+
+}  // namespace
 
 struct KdTree::Impl {
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree{false};  // unsorted is faster; we sort below when needed
+  std::vector<Eigen::Vector3f> points;
+  PointsAdaptor adaptor;
+  std::unique_ptr<Tree> tree;
 };
 
 KdTree::KdTree() : impl_(std::make_unique<Impl>()) {}
@@ -19,12 +38,9 @@ void KdTree::build(const std::vector<Eigen::Vector3f>& points) {
   impl_ = std::make_unique<Impl>();
   n_ = points.size();
   if (points.empty()) return;
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  cloud->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    (*cloud)[i] = pcl::PointXYZ(points[i].x(), points[i].y(), points[i].z());
-  impl_->tree.setSortedResults(true);
-  impl_->tree.setInputCloud(cloud);
+  impl_->points = points;
+  impl_->adaptor.points = &impl_->points;
+  impl_->tree = std::make_unique<Tree>(3, impl_->adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize));
 }
 
 int KdTree::knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
@@ -32,13 +48,13 @@ int KdTree::knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
   idx.clear();
   sq_dist.clear();
   if (n_ == 0 || k <= 0) return 0;
-  pcl::PointXYZ p(q.x(), q.y(), q.z());
-  idx.resize(static_cast<std::size_t>(k));
+  thread_local std::vector<std::uint32_t> found;
+  found.resize(static_cast<std::size_t>(k));
   sq_dist.resize(static_cast<std::size_t>(k));
-  const int found = impl_->tree.nearestKSearch(p, k, idx, sq_dist);
-  idx.resize(static_cast<std::size_t>(std::max(found, 0)));
-  sq_dist.resize(idx.size());
-  return found;
+  const std::size_t n = impl_->tree->knnSearch(q.data(), static_cast<std::size_t>(k), found.data(), sq_dist.data());
+  sq_dist.resize(n);
+  idx.assign(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(n));
+  return static_cast<int>(n);
 }
 
 }  // namespace slamroute::evaluate

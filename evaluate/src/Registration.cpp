@@ -103,60 +103,85 @@ void FeatureMap::build(Cloud edge_cloud, Cloud plane_cloud) {
   plane_tree.build(planes);
 }
 
+namespace {
+
+/// A found correspondence: source point p (body frame) and the target's line (dir) or plane
+/// (normal) through `mean`. Kept for `reassociate_every` iterations.
+struct Corr {
+  Vec3 p, mean, axis;
+};
+
+/// Nearest-neighbour line fits for the edges and plane fits for the planar points at pose (R, t).
+void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes, const Mat3& R,
+               const Vec3& t, const AlignOptions& opt, std::vector<Corr>& lines, std::vector<Corr>& planes) {
+  constexpr int kK = 5;
+  std::vector<int> idx;
+  std::vector<float> d2;
+  const float max_d2 = static_cast<float>(opt.max_nn_m * opt.max_nn_m);
+  lines.clear();
+  planes.clear();
+  if (target.edges.size() >= kK) {
+    for (const auto& pf : src_edges) {
+      const Vec3 p = pf.cast<double>();
+      const Vec3 q = R * p + t;
+      if (target.edge_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
+      const Pca s = pca(target.edges, idx);
+      const Vec3 ev = s.es.eigenvalues();
+      if (ev(2) < 3.0 * ev(1)) continue;  // neighbours are not on a line
+      lines.push_back({p, s.mean, s.es.eigenvectors().col(2)});
+    }
+  }
+  if (target.planes.size() >= kK) {
+    for (const auto& pf : src_planes) {
+      const Vec3 p = pf.cast<double>();
+      const Vec3 q = R * p + t;
+      if (target.plane_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
+      const Pca s = pca(target.planes, idx);
+      const Vec3 n = s.es.eigenvectors().col(0);
+      bool planar = true;
+      for (int i : idx)
+        planar = planar &&
+                 std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < opt.plane_max_dev_m;
+      if (planar) planes.push_back({p, s.mean, n});
+    }
+  }
+}
+
+}  // namespace
+
 AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes,
                           const Pose3& init, const AlignOptions& opt) {
   AlignResult res;
   Pose3 T = init;
-  std::vector<int> idx;
-  std::vector<float> d2;
-  const float max_d2 = static_cast<float>(opt.max_nn_m * opt.max_nn_m);
-  constexpr int kK = 5;
+  std::vector<Corr> lines, planes;
+  const int every = std::max(1, opt.reassociate_every);
   Normal last;
+  bool force = false;
   for (int it = 0; it < opt.iterations; ++it) {
-    Normal ne;
     const Mat3 R = T.rotation();
     const Vec3 t = T.translation();
-    int edges = 0, planes = 0, inliers = 0;
-    if (target.edges.size() >= kK) {
-      for (const auto& pf : src_edges) {
-        const Vec3 p = pf.cast<double>();
-        const Vec3 q = R * p + t;
-        if (target.edge_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
-        const Pca s = pca(target.edges, idx);
-        const Vec3 ev = s.es.eigenvalues();
-        if (ev(2) < 3.0 * ev(1)) continue;  // neighbours are not on a line
-        const Vec3 dir = s.es.eigenvectors().col(2);
-        const Vec3 e = q - s.mean;
-        const Vec3 perp = e - dir * dir.dot(e);
-        // Point-to-line distance (LOAM eq. 2) as two orthogonal scalar residuals.
-        const Vec3 u = dir.unitOrthogonal();
-        const Vec3 v = dir.cross(u);
-        ne.add(R, p, u, u.dot(perp), opt.huber_m);
-        ne.add(R, p, v, v.dot(perp), opt.huber_m);
-        ++edges;
-        if (perp.norm() < opt.inlier_m) ++inliers;
-      }
+    const bool fresh = force || it % every == 0;
+    if (fresh) associate(target, src_edges, src_planes, R, t, opt, lines, planes);
+    force = false;
+    Normal ne;
+    int inliers = 0;
+    for (const Corr& c : lines) {
+      const Vec3 e = R * c.p + t - c.mean;
+      const Vec3 perp = e - c.axis * c.axis.dot(e);
+      // Point-to-line distance (LOAM eq. 2) as two orthogonal scalar residuals.
+      const Vec3 u = c.axis.unitOrthogonal();
+      const Vec3 v = c.axis.cross(u);
+      ne.add(R, c.p, u, u.dot(perp), opt.huber_m);
+      ne.add(R, c.p, v, v.dot(perp), opt.huber_m);
+      if (perp.norm() < opt.inlier_m) ++inliers;
     }
-    if (target.planes.size() >= kK) {
-      for (const auto& pf : src_planes) {
-        const Vec3 p = pf.cast<double>();
-        const Vec3 q = R * p + t;
-        if (target.plane_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
-        const Pca s = pca(target.planes, idx);
-        const Vec3 n = s.es.eigenvectors().col(0);
-        bool planar = true;
-        for (int i : idx)
-          planar = planar &&
-                   std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < opt.plane_max_dev_m;
-        if (!planar) continue;
-        const double r = n.dot(q - s.mean);
-        ne.add(R, p, n, r, opt.huber_m);  // point-to-plane (LOAM eq. 3)
-        ++planes;
-        if (std::abs(r) < opt.inlier_m) ++inliers;
-      }
+    for (const Corr& c : planes) {
+      const double r = c.axis.dot(R * c.p + t - c.mean);
+      ne.add(R, c.p, c.axis, r, opt.huber_m);  // point-to-plane (LOAM eq. 3)
+      if (std::abs(r) < opt.inlier_m) ++inliers;
     }
-    res.edge_matches = edges;
-    res.plane_matches = planes;
+    res.edge_matches = static_cast<int>(lines.size());
+    res.plane_matches = static_cast<int>(planes.size());
     res.inliers = inliers;
     res.iterations = it + 1;
     last = ne;
@@ -164,6 +189,11 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
     const Vec6 d = ne.solve(opt.dof_mask, opt.degenerate_eig);
     applyDelta(T, d);
     if (d.head<3>().norm() < 1e-5 && d.tail<3>().norm() < 1e-4) {
+      // Converged on correspondences found at an earlier pose: look again once before stopping.
+      if (!fresh && it + 1 < opt.iterations) {
+        force = true;
+        continue;
+      }
       res.converged = true;
       break;
     }

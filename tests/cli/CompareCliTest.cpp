@@ -26,7 +26,9 @@ fs::path tmp() {
 }
 
 CmdRun runCompare(const std::string& args) {
-  const fs::path err = tmp() / "stderr.txt";
+  // One file per test: ctest runs the tests of this file in parallel processes.
+  const fs::path err =
+      tmp() / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".stderr");
   const std::string cmd = std::string(SLAMROUTE_BINARY) + " " + args + " 2>" + err.string();
   CmdRun r;
   FILE* p = popen(cmd.c_str(), "r");

@@ -21,7 +21,9 @@ struct CmdResult {
 CmdResult runCli(const std::string& args) {
   const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "rl_cli";
   fs::create_directories(dir);
-  const std::string log = (dir / "out.log").string();
+  // One log per test: ctest runs the tests of this file in parallel processes.
+  const std::string log =
+      (dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log")).string();
   const int rc = std::system((std::string(SLAMROUTE_BINARY) + " " + args + " > " + log + " 2>&1").c_str());
   std::ifstream in(log);
   std::stringstream ss;

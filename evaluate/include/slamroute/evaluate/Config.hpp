@@ -49,6 +49,8 @@ struct Config {
   double odom_max_nn_m = 1.5;        ///< correspondence search radius scan-to-scan [m]
   // --- scan-to-map ---
   int map_iterations = 10;           ///< Gauss-Newton iterations scan-to-map
+  int map_reassociate_every = 2;     ///< scan-to-map: new neighbours / line and plane fits every
+                                     ///< n-th iteration, fixed in between (1 = every iteration)
   double map_max_nn_m = 1.0;         ///< correspondence search radius scan-to-map [m]
   double map_edge_voxel_m = 0.2;     ///< voxel for edge features (source and local map) [m]
   double map_surf_voxel_m = 0.4;     ///< voxel for planar features (source and local map) [m]
@@ -158,6 +160,7 @@ void visitFields(V& v, Config& c) {
   v.field("odom_iterations", c.odom_iterations, "scan-to-scan iterations per step");
   v.field("odom_max_nn_m", c.odom_max_nn_m, "scan-to-scan correspondence radius [m]");
   v.field("map_iterations", c.map_iterations, "scan-to-map iterations");
+  v.field("map_reassociate_every", c.map_reassociate_every, "scan-to-map: new correspondences every n-th iteration");
   v.field("map_max_nn_m", c.map_max_nn_m, "scan-to-map correspondence radius [m]");
   v.field("map_edge_voxel_m", c.map_edge_voxel_m, "edge voxel [m]");
   v.field("map_surf_voxel_m", c.map_surf_voxel_m, "planar voxel [m]");

@@ -1,6 +1,6 @@
 #pragma once
-// Nearest-neighbour search over a point cloud (PCL KdTreeFLANN behind a pimpl, so PCL stays in
-// one translation unit).
+// Nearest-neighbour search over a point cloud (nanoflann behind a pimpl, so the header stays
+// light).
 #include <Eigen/Core>
 #include <memory>
 #include <vector>

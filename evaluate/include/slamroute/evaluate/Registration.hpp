@@ -28,6 +28,9 @@ struct AlignOptions {
   unsigned dof_mask = kAllDof;
   double degenerate_eig = 0.0;   ///< > 0: freeze directions with lambda/rows below this
   double inlier_m = 0.1;         ///< residuals below this count as inliers (hypothesis score) [m]
+  /// Search the nearest neighbours and fit lines / planes every n-th iteration only, and keep
+  /// them fixed in between (LOAM's odometry re-associates every 5th iteration). 1 = every one.
+  int reassociate_every = 1;
 };
 
 struct AlignResult {
