@@ -1,6 +1,7 @@
 // Streets, dead ends and directions of travel (paper §3.1 steps 2-3) on synthetic traces.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "SyntheticTraces.hpp"
@@ -117,6 +118,127 @@ TEST(GraphBuilder, CornerNoVehicleDroveRoundKeepsItsStreetsConnected) {
   const auto apart = buildRoadGraph(tr, off);
   EXPECT_EQ(apart.stats.merged_end_pairs, 0u);
   EXPECT_EQ(apart.stats.dead_ends, 6u);
+}
+
+/// Node ids of the intersection nodes nearest to (x, y), -1 when none is within 8 m.
+int intersectionNear(const GraphBuildResult& r, double x, double y) {
+  for (std::size_t n = 0; n < r.graph.nodes.size(); ++n)
+    if (!r.node_is_end[n] &&
+        std::hypot(r.graph.nodes[n].pos.x() - x, r.graph.nodes[n].pos.y() - y) < 8)
+      return static_cast<int>(n);
+  return -1;
+}
+
+bool hasEdge(const RoadGraph& g, int u, int v) {
+  for (const auto& e : g.edges)
+    if (e.u == u && e.v == v) return true;
+  return false;
+}
+
+TEST(GraphBuilder, StreetWhoseLanesJoinOnlyNearOneEndIsOneTwoWayStreet) {
+  // Junctions A (0, 0) and B (200, 0). Between them the two directions are separate lanes 6 m
+  // apart that come together only in the last 30 m before B: the street points form one U-shaped
+  // cluster whose two geodesic ends both lie at A. It was dropped as a corner cut.
+  const double h = 1.4;  // + 1.6 m right-hand lane offset = lanes at y = -3 and y = +3
+  const std::vector<Road> roads = {
+      {line({0, -100, 0}, {0, 100, 0})},
+      {line({-100, 0, 0}, {0, 0, 0})},
+      {line({200, -100, 0}, {200, 100, 0})},
+      {line({200, 0, 0}, {300, 0, 0})},
+      {{{0, -h, 0}, {170, -h, 0}, {200, 0, 0}}, /*two_way=*/false},  // eastbound lane
+      {{{200, 0, 0}, {170, h, 0}, {0, h, 0}}, /*two_way=*/false}};   // westbound lane
+  const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3), Config{});
+  const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 200, 0);
+  ASSERT_GE(a, 0);
+  ASSERT_GE(b, 0);
+  EXPECT_TRUE(hasEdge(r.graph, a, b)) << "eastbound A -> B missing";
+  EXPECT_TRUE(hasEdge(r.graph, b, a)) << "westbound B -> A missing";
+  EXPECT_EQ(r.stats.dropped_fragments, 0u);
+  EXPECT_EQ(r.stats.u_turn_streets, 1u);
+  for (const auto& e : r.graph.edges)
+    if ((e.u == a && e.v == b) || (e.u == b && e.v == a)) {
+      EXPECT_NEAR(e.length_m, 200.0, 10.0);
+    }
+}
+
+TEST(GraphBuilder, JunctionsCloserThanTheClearedRadiiAreLinked) {
+  // Two crossings 26 m apart on one east-west road: the clearing (12 m round each node) leaves
+  // 2 m of that road, too few points for a street. Vehicles drive from one junction straight into
+  // the other, so the link is an edge; the one-way variant gets one directed edge.
+  for (const bool two_way : {true, false}) {
+    const std::vector<Road> roads = {{line({-100, 0, 0}, {0, 0, 0})},
+                                     {line({0, 0, 0}, {26, 0, 0}), two_way},
+                                     {line({26, 0, 0}, {126, 0, 0})},
+                                     {line({0, -100, 0}, {0, 100, 0})},
+                                     {line({26, -100, 0}, {26, 100, 0})}};
+    const Traces tr = makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2);  // 2 vehicles per direction
+    const auto r = buildRoadGraph(tr, Config{});
+    const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 26, 0);
+    ASSERT_GE(a, 0) << "two_way " << two_way;
+    ASSERT_GE(b, 0) << "two_way " << two_way;
+    EXPECT_TRUE(hasEdge(r.graph, a, b)) << "two_way " << two_way;
+    EXPECT_EQ(hasEdge(r.graph, b, a), two_way) << "two_way " << two_way;
+    EXPECT_EQ(r.stats.short_links, 1u);
+    Config off;
+    off.edges.link_max_m = 0.0;
+    const auto apart = buildRoadGraph(tr, off);
+    EXPECT_EQ(apart.stats.short_links, 0u);
+    EXPECT_FALSE(hasEdge(apart.graph, a, b));
+  }
+}
+
+TEST(GraphBuilder, ShortStreetGetsItsDirectionsFromDrivesBetweenItsJunctions) {
+  // Crossings 30 m apart: 6 m of the street between them is left outside the cleared disks, too
+  // little for a run to progress min_run_m (8 m), so no run showed a direction and the street
+  // was assumed two-way even when driven one way only. Drives from one junction to the other
+  // over the street's points give its directions.
+  for (const bool two_way : {true, false}) {
+    const std::vector<Road> roads = {{line({-100, 0, 0}, {0, 0, 0})},
+                                     {line({0, 0, 0}, {30, 0, 0}), two_way},
+                                     {line({30, 0, 0}, {130, 0, 0})},
+                                     {line({0, -100, 0}, {0, 100, 0})},
+                                     {line({30, -100, 0}, {30, 100, 0})}};
+    const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
+    const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 30, 0);
+    ASSERT_GE(a, 0) << "two_way " << two_way;
+    ASSERT_GE(b, 0) << "two_way " << two_way;
+    EXPECT_EQ(r.stats.short_links, 0u) << "a street, not a link";
+    EXPECT_EQ(r.stats.unknown_direction_streets, 0u) << "two_way " << two_way;
+    EXPECT_TRUE(hasEdge(r.graph, a, b)) << "two_way " << two_way;
+    EXPECT_EQ(hasEdge(r.graph, b, a), two_way) << "two_way " << two_way;
+  }
+}
+
+TEST(GraphBuilder, StreetRunningThroughAJunctionWhoseNodeLiesOffItIsSplitThere) {
+  // Junction H (arms north, north-east, north-west) at (100, 15) joined by a 15 m connector to the
+  // main road A (0, 0) - B (200, 0). The connector's T and H are one node, voted 15-18 m north of
+  // the main road, which is then not cleared there: its cluster runs from A to B past the node.
+  // Vehicles drive between the main road and H over the connector, so the road is split at H
+  // (A-H, H-B). Without the connector (a road merely passing 15 m from a junction) it stays one
+  // street A-B.
+  for (const bool connected : {true, false}) {
+    std::vector<Road> roads = {
+        {line({-100, 0, 0}, {300, 0, 0})},     {line({0, -100, 0}, {0, 100, 0})},
+        {line({200, -100, 0}, {200, 100, 0})}, {line({100, 15, 0}, {100, 150, 0})},
+        {line({100, 15, 0}, {170, 99, 0})},    {line({100, 15, 0}, {30, 99, 0})}};
+    if (connected) roads.push_back({line({100, 0, 0}, {100, 15, 0})});
+    const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
+    const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 200, 0);
+    int h = -1;
+    for (std::size_t n = 0; n < r.graph.nodes.size(); ++n)
+      if (!r.node_is_end[n] && std::abs(r.graph.nodes[n].pos.x() - 100) < 5 &&
+          r.graph.nodes[n].pos.y() > 12 && r.graph.nodes[n].pos.y() < 20)
+        h = static_cast<int>(n);
+    ASSERT_GE(a, 0) << "connected " << connected;
+    ASSERT_GE(b, 0) << "connected " << connected;
+    ASSERT_GE(h, 0) << "connected " << connected;
+    EXPECT_EQ(r.stats.intersections, 3u) << "connected " << connected;
+    EXPECT_EQ(r.stats.passed_nodes, connected ? 1u : 0u);
+    EXPECT_EQ(hasEdge(r.graph, a, h), connected);
+    EXPECT_EQ(hasEdge(r.graph, h, b), connected);
+    EXPECT_EQ(hasEdge(r.graph, b, h), connected);
+    EXPECT_EQ(hasEdge(r.graph, a, b), !connected);
+  }
 }
 
 TEST(GraphBuilder, OverpassStreetPassesUnderTheBridge) {

@@ -109,6 +109,13 @@ struct EdgeConfig {
   double min_run_m = 8.0;             ///< travel along a street counted as a direction [m]
   double max_gap_s = 3.0;             ///< a vehicle's trace breaks at larger time gaps [s]
   int min_direction_runs = 1;         ///< runs needed to accept a direction of travel
+  bool split_at_passed_nodes = true;  ///< split a street cluster at a junction it runs through
+  /// Links between junctions too close for a street to survive the clearing (ShortLinks.cpp):
+  /// A vehicle this close to a node passes its junction [m]. 12 m = clear_radius_m: the node of a
+  /// big junction lies up to 10-15 m from the lanes through it (Bologna 27: 8 m lost its link).
+  double link_visit_m = 12.0;
+  double link_max_m = 30.0;   ///< nodes farther apart are never linked this way [m]
+  int min_link_vehicles = 2;  ///< vehicles needed to accept a direction of a link
 };
 template <class V>
 void visitFields(V& v, EdgeConfig& c) {
@@ -123,6 +130,15 @@ void visitFields(V& v, EdgeConfig& c) {
   v.field("min_run_m", c.min_run_m, "travel along a street counted as a direction [m]");
   v.field("max_gap_s", c.max_gap_s, "a vehicle's trace breaks at larger time gaps [s]");
   v.field("min_direction_runs", c.min_direction_runs, "runs needed to accept a direction");
+  v.field("split_at_passed_nodes", c.split_at_passed_nodes,
+          "a street cluster reaching >= 3 nodes that runs past one of them (branch point within "
+          "clear_radius_m of it) is split into one street per branch ending there");
+  v.field("link_visit_m", c.link_visit_m,
+          "a vehicle this close to a node passes its junction (short links) [m]");
+  v.field("link_max_m", c.link_max_m,
+          "junctions at most this far apart are linked when vehicles drive from one straight to "
+          "the other without a street point in between (0 = off) [m]");
+  v.field("min_link_vehicles", c.min_link_vehicles, "vehicles needed per direction of a link");
 }
 
 /// Edge weights from depth images (paper §3.1, eqs. 3-4).
