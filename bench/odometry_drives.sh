@@ -3,7 +3,7 @@
 # "Odometry" > "Accuracy"). Usage: bench/odometry_drives.sh [BUILD_DIR] [OUT_DIR]
 #   route1k: 1.2 km through building-lined and open streets; loop: one block, back to its start;
 #   city: the three 7 km routes of `slamroute run` (out/default_city/routes, if it exists).
-# Drives record wheel odometry + gyro (odometry.csv); "lidar_only" rows ignore it.
+# Drives record wheel odometry + gyro + IMU roll/pitch (odometry.csv); "lidar_only" rows ignore it.
 # Prints one Markdown row per evaluation. Takes ~15 min on 2 cores (~45 min with the city).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -12,7 +12,7 @@ out="${2:-/tmp/slamroute_odometry_bench}"
 bin="$build/cli/slamroute"
 mkdir -p "$out"
 # Noise-free: LiDAR and wheel odometry + gyro without noise.
-printf 'simulate:\n  lidar:\n    range_sigma_m: 0.0\n    dropout_prob: 0.0\n  drive:\n    odometry_scale_sigma: 0.0\n    odometry_speed_noise_mps: 0.0\n    gyro_bias_sigma_deg_s: 0.0\n    gyro_noise_deg_s: 0.0\n' > "$out/noisefree.yaml"
+printf 'simulate:\n  lidar:\n    range_sigma_m: 0.0\n    dropout_prob: 0.0\n  drive:\n    odometry_scale_sigma: 0.0\n    odometry_speed_noise_mps: 0.0\n    gyro_bias_sigma_deg_s: 0.0\n    gyro_noise_deg_s: 0.0\n    tilt_bias_sigma_deg: 0.0\n    tilt_noise_deg: 0.0\n' > "$out/noisefree.yaml"
 printf 'evaluate:\n  use_odometry: false\n' > "$out/lidar_only.yaml"
 printf 'evaluate:\n  loop_closure: false\n' > "$out/nolc.yaml"
 printf 'evaluate:\n  loop_closure: false\n  use_odometry: false\n' > "$out/nolc_lidar_only.yaml"

@@ -19,6 +19,8 @@ WheelOdometry::WheelOdometry(std::vector<OdometrySample> samples) : samples_(std
     const auto& s = samples_[i];
     if (!std::isfinite(s.t) || !std::isfinite(s.speed_mps) || !std::isfinite(s.yaw_rate_rad_s))
       throw std::invalid_argument("odometry sample " + std::to_string(i) + " is not finite");
+    if (std::isfinite(s.roll_rad) != std::isfinite(s.pitch_rad))
+      throw std::invalid_argument("odometry sample " + std::to_string(i) + " has roll or pitch but not both");
     if (i > 0 && !(s.t > samples_[i - 1].t))
       throw std::invalid_argument("odometry sample " + std::to_string(i) + ": times must increase");
   }
@@ -30,6 +32,15 @@ double WheelOdometry::yawRate(double t) const {
                              [](double v, const OdometrySample& s) { return v < s.t; });
   if (it != samples_.begin()) --it;
   return it->yaw_rate_rad_s;
+}
+
+std::optional<Attitude> WheelOdometry::attitude(double t) const {
+  if (samples_.empty()) return std::nullopt;
+  auto it = std::upper_bound(samples_.begin(), samples_.end(), t,
+                             [](double v, const OdometrySample& s) { return v < s.t; });
+  if (it != samples_.begin()) --it;
+  if (!it->hasAttitude()) return std::nullopt;
+  return Attitude{it->roll_rad, it->pitch_rad};
 }
 
 Pose3 WheelOdometry::motion(double t0, double t1) const {
@@ -76,7 +87,13 @@ WheelOdometry readOdometryCsv(const std::filesystem::path& path) {
     std::istringstream ls(line);
     if (!(ls >> s.t >> c1 >> s.speed_mps >> c2 >> s.yaw_rate_rad_s) || c1 != ',' || c2 != ',')
       throw std::runtime_error(path.string() + ":" + std::to_string(n) +
-                               ": expected t,speed_mps,yaw_rate_rad_s");
+                               ": expected t,speed_mps,yaw_rate_rad_s[,roll_rad,pitch_rad]");
+    char c3 = 0, c4 = 0;
+    if (ls >> c3) {  // optional IMU roll and pitch
+      if (!(c3 == ',' && ls >> s.roll_rad >> c4 >> s.pitch_rad && c4 == ','))
+        throw std::runtime_error(path.string() + ":" + std::to_string(n) +
+                                 ": expected t,speed_mps,yaw_rate_rad_s[,roll_rad,pitch_rad]");
+    }
     out.push_back(s);
   }
   try {
@@ -88,10 +105,16 @@ WheelOdometry readOdometryCsv(const std::filesystem::path& path) {
 
 void writeOdometryCsv(const std::filesystem::path& path, const WheelOdometry& odo) {
   std::ostringstream os;
-  os << "t,speed_mps,yaw_rate_rad_s\n";
-  char buf[96];
+  const bool tilt = !odo.empty() && std::all_of(odo.samples().begin(), odo.samples().end(),
+                                                [](const OdometrySample& s) { return s.hasAttitude(); });
+  os << (tilt ? "t,speed_mps,yaw_rate_rad_s,roll_rad,pitch_rad\n" : "t,speed_mps,yaw_rate_rad_s\n");
+  char buf[128];
   for (const auto& s : odo.samples()) {
-    std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f\n", s.t, s.speed_mps, s.yaw_rate_rad_s);
+    if (tilt)
+      std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f,%.7f,%.7f\n", s.t, s.speed_mps, s.yaw_rate_rad_s, s.roll_rad,
+                    s.pitch_rad);
+    else
+      std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f\n", s.t, s.speed_mps, s.yaw_rate_rad_s);
     os << buf;
   }
   writeFileAtomic(path, os.str());

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "slamroute/core/AtomicFile.hpp"
@@ -222,7 +223,12 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   nlohmann::json loops = nlohmann::json::array();
   for (const auto& l : slam.loops)
     loops.push_back({{"old_keyframe", l.from_keyframe}, {"new_keyframe", l.to_keyframe},
-                     {"t_old", l.t_old}, {"t_new", l.t_new}, {"fitness_m2", l.fitness_m2}});
+                     {"t_old", l.t_old}, {"t_new", l.t_new}, {"fitness_m2", l.fitness_m2},
+                     {"correction_m", l.correction_m},
+                     {"t_old_new", {l.T_old_new.translation().x(), l.T_old_new.translation().y(),
+                                    l.T_old_new.translation().z()}},
+                     {"yaw_old_new_deg", std::atan2(l.T_old_new.rotation()(1, 0), l.T_old_new.rotation()(0, 0)) *
+                                             180.0 / std::numbers::pi}});
   j["loops"] = loops;
 
   // per-edge drift + coverage

@@ -198,7 +198,8 @@ struct LidarSlam::Impl {
     e.sigma_m = cfg.graph_loop_sigma_m;
     e.sigma_rad = cfg.graph_loop_sigma_rad;
     loop_edges.push_back(e);
-    loops.push_back({best, n - 1, kfs[static_cast<std::size_t>(best)].t, cur.t, icp.fitness_m2});
+    loops.push_back({best, n - 1, kfs[static_cast<std::size_t>(best)].t, cur.t, icp.fitness_m2,
+                     (icp.T_target_source.translation() - cur.T_world.translation()).norm(), e.T_from_to});
     last_loop_t = cur.t;
     const auto t0 = Clock::now();
     std::vector<Pose3> poses;
@@ -463,6 +464,10 @@ struct LidarSlam::Impl {
     // stands out while a gradual change of scenery does not trigger searches.
     if (!failed) inlier_ref = std::max(static_cast<double>(inliers), cfg.relocalize_ref_decay * inlier_ref);
     times.mapping += since(t0);
+    // Absolute roll / pitch from the IMU's gravity vector, when the drive has them.
+    if (cfg.imu_tilt_weight > 0)
+      if (const auto a = odometry.attitude(scan.t))
+        T_world = levelled(T_world, a->roll_rad, a->pitch_rad, cfg.imu_tilt_weight);
     // motion model for the next prediction
     // Motion model. A relocalised pose is a correction, not motion: keep the speed and go
     // straight ahead (the next scans are taken densely, so a fast turn is followed from there).

@@ -1,4 +1,6 @@
-// Simulated wheel odometry + yaw-rate gyro of the mapping vehicle (written with each drive).
+// Simulated wheel odometry + yaw-rate gyro + IMU roll/pitch of the mapping vehicle (written with
+// each drive).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -13,6 +15,11 @@ WheelOdometry simulateOdometry(const Trajectory& gt, const DriveConfig& cfg, std
   const double deg = std::numbers::pi / 180.0;
   const double scale = 1.0 + cfg.odometry_scale_sigma * unit(rng);
   const double bias = cfg.gyro_bias_sigma_deg_s * deg * unit(rng);
+  // Drawn after the wheel and gyro errors so those stay what they were for a given seed.
+  const bool tilt = cfg.tilt_bias_sigma_deg >= 0.0;
+  std::mt19937_64 tilt_rng(seed ^ 0x74696c74ULL);  // "tilt": its own stream
+  const double roll_bias = tilt ? cfg.tilt_bias_sigma_deg * deg * unit(tilt_rng) : 0.0;
+  const double pitch_bias = tilt ? cfg.tilt_bias_sigma_deg * deg * unit(tilt_rng) : 0.0;
   std::vector<OdometrySample> out;
   out.reserve(gt.size());
   for (std::size_t k = 0; k + 1 < gt.size(); ++k) {
@@ -26,6 +33,11 @@ WheelOdometry simulateOdometry(const Trajectory& gt, const DriveConfig& cfg, std
     const double fwd = d.translation().head<2>().norm() * (d.translation().x() < 0 ? -1.0 : 1.0);
     s.speed_mps = fwd / dt * scale + cfg.odometry_speed_noise_mps * unit(rng);
     s.yaw_rate_rad_s = yaw / dt + bias + cfg.gyro_noise_deg_s * deg * unit(rng);
+    if (tilt) {  // Z-Y-X Euler roll and pitch of the body at t
+      const Mat3 R = gt[k].T_world_body.rotation();
+      s.roll_rad = std::atan2(R(2, 1), R(2, 2)) + roll_bias + cfg.tilt_noise_deg * deg * unit(tilt_rng);
+      s.pitch_rad = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) + pitch_bias + cfg.tilt_noise_deg * deg * unit(tilt_rng);
+    }
     out.push_back(s);
   }
   return WheelOdometry(std::move(out));

@@ -58,5 +58,28 @@ TEST(Odometry, CsvRoundTripAndBadFiles) {
   EXPECT_THROW(readOdometryCsv(dir / "missing.csv"), std::runtime_error);
 }
 
+TEST(Odometry, ImuRollAndPitchRoundTripAndAreOptional) {
+  const auto dir = test::tempDir("odometry");
+  std::vector<OdometrySample> s = {{0.0, 1.5, 0.01}, {0.1, 1.6, -0.02}};
+  s[0].roll_rad = 0.01;
+  s[0].pitch_rad = -0.02;
+  s[1].roll_rad = 0.015;
+  s[1].pitch_rad = 0.03;
+  writeOdometryCsv(dir / "tilt.csv", WheelOdometry(s));
+  const WheelOdometry r = readOdometryCsv(dir / "tilt.csv");
+  ASSERT_TRUE(r.attitude(0.15).has_value());
+  EXPECT_NEAR(r.attitude(0.15)->roll_rad, 0.015, 1e-7);
+  EXPECT_NEAR(r.attitude(0.05)->pitch_rad, -0.02, 1e-7);
+  // Without the two columns there is no attitude; a line with only one of them is an error.
+  EXPECT_FALSE(constant(1.0, 0.0, 0.1, 3).attitude(0.1).has_value());
+  test::writeText(dir / "half.csv", "t,speed_mps,yaw_rate_rad_s,roll_rad,pitch_rad\n0,1,0,0.1,0.2\n0.1,1,0,0.1\n");
+  try {
+    readOdometryCsv(dir / "half.csv");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("half.csv:3"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace slamroute

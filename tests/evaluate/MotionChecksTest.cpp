@@ -52,5 +52,26 @@ TEST(MotionChecks, WithOdometryOnlyItsSmallErrorsMayBeCorrected) {
   EXPECT_TRUE(plausibleWithOdometry(pred, pitched, cfg, 0.1));
 }
 
+TEST(MotionChecks, LevelledMovesRollAndPitchTowardsTheImuAndKeepsHeading) {
+  const double deg = std::numbers::pi / 180.0;
+  Pose3 T = pose(5.0, -2.0, 30.0);
+  T.linear() = T.linear() * Eigen::AngleAxisd(-3.0 * deg, Vec3::UnitY()).toRotationMatrix() *
+               Eigen::AngleAxisd(2.0 * deg, Vec3::UnitX()).toRotationMatrix();
+  const auto rpy = [](const Pose3& P) {
+    const Mat3 R = P.rotation();
+    return Vec3(std::atan2(R(2, 1), R(2, 2)), -std::asin(R(2, 0)), std::atan2(R(1, 0), R(0, 0)));
+  };
+  const Vec3 full = rpy(levelled(T, 0.0, 0.0, 1.0));
+  EXPECT_NEAR(full.x(), 0.0, 1e-12);
+  EXPECT_NEAR(full.y(), 0.0, 1e-12);
+  EXPECT_NEAR(full.z(), 30.0 * deg, 1e-12);
+  const Pose3 half = levelled(T, 1.0 * deg, 1.0 * deg, 0.5);
+  EXPECT_NEAR(rpy(half).x(), 1.5 * deg, 1e-12);   // roll 2 -> 1.5 deg
+  EXPECT_NEAR(rpy(half).y(), -1.0 * deg, 1e-12);  // pitch -3 -> -1 deg
+  EXPECT_NEAR(rpy(half).z(), 30.0 * deg, 1e-12);
+  EXPECT_TRUE(half.translation().isApprox(T.translation()));
+  EXPECT_TRUE(levelled(T, 0.0, 0.0, 0.0).isApprox(T, 1e-12));
+}
+
 }  // namespace
 }  // namespace slamroute::evaluate

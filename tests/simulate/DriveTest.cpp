@@ -123,6 +123,21 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
     const Pose3 m = clean.motion(gt[i].t, gt[i + 1].t);
     EXPECT_LT((m.translation() - step.translation()).head<2>().norm(), 0.05) << i;
   }
+  // IMU roll / pitch: noise-free they are the ground truth's (Z-Y-X Euler) roll and pitch; with
+  // the default noise (0.05 deg bias, 0.1 deg white) within half a degree of them.
+  exact.tilt_bias_sigma_deg = exact.tilt_noise_deg = 0;
+  const WheelOdometry level = simulate::simulateOdometry(gt, exact, 5);
+  for (std::size_t i = 0; i + 1 < gt.size(); i += 23) {
+    const Mat3 R = gt[i].T_world_body.rotation();
+    ASSERT_TRUE(level.attitude(gt[i].t).has_value());
+    EXPECT_NEAR(level.attitude(gt[i].t)->roll_rad, std::atan2(R(2, 1), R(2, 2)), 1e-6) << i;
+    EXPECT_NEAR(level.attitude(gt[i].t)->pitch_rad, -std::asin(R(2, 0)), 1e-6) << i;
+    ASSERT_TRUE(odo.attitude(gt[i].t).has_value());
+    EXPECT_NEAR(odo.attitude(gt[i].t)->pitch_rad, -std::asin(R(2, 0)), 0.5 * M_PI / 180.0) << i;
+  }
+  simulate::DriveConfig no_imu = cfg.drive;
+  no_imu.tilt_bias_sigma_deg = -1.0;
+  EXPECT_FALSE(simulate::simulateOdometry(gt, no_imu, 5).attitude(gt[5].t).has_value());
   // Same seed, same odometry; another seed, another bias.
   const auto a1 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
   const auto a2 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();

@@ -1,9 +1,14 @@
 #pragma once
-// Wheel odometry + yaw-rate gyro of the mapping vehicle (what every survey car records next to
-// its LiDAR; LeGO-LOAM takes an IMU the same way): forward speed and yaw rate over time, and the
-// planar motion they integrate to between two times. File: a drive's odometry.csv.
+// Wheel odometry + IMU of the mapping vehicle (what every survey car records next to its LiDAR;
+// LeGO-LOAM takes an IMU the same way): forward speed and yaw rate over time, the planar motion
+// they integrate to between two times, and optionally the IMU's absolute roll and pitch (from
+// gravity). File: a drive's odometry.csv.
 #include <filesystem>
+#include <optional>
 #include <vector>
+
+#include <cmath>
+#include <limits>
 
 #include "slamroute/core/Types.hpp"
 
@@ -14,6 +19,17 @@ struct OdometrySample {
   double t = 0.0;               ///< [s]
   double speed_mps = 0.0;       ///< forward speed [m/s]
   double yaw_rate_rad_s = 0.0;  ///< turn rate about the body z axis, counter-clockwise [rad/s]
+  /// Absolute roll and pitch of the body (Z-Y-X Euler angles, i.e. independent of the heading) as
+  /// an IMU levels them against gravity; NaN when not recorded [rad].
+  double roll_rad = std::numeric_limits<double>::quiet_NaN();
+  double pitch_rad = std::numeric_limits<double>::quiet_NaN();
+  bool hasAttitude() const { return std::isfinite(roll_rad) && std::isfinite(pitch_rad); }
+};
+
+/// Roll and pitch of the IMU [rad].
+struct Attitude {
+  double roll_rad = 0.0;
+  double pitch_rad = 0.0;
 };
 
 class WheelOdometry {
@@ -29,12 +45,15 @@ class WheelOdometry {
   Pose3 motion(double t0, double t1) const;
   /// Yaw rate at t [rad/s] (0 when empty).
   double yawRate(double t) const;
+  /// Roll and pitch of the sample in force at t, when the samples have them.
+  std::optional<Attitude> attitude(double t) const;
 
  private:
   std::vector<OdometrySample> samples_;
 };
 
-/// CSV with header "t,speed_mps,yaw_rate_rad_s". Throws naming the file and line.
+/// CSV with header "t,speed_mps,yaw_rate_rad_s" and optionally ",roll_rad,pitch_rad" (written
+/// when every sample has them). Throws naming the file and line.
 WheelOdometry readOdometryCsv(const std::filesystem::path& path);
 void writeOdometryCsv(const std::filesystem::path& path, const WheelOdometry& odo);
 

@@ -28,4 +28,10 @@ bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double
 /// or it slid along a featureless street or locked onto a few stray edges.
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt);
 
+/// The pose with its roll and pitch (Z-Y-X Euler angles) moved the share `w` of the way to an
+/// IMU's gravity-levelled roll and pitch [rad]; heading and position kept. LeGO-LOAM does the same
+/// with its IMU after each scan-to-map step: the LiDAR alone cannot tell a tilted map from a
+/// tilted road, so a pitch error taken on a ramp would otherwise stay for good.
+Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w);
+
 }  // namespace slamroute::evaluate

@@ -30,6 +30,8 @@ struct LoopClosure {
   int from_keyframe = 0, to_keyframe = 0;  ///< old, new
   double t_old = 0, t_new = 0;
   double fitness_m2 = 0;
+  double correction_m = 0;  ///< how far the ICP moved the new keyframe from its estimate [m]
+  Pose3 T_old_new = Pose3::Identity();  ///< the measured relative pose (for checks against truth)
 };
 
 struct SlamResult {

@@ -19,6 +19,10 @@ struct DriveConfig {
   double odometry_speed_noise_mps = 0.05; ///< white speed noise per sample, 1 sigma [m/s]
   double gyro_bias_sigma_deg_s = 0.05;    ///< yaw-rate bias, 1 sigma, one per drive [deg/s]
   double gyro_noise_deg_s = 0.1;          ///< white yaw-rate noise per sample, 1 sigma [deg/s]
+  /// IMU roll and pitch levelled against gravity (a MEMS IMU's accelerometers; LeGO-LOAM uses
+  /// them). Negative = not recorded.
+  double tilt_bias_sigma_deg = 0.05;      ///< roll / pitch bias, 1 sigma, one per drive [deg]
+  double tilt_noise_deg = 0.1;            ///< white roll / pitch noise per sample, 1 sigma [deg]
 };
 
 template <class V>
@@ -37,6 +41,9 @@ void visitFields(V& v, DriveConfig& c) {
           "wheel odometry speed scale error, 1 sigma, one per drive (0.01 = 1 %)");
   v.field("odometry_speed_noise_mps", c.odometry_speed_noise_mps,
           "wheel odometry white speed noise, 1 sigma [m/s]");
+  v.field("tilt_bias_sigma_deg", c.tilt_bias_sigma_deg,
+          "IMU roll/pitch bias, 1 sigma, one per drive; negative = no roll/pitch in odometry.csv [deg]");
+  v.field("tilt_noise_deg", c.tilt_noise_deg, "IMU roll/pitch white noise, 1 sigma [deg]");
   v.field("gyro_bias_sigma_deg_s", c.gyro_bias_sigma_deg_s, "gyro yaw-rate bias, 1 sigma, one per drive [deg/s]");
   v.field("gyro_noise_deg_s", c.gyro_noise_deg_s, "gyro white yaw-rate noise, 1 sigma [deg/s]");
 }
