@@ -411,8 +411,7 @@ struct LidarSlam::Impl {
                " min eig " + std::to_string(m.min_eig_translation));
     FrameStatus status = implausible ? FrameStatus::Degenerate : FrameStatus::Ok;
     bool failed = false;
-    const int min_edges = odometry.empty() ? cfg.min_edge_features : std::max(cfg.min_edge_features, cfg.odometry_min_edge_matches);
-    if (m.edge_matches < min_edges || m.plane_matches < cfg.min_plane_features) {
+    if (m.edge_matches < cfg.min_edge_features || m.plane_matches < cfg.min_plane_features) {
       status = FrameStatus::FewFeatures;  // keep the odometry pose in x, y, yaw
       failed = true;
       // Scan-to-scan on a handful of edges is no better: wheel odometry + gyro are, when present.

@@ -69,12 +69,6 @@ struct Config {
   int min_valid_points = 500;        ///< fewer valid points: the scan is unusable
   int min_edge_features = 10;        ///< fewer edge matches: unreliable
   int min_plane_features = 50;       ///< fewer plane matches: unreliable
-  /// With wheel odometry + gyro a scan-to-map needs this many edge matches to set x, y and yaw;
-  /// with fewer it keeps the odometry's (planes still set z, roll, pitch). On open streets 12-30
-  /// matches (a pole, a tree) turned the heading 0.3-0.9 deg per scan, far more than the gyro
-  /// drifts: first 200 s of the `run` qlearning drive ATE 1.44 m with 10, 0.82 with 25, 0.71
-  /// with 40.
-  int odometry_min_edge_matches = 40;
   double degeneracy_min_eig = 0.02;  ///< min normalised eigenvalue of the translation block
   bool degeneracy_remap = false;     ///< freeze degenerate directions in scan-to-map (LOAM);
                                      ///< off: on the noisy default-city drive it made drift worse
@@ -187,8 +181,6 @@ void visitFields(V& v, Config& c) {
   v.field("min_valid_points", c.min_valid_points, "min valid points per scan");
   v.field("min_edge_features", c.min_edge_features, "min edge matches");
   v.field("min_plane_features", c.min_plane_features, "min plane matches");
-  v.field("odometry_min_edge_matches", c.odometry_min_edge_matches,
-          "with wheel odometry: fewer edge matches keep the odometry's x, y, yaw");
   v.field("degeneracy_min_eig", c.degeneracy_min_eig, "min normalised translation eigenvalue");
   v.field("degeneracy_remap", c.degeneracy_remap, "freeze degenerate directions");
   v.field("max_step_change_m", c.max_step_change_m, "max change of the prediction per scan [m]");
