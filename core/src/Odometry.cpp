@@ -26,21 +26,22 @@ WheelOdometry::WheelOdometry(std::vector<OdometrySample> samples) : samples_(std
   }
 }
 
-double WheelOdometry::yawRate(double t) const {
-  if (samples_.empty()) return 0.0;
-  auto it = std::upper_bound(samples_.begin(), samples_.end(), t,
-                             [](double v, const OdometrySample& s) { return v < s.t; });
-  if (it != samples_.begin()) --it;
-  return it->yaw_rate_rad_s;
+Attitude attitudeOf(const Mat3& R) {
+  return {std::atan2(R(2, 1), R(2, 2)), -std::asin(std::clamp(R(2, 0), -1.0, 1.0))};
 }
 
-std::optional<Attitude> WheelOdometry::attitude(double t) const {
-  if (samples_.empty()) return std::nullopt;
+const OdometrySample& WheelOdometry::sampleAt(double t) const {
   auto it = std::upper_bound(samples_.begin(), samples_.end(), t,
                              [](double v, const OdometrySample& s) { return v < s.t; });
   if (it != samples_.begin()) --it;
-  if (!it->hasAttitude()) return std::nullopt;
-  return Attitude{it->roll_rad, it->pitch_rad};
+  return *it;
+}
+
+double WheelOdometry::yawRate(double t) const { return samples_.empty() ? 0.0 : sampleAt(t).yaw_rate_rad_s; }
+
+std::optional<Attitude> WheelOdometry::attitude(double t) const {
+  if (samples_.empty() || !sampleAt(t).hasAttitude()) return std::nullopt;
+  return Attitude{sampleAt(t).roll_rad, sampleAt(t).pitch_rad};
 }
 
 Pose3 WheelOdometry::motion(double t0, double t1) const {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "slamroute/core/Odometry.hpp"
+
 namespace slamroute::evaluate {
 
 double rotationAngle(const Pose3& T) { return Eigen::AngleAxisd(T.rotation()).angle(); }
@@ -41,12 +43,12 @@ bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config&
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
   const Mat3 R = T.rotation();
   const double yaw = std::atan2(R(1, 0), R(0, 0));
-  const double pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
-  const double roll = std::atan2(R(2, 1), R(2, 2));
+  const Attitude now = attitudeOf(R);
   const auto towards = [w](double a, double b) { return a + w * std::remainder(b - a, 2.0 * std::numbers::pi); };
   Pose3 out = T;
-  out.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(towards(pitch, pitch_rad), Vec3::UnitY()) *
-                  Eigen::AngleAxisd(towards(roll, roll_rad), Vec3::UnitX()))
+  out.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) *
+                  Eigen::AngleAxisd(towards(now.pitch_rad, pitch_rad), Vec3::UnitY()) *
+                  Eigen::AngleAxisd(towards(now.roll_rad, roll_rad), Vec3::UnitX()))
                      .toRotationMatrix();
   return out;
 }

@@ -1,6 +1,5 @@
 // Simulated wheel odometry + yaw-rate gyro + IMU roll/pitch of the mapping vehicle (written with
 // each drive).
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -33,10 +32,10 @@ WheelOdometry simulateOdometry(const Trajectory& gt, const DriveConfig& cfg, std
     const double fwd = d.translation().head<2>().norm() * (d.translation().x() < 0 ? -1.0 : 1.0);
     s.speed_mps = fwd / dt * scale + cfg.odometry_speed_noise_mps * unit(rng);
     s.yaw_rate_rad_s = yaw / dt + bias + cfg.gyro_noise_deg_s * deg * unit(rng);
-    if (tilt) {  // Z-Y-X Euler roll and pitch of the body at t
-      const Mat3 R = gt[k].T_world_body.rotation();
-      s.roll_rad = std::atan2(R(2, 1), R(2, 2)) + roll_bias + cfg.tilt_noise_deg * deg * unit(tilt_rng);
-      s.pitch_rad = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) + pitch_bias + cfg.tilt_noise_deg * deg * unit(tilt_rng);
+    if (tilt) {  // roll and pitch of the body at t
+      const Attitude a = attitudeOf(gt[k].T_world_body.rotation());
+      s.roll_rad = a.roll_rad + roll_bias + cfg.tilt_noise_deg * deg * unit(tilt_rng);
+      s.pitch_rad = a.pitch_rad + pitch_bias + cfg.tilt_noise_deg * deg * unit(tilt_rng);
     }
     out.push_back(s);
   }

@@ -32,6 +32,9 @@ struct Attitude {
   double pitch_rad = 0.0;
 };
 
+/// Z-Y-X Euler roll and pitch of a rotation (independent of its heading).
+Attitude attitudeOf(const Mat3& R);
+
 class WheelOdometry {
  public:
   WheelOdometry() = default;
@@ -49,6 +52,8 @@ class WheelOdometry {
   std::optional<Attitude> attitude(double t) const;
 
  private:
+  /// The sample in force at t (the first before it starts); samples_ must not be empty.
+  const OdometrySample& sampleAt(double t) const;
   std::vector<OdometrySample> samples_;
 };
 
