@@ -74,6 +74,21 @@ void applyDelta(Pose3& T, const Vec6& d) {
   T.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
 }
 
+/// Prior residual e = log(prior^-1 * T) per DoF with weight w; its Jacobian with respect to
+/// the right perturbation is the identity to first order.
+void addPrior(Normal& ne, const Pose3& prior, const Pose3& T, const Vec6& w) {
+  const Pose3 E = prior.inverse() * T;
+  const Eigen::AngleAxisd aa(E.rotation());
+  Vec6 e;
+  e.head<3>() = aa.angle() * aa.axis();
+  e.tail<3>() = E.translation();
+  for (int i = 0; i < 6; ++i) {
+    if (!(w(i) > 0)) continue;
+    ne.H(i, i) += w(i);
+    ne.g(i) += w(i) * e(i);
+  }
+}
+
 /// PCA of the neighbours: mean and eigen-decomposition (ascending eigenvalues).
 struct Pca {
   Vec3 mean;
@@ -157,6 +172,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
   const int every = std::max(1, opt.reassociate_every);
   Normal last;
   bool force = false;
+  const bool has_prior = (opt.prior_weight.array() > 0).any();
   for (int it = 0; it < opt.iterations; ++it) {
     const Mat3 R = T.rotation();
     const Vec3 t = T.translation();
@@ -186,6 +202,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
     res.iterations = it + 1;
     last = ne;
     if (ne.rows < 6) break;
+    if (has_prior) addPrior(ne, opt.prior, T, opt.prior_weight);
     const Vec6 d = ne.solve(opt.dof_mask, opt.degenerate_eig);
     applyDelta(T, d);
     if (d.head<3>().norm() < 1e-5 && d.tail<3>().norm() < 1e-4) {

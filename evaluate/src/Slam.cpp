@@ -112,6 +112,18 @@ struct LidarSlam::Impl {
            (odometry.empty() || plausibleWithOdometry(pred, result, cfg, dt));
   }
 
+  /// Prior of the scan-to-map towards the odometry's prediction (x, y, yaw), its sigmas grown
+  /// with the frame interval like the slack.
+  void setOdometryPrior(AlignOptions& o, const Pose3& pred, double scale) const {
+    o.prior = pred;
+    const auto w = [&](double sigma) {
+      return sigma > 0 ? std::pow(cfg.registration_sigma_m / (sigma * scale), 2) : 0.0;
+    };
+    o.prior_weight.setZero();
+    o.prior_weight(2) = w(cfg.odometry_prior_sigma_deg * std::numbers::pi / 180.0);
+    o.prior_weight(3) = o.prior_weight(4) = w(cfg.odometry_prior_sigma_m);
+  }
+
   Pose3 predict(double t) const {
     if (frames.empty()) return T_world_last;
     const Pose3 v = scaledMotion(velocity, (t - frames.back().t) / velocity_dt);
@@ -386,6 +398,7 @@ struct LidarSlam::Impl {
     mo.huber_m = cfg.huber_m;
     mo.plane_max_dev_m = cfg.plane_max_dev_m;
     if (cfg.degeneracy_remap) mo.degenerate_eig = cfg.degeneracy_min_eig;
+    if (!odometry.empty()) setOdometryPrior(mo, pred, scale);
     if (cfg.map_coarse_nn_m > 0 && have_velocity && scale > 1.5) {
       // Coarse stage with a wide correspondence radius: widens the basin of convergence when the
       // prediction is off by several degrees (turns at a scan stride of 2). Only for frame

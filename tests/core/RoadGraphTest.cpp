@@ -46,6 +46,7 @@ TEST(RoadGraph, JsonRoundTrip) {
 }
 
 TEST(RoadGraph, FromSumoNetKeepsTurnPermissions) {
+  if (!std::filesystem::exists(test::sharedNet("bologna"))) GTEST_SKIP() << "../shared/networks missing";
   const SumoNet net = SumoNet::read(test::sharedNet("bologna"));
   const RoadGraph g = RoadGraph::fromSumoNet(net, true);
   EXPECT_EQ(g.nodes.size(), 80u);

@@ -85,5 +85,57 @@ TEST_P(AlignFeatures, RecoversKnownRigidMotion) {
 
 INSTANTIATE_TEST_SUITE_P(ReassociateEvery, AlignFeatures, ::testing::Values(1, 2, 3));
 
+/// A street between two long walls (planes y = +-8) and the ground: nothing fixes x.
+FeatureMap corridor(Cloud& planes) {
+  for (double x = -30; x <= 30; x += 0.4)
+    for (double y = -8; y <= 8; y += 0.4) planes.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.0f);
+  for (double x = -30; x <= 30; x += 0.4)
+    for (double z = 0.2; z < 8; z += 0.4) {
+      planes.emplace_back(static_cast<float>(x), 8.0f, static_cast<float>(z));
+      planes.emplace_back(static_cast<float>(x), -8.0f, static_cast<float>(z));
+    }
+  FeatureMap map;
+  map.build({}, planes);
+  return map;
+}
+
+TEST(AlignFeaturesPrior, DecidesTheDirectionTheFeaturesLeaveOpen) {
+  Cloud planes;
+  const FeatureMap map = corridor(planes);
+  // The source sees the corridor from (0, 0.3): the walls bring y back to 0.3; along the
+  // corridor only the sampling pattern of the planes says anything.
+  Pose3 T_true = Pose3::Identity();
+  T_true.translation() = Vec3(0.0, 0.3, 0.0);
+  const Cloud src = moved(planes, T_true.inverse());
+  AlignOptions opt;
+  opt.iterations = 20;
+  Pose3 init = Pose3::Identity();
+  init.translation() = Vec3(0.5, 0.0, 0.0);
+  const AlignResult free = alignFeatures(map, {}, src, init, opt);
+  EXPECT_NEAR(free.T_target_source.translation().y(), 0.3, 0.01);
+  // A prior on x only at 0.7 (the odometry): x follows it, y still follows the walls.
+  opt.prior = Pose3::Identity();
+  opt.prior.translation() = Vec3(0.7, 0.0, 0.0);
+  opt.prior_weight << 0, 0, 0, 1000, 0, 0;
+  const AlignResult with = alignFeatures(map, {}, src, init, opt);
+  EXPECT_NEAR(with.T_target_source.translation().x(), 0.7, 0.03);
+  EXPECT_NEAR(with.T_target_source.translation().y(), 0.3, 0.01);
+  EXPECT_GT(std::abs(free.T_target_source.translation().x() - 0.7), 0.3);
+}
+
+TEST(AlignFeaturesPrior, AWeakPriorDoesNotMoveAConstrainedResult) {
+  Cloud edges, planes;
+  const FeatureMap map = corner(edges, planes);
+  Pose3 T_true = Pose3::Identity();
+  T_true.translation() = Vec3(0.4, -0.25, 0.05);
+  AlignOptions opt;
+  opt.iterations = 30;
+  opt.prior = Pose3::Identity();  // a prior 0.47 m off
+  opt.prior_weight << 0, 0, 1, 1, 1, 0;
+  const AlignResult r = alignFeatures(map, moved(edges, T_true.inverse()), moved(planes, T_true.inverse()),
+                                      Pose3::Identity(), opt);
+  EXPECT_LT((r.T_target_source.translation() - T_true.translation()).norm(), 0.01);
+}
+
 }  // namespace
 }  // namespace slamroute::evaluate

@@ -31,6 +31,13 @@ struct AlignOptions {
   /// Search the nearest neighbours and fit lines / planes every n-th iteration only, and keep
   /// them fixed in between (LOAM's odometry re-associates every 5th iteration). 1 = every one.
   int reassociate_every = 1;
+  /// Optional prior on the result (e.g. the wheel odometry's prediction, target frame): adds
+  /// prior_weight[i] * e_i^2 to the cost, e = [rotation vector, translation] of prior^-1 * T in
+  /// the body frame, order [rx ry rz tx ty tz]. The LiDAR residuals are in metres with unit
+  /// weight, so a weight is (residual sigma / prior sigma)^2. It only matters where the
+  /// features leave a direction weak (a long wall: along the street). Zero weights: no prior.
+  Pose3 prior = Pose3::Identity();
+  Eigen::Matrix<double, 6, 1> prior_weight = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 struct AlignResult {
