@@ -20,8 +20,11 @@
 //   neighbourhoods is not a street.
 #include "ShortLinks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+
+#include "Streets.hpp"
 
 namespace slamroute::roadgraph::detail {
 
@@ -68,6 +71,33 @@ Passages junctionPassages(const Traces& traces, const std::vector<std::size_t>& 
   Passages out;
   for (const auto& [key, vehicles] : drivers) out[key] = static_cast<int>(vehicles.size());
   return out;
+}
+
+void addShortLinks(const Passages& passages, const std::vector<Point3>& nodes, const EdgeConfig& ec,
+                   std::vector<Street>& streets, std::vector<Polyline>& polys,
+                   GraphBuildStats& st) {
+  if (!(ec.link_max_m > 0)) return;
+  std::set<std::pair<int, int>> linked;
+  for (const auto& s : streets) linked.emplace(std::min(s.u, s.v), std::max(s.u, s.v));
+  std::map<std::pair<int, int>, Street> links;
+  for (const auto& [key, vehicles] : passages) {
+    const auto [from, to, street] = key;
+    const int a = std::min(from, to), b = std::max(from, to);
+    if (street >= 0 || vehicles < ec.min_link_vehicles || linked.count({a, b}) ||
+        (nodes[static_cast<std::size_t>(a)] - nodes[static_cast<std::size_t>(b)]).head<2>().norm() >
+            ec.link_max_m)
+      continue;
+    Street& l = links[{a, b}];
+    l.u = a;
+    l.v = b;
+    (from == a ? l.link_fwd : l.link_bwd) = vehicles;
+  }
+  for (auto& [key, l] : links) {
+    polys.push_back({nodes[static_cast<std::size_t>(l.u)], nodes[static_cast<std::size_t>(l.v)]});
+    streets.push_back(std::move(l));
+    ++st.short_links;
+  }
+  st.streets = streets.size();
 }
 
 }  // namespace slamroute::roadgraph::detail

@@ -1,0 +1,76 @@
+// Street centrelines (paper §3.1 step 2): points are ordered by geodesic distance (Dijkstra over
+// the cluster's neighbourhood graph) from one end and averaged in polyline_step_m bins; robust to
+// GPS noise across the road and to curves.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "Streets.hpp"
+
+namespace slamroute::roadgraph::detail {
+
+double arcPosition(const Polyline& pl, const Point3& p) {
+  double best = std::numeric_limits<double>::infinity(), best_s = 0.0, s = 0.0;
+  for (std::size_t i = 0; i + 1 < pl.size(); ++i) {
+    const Vec3 d = pl[i + 1] - pl[i];
+    const double len = d.norm();
+    const double t = len > 1e-9 ? std::clamp((p - pl[i]).dot(d) / (len * len), 0.0, 1.0) : 0.0;
+    const double dist = (pl[i] + t * d - p).squaredNorm();
+    if (dist < best) {
+      best = dist;
+      best_s = s + t * len;
+    }
+    s += len;
+  }
+  return best_s;
+}
+
+void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::vector<int>& label,
+              int comp, double tol, int src, std::vector<double>& dist) {
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> pq;
+  dist[static_cast<std::size_t>(src)] = 0.0;
+  pq.emplace(0.0, src);
+  const double tol2 = tol * tol;
+  while (!pq.empty()) {
+    const auto [d, i] = pq.top();
+    pq.pop();
+    if (d > dist[static_cast<std::size_t>(i)]) continue;
+    const Point3& p = pts[static_cast<std::size_t>(i)];
+    grid.forEachNear(p, tol, tol, [&](int j) {
+      if (label[static_cast<std::size_t>(j)] != comp) return;
+      const double d2 = (pts[static_cast<std::size_t>(j)] - p).squaredNorm();
+      if (d2 > tol2) return;
+      const double nd = d + std::sqrt(d2);
+      if (nd < dist[static_cast<std::size_t>(j)]) {
+        dist[static_cast<std::size_t>(j)] = nd;
+        pq.emplace(nd, j);
+      }
+    });
+  }
+}
+
+Polyline binnedCentre(const std::vector<Point3>& sp, const std::vector<int>& members,
+                      const std::vector<double>& d, double step_m) {
+  double total = 0.0;
+  for (int i : members)
+    if (std::isfinite(d[static_cast<std::size_t>(i)]))
+      total = std::max(total, d[static_cast<std::size_t>(i)]);
+  const int nbins = std::max(1, static_cast<int>(std::ceil(total / step_m)));
+  std::vector<Point3> bsum(static_cast<std::size_t>(nbins) + 1, Point3::Zero());
+  std::vector<int> bcnt(static_cast<std::size_t>(nbins) + 1, 0);
+  for (int i : members) {
+    const double di = d[static_cast<std::size_t>(i)];
+    if (!std::isfinite(di)) continue;
+    const auto bin = static_cast<std::size_t>(std::min(nbins, static_cast<int>(di / step_m)));
+    bsum[bin] += sp[static_cast<std::size_t>(i)];
+    ++bcnt[bin];
+  }
+  Polyline centre;
+  for (std::size_t k = 0; k < bsum.size(); ++k)
+    if (bcnt[k] > 0) centre.push_back(bsum[k] / bcnt[k]);
+  return centre;
+}
+
+}  // namespace slamroute::roadgraph::detail

@@ -1,0 +1,178 @@
+// Streets (paper §3.1 steps 2-3): remove the trace points near the nodes, cluster the rest, and
+// attach each cluster to its two nearest nodes (eqs. 1-2).
+//
+// Choices the paper leaves open (documented here, configurable in EdgeConfig):
+// - "Node points and their neighbourhood" = trace points within clear_radius_m (horizontal, and
+//   within half the cylinder height) of a node. 12 m: just beyond the 10 m inner radius, so the
+//   arms of a junction fall apart, while streets shorter than 24 m between junctions survive.
+// - Eqs. 1-2 (the two nodes nearest to any point of the street) are evaluated at the street's two
+//   geodesic ends only, so a street passing close to another junction is not attached to it. A
+//   street end with no node within attach_max_m is a dead end and gets an end node there.
+// - Leftover pieces whose both ends lie near the same node (corner cuts inside a junction) are
+//   dropped; they are not streets. Unless the piece also reaches, at least clear_radius_m from
+//   both ends, the cleared disk of another node: then it is a street whose two directions are
+//   separate lanes a few metres apart, linked into one U-shaped cluster only near the far
+//   junction (Bologna: 3 such streets were lost), and it runs from its ends' node to that one.
+// - A cluster that runs through a junction whose node lies 12-16 m off it (not cleared there) is
+//   split at that node when vehicles drive from it into the node's disk (splitAtPassedNode).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "Streets.hpp"
+
+namespace slamroute::roadgraph::detail {
+namespace {
+
+struct Contact {
+  int member = -1;  ///< street point (subset index) closest to the node
+  int node = -1;
+};
+
+/// The bend of a U-shaped street cluster whose two geodesic ends `pa`, `pb` lie at node `both`:
+/// the member closest to another intersection node, within the cleared radius plus one clustering
+/// step of it and at least clear_radius_m from both ends, so a corner cut inside a junction
+/// (short, all its points near its node) is not taken for a street.
+Contact farContact(const std::vector<Point3>& sp, const std::vector<int>& members, const Point3& pa,
+                   const Point3& pb, const std::vector<Point3>& nodes, std::size_t n_inter,
+                   int both, const EdgeConfig& ec, double half_h) {
+  const double reach = ec.clear_radius_m + ec.cluster_tolerance_m;
+  Contact best;
+  double best_d = reach;
+  for (int i : members) {
+    const Point3& p = sp[static_cast<std::size_t>(i)];
+    if ((p - pa).head<2>().norm() < ec.clear_radius_m ||
+        (p - pb).head<2>().norm() < ec.clear_radius_m)
+      continue;
+    for (std::size_t j = 0; j < n_inter; ++j) {
+      if (static_cast<int>(j) == both || std::abs(nodes[j].z() - p.z()) > half_h) continue;
+      const double d = (nodes[j] - p).head<2>().norm();
+      if (d < best_d) {
+        best_d = d;
+        best = {i, static_cast<int>(j)};
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+StreetPoints clearNodeNeighbourhoods(const std::vector<Point3>& voxels,
+                                     const std::vector<Point3>& nodes, const EdgeConfig& ec,
+                                     double half_h) {
+  StreetPoints out;
+  const PointGrid node_grid(nodes, std::max(ec.clear_radius_m, 1.0));
+  out.subset_of.assign(voxels.size(), -1);
+  for (std::size_t i = 0; i < voxels.size(); ++i) {
+    bool near = false;
+    node_grid.forEachNear(voxels[i], ec.clear_radius_m, half_h, [&](int) { near = true; });
+    if (near) continue;
+    out.subset_of[i] = static_cast<int>(out.pts.size());
+    out.pts.push_back(voxels[i]);
+  }
+  int ncomp = 0;
+  out.label = euclideanComponents(out.pts, ec.cluster_tolerance_m, &ncomp);
+  out.comps.resize(static_cast<std::size_t>(ncomp));
+  for (std::size_t k = 0; k < out.pts.size(); ++k)
+    out.comps[static_cast<std::size_t>(out.label[k])].push_back(static_cast<int>(k));
+  return out;
+}
+
+std::vector<Street> attachStreets(const StreetPoints& spts, const Traces& traces,
+                                  const std::vector<std::size_t>& order,
+                                  const std::vector<int>& voxel_of, GraphNodes& gn,
+                                  const EdgeConfig& ec, double half_h, GraphBuildStats& st) {
+  const std::vector<Point3>& sp = spts.pts;
+  const std::vector<int>& label = spts.label;
+  const std::vector<std::vector<int>>& comps = spts.comps;
+  const int ncomp = static_cast<int>(comps.size());
+  std::vector<Point3>& nodes = gn.pos;
+  std::vector<char>& is_end = gn.is_end;
+  const std::size_t n_inter = gn.n_inter;
+  // Over the intersection nodes (end nodes are appended below; the grid only knows the first
+  // n_inter).
+  const PointGrid node_grid(nodes, std::max(ec.clear_radius_m, 1.0));
+  auto nearestNode = [&](const Point3& p, int exclude) {
+    int best = -1;
+    double bd = ec.attach_max_m;
+    for (std::size_t j = 0; j < n_inter; ++j) {
+      if (static_cast<int>(j) == exclude || std::abs(nodes[j].z() - p.z()) > half_h) continue;
+      const double d = (nodes[j] - p).head<2>().norm();
+      if (d <= bd) {
+        bd = d;
+        best = static_cast<int>(j);
+      }
+    }
+    return best;
+  };
+
+  const PointGrid sp_grid(sp, std::max(ec.cluster_tolerance_m, 0.1));
+  std::vector<double> dist(sp.size(), std::numeric_limits<double>::infinity());
+  std::vector<Street> streets;
+  const StreetContext ctx{spts,  sp_grid,   traces,  order, voxel_of,
+                          nodes, node_grid, n_inter, ec,    half_h};
+  for (int c = 0; c < ncomp; ++c) {
+    const auto& mem = comps[static_cast<std::size_t>(c)];
+    if (static_cast<int>(mem.size()) < ec.min_street_points) continue;
+    auto farthest = [&](int src) {
+      for (int i : mem) dist[static_cast<std::size_t>(i)] = std::numeric_limits<double>::infinity();
+      geodesic(sp, sp_grid, label, c, ec.cluster_tolerance_m, src, dist);
+      int best = src;
+      for (int i : mem)
+        if (std::isfinite(dist[static_cast<std::size_t>(i)]) &&
+            dist[static_cast<std::size_t>(i)] > dist[static_cast<std::size_t>(best)])
+          best = i;
+      return best;
+    };
+    Street s;
+    s.members = mem;
+    s.a = farthest(mem.front());
+    s.b = farthest(s.a);  // dist now holds geodesic distances from a
+    const Point3 pa = sp[static_cast<std::size_t>(s.a)], pb = sp[static_cast<std::size_t>(s.b)];
+    // Eqs. 1-2 at the street's ends: nearest node j, then nearest node k != j.
+    int na = nearestNode(pa, -1), nb = nearestNode(pb, -1);
+    if (splitAtPassedNode(ctx, c, mem, na, nb, streets, st)) continue;
+    if (na >= 0 && na == nb) {
+      const int both = na;
+      const double da = (nodes[static_cast<std::size_t>(na)] - pa).head<2>().norm();
+      const double db = (nodes[static_cast<std::size_t>(na)] - pb).head<2>().norm();
+      if (da <= db)
+        nb = nearestNode(pb, na);
+      else
+        na = nearestNode(pa, nb);
+      if (na < 0 || nb < 0) {
+        // Both ends at one node. A street whose two directions are separate lanes a few metres
+        // apart, linked only near its far junction, is one U-shaped cluster whose legs both end
+        // at the near node: the street runs from there to the other node its bend touches.
+        const Contact far = farContact(sp, mem, pa, pb, nodes, n_inter, both, ec, half_h);
+        if (far.member < 0) {  // a corner cut or a loop, not a street
+          ++st.dropped_fragments;
+          continue;
+        }
+        ++st.u_turn_streets;
+        s.a = far.member;
+        s.b = farthest(s.a);
+        na = far.node;
+        nb = both;
+      }
+    }
+    // Centreline from a to b: centroids of geodesic-distance bins.
+    s.centre = binnedCentre(sp, mem, dist, ec.polyline_step_m);
+    if (s.centre.empty()) continue;
+    // Dead ends get an end node at the last centreline point.
+    auto endNode = [&](const Point3& p) {
+      nodes.push_back(p);
+      is_end.push_back(1);
+      ++st.dead_ends;
+      return static_cast<int>(nodes.size()) - 1;
+    };
+    s.u = na >= 0 ? na : endNode(s.centre.front());
+    s.v = nb >= 0 ? nb : endNode(s.centre.back());
+    s.comp = c;
+    streets.push_back(std::move(s));
+  }
+  return streets;
+}
+
+}  // namespace slamroute::roadgraph::detail
