@@ -220,6 +220,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   j["keyframes"] = slam.keyframes;
   j["loop_closures"] = slam.loops.size();
   j["loop_candidates"] = slam.loop_candidates;
+  j["loops_rejected_correction"] = slam.loops_rejected;
   nlohmann::json loops = nlohmann::json::array();
   for (const auto& l : slam.loops)
     loops.push_back({{"old_keyframe", l.from_keyframe}, {"new_keyframe", l.to_keyframe},

@@ -40,6 +40,11 @@ bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config&
          yaw <= scale * cfg.odometry_rotation_slack_deg * std::numbers::pi / 180.0;
 }
 
+bool plausibleLoopCorrection(double correction_m, double driven_m, const Config& cfg) {
+  if (cfg.loop_max_correction_m < 0) return true;
+  return correction_m <= cfg.loop_max_correction_m + cfg.loop_correction_per_m * std::max(0.0, driven_m);
+}
+
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
   const Mat3 R = T.rotation();
   const double yaw = std::atan2(R(1, 0), R(0, 0));

@@ -85,6 +85,8 @@ struct LidarSlam::Impl {
   std::vector<PoseGraphEdge> odom_edges, loop_edges;
   std::vector<LoopClosure> loops;
   int loop_candidates = 0;
+  int loops_rejected = 0;           ///< ICP matches refused for too large a correction
+  double driven_since_loop = 0.0;   ///< keyframe path since the last accepted closure [m]
   double last_loop_t = -1e18, last_attempt_t = -1e18;
   bool have_prev = false;
   FeatureMap prev_scan;  ///< previous good scan's less-sharp / less-flat, its body frame
@@ -203,6 +205,13 @@ struct LidarSlam::Impl {
              std::to_string(icp.inlier_ratio));
     if (!(icp.fitness_m2 < cfg.loop_fitness_m2 && icp.inlier_ratio >= cfg.loop_min_inlier_ratio))
       return false;
+    const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
+    if (!plausibleLoopCorrection(correction, driven_since_loop, cfg)) {
+      ++loops_rejected;
+      logDebug("loop candidate rejected: correction " + std::to_string(correction) + " m after " +
+               std::to_string(driven_since_loop) + " m");
+      return false;
+    }
     PoseGraphEdge e;
     e.from = best;
     e.to = n - 1;
@@ -210,9 +219,10 @@ struct LidarSlam::Impl {
     e.sigma_m = cfg.graph_loop_sigma_m;
     e.sigma_rad = cfg.graph_loop_sigma_rad;
     loop_edges.push_back(e);
-    loops.push_back({best, n - 1, kfs[static_cast<std::size_t>(best)].t, cur.t, icp.fitness_m2,
-                     (icp.T_target_source.translation() - cur.T_world.translation()).norm(), e.T_from_to});
+    loops.push_back({best, n - 1, kfs[static_cast<std::size_t>(best)].t, cur.t, icp.fitness_m2, correction,
+                     e.T_from_to});
     last_loop_t = cur.t;
+    driven_since_loop = 0.0;
     const auto t0 = Clock::now();
     std::vector<Pose3> poses;
     for (const auto& kf : kfs) poses.push_back(kf.T_world);
@@ -237,6 +247,7 @@ struct LidarSlam::Impl {
     kf.planes = planes;
     kf.cloud = voxelFilter(segmented, cfg.map_voxel_m);
     if (!kfs.empty()) {
+      driven_since_loop += (T_world.translation() - kfs.back().T_world.translation()).norm();
       PoseGraphEdge e;
       e.from = static_cast<int>(kfs.size()) - 1;
       e.to = e.from + 1;
@@ -538,6 +549,7 @@ struct LidarSlam::Impl {
     out.map = voxelFilter(all, cfg.map_voxel_m);
     out.loops = loops;
     out.loop_candidates = loop_candidates;
+    out.loops_rejected = loops_rejected;
     out.keyframes = static_cast<int>(kfs.size());
     out.times = times;
     return out;

@@ -73,5 +73,17 @@ TEST(MotionChecks, LevelledMovesRollAndPitchTowardsTheImuAndKeepsHeading) {
   EXPECT_TRUE(levelled(T, 0.0, 0.0, 0.0).isApprox(T, 1e-12));
 }
 
+TEST(MotionChecks, LoopCorrectionIsBoundedByTheDriftSinceTheLastClosure) {
+  Config cfg;
+  cfg.loop_max_correction_m = 1.0;
+  cfg.loop_correction_per_m = 0.002;
+  EXPECT_TRUE(plausibleLoopCorrection(0.9, 0.0, cfg));
+  EXPECT_FALSE(plausibleLoopCorrection(3.0, 50.0, cfg));   // a 3 m jump 50 m after a closure
+  EXPECT_TRUE(plausibleLoopCorrection(3.0, 1500.0, cfg));  // ... after 1.5 km it may be drift
+  EXPECT_FALSE(plausibleLoopCorrection(3.0, 900.0, cfg));
+  cfg.loop_max_correction_m = -1.0;                         // no bound
+  EXPECT_TRUE(plausibleLoopCorrection(100.0, 0.0, cfg));
+}
+
 }  // namespace
 }  // namespace slamroute::evaluate

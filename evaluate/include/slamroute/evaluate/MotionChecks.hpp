@@ -28,6 +28,12 @@ bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double
 /// or it slid along a featureless street or locked onto a few stray edges.
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt);
 
+/// A loop closure that moves the new keyframe by `correction_m` after `driven_m` metres since the
+/// last accepted closure is believable when the odometry can have drifted that far:
+/// correction <= cfg.loop_max_correction_m + cfg.loop_correction_per_m * driven (always true when
+/// loop_max_correction_m < 0).
+bool plausibleLoopCorrection(double correction_m, double driven_m, const Config& cfg);
+
 /// The pose with its roll and pitch (Z-Y-X Euler angles) moved the share `w` of the way to an
 /// IMU's gravity-levelled roll and pitch [rad]; heading and position kept. LeGO-LOAM does the same
 /// with its IMU after each scan-to-map step: the LiDAR alone cannot tell a tilted map from a

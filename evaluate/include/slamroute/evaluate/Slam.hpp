@@ -40,6 +40,7 @@ struct SlamResult {
   std::vector<double> min_eig;          ///< per scan: degeneracy measure of scan-to-map
   std::vector<LoopClosure> loops;       ///< accepted loop closures
   int loop_candidates = 0;              ///< ICP attempts
+  int loops_rejected = 0;               ///< ICP matches refused for too large a correction
   int keyframes = 0;
   StageTimes times;
   Cloud map;                            ///< world frame, voxel-filtered (cfg.map_voxel_m)
