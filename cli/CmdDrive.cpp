@@ -15,7 +15,7 @@ void registerDrive(CLI::App& app, Context& ctx) {
     std::string net, route, out, sensor, map_png;
     std::size_t map_stride = 1;
     double map_res = 0.2;
-    bool save_scans = false, no_mesh = false;
+    bool save_scans = false, no_mesh = false, strict_turns = false;
     double traffic = -1.0;
   };
   auto o = std::make_shared<Opts>();
@@ -39,6 +39,9 @@ void registerDrive(CLI::App& app, Context& ctx) {
   sub->add_option("--map-resolution", o->map_res, "metres per pixel of --map-png")
       ->check(CLI::PositiveNumber);
   sub->add_flag("--no-mesh", o->no_mesh, "do not write world.ply");
+  sub->add_flag("--strict-turns", o->strict_turns,
+                "reject a route with a turn SUMO does not allow (default: join it by the shortest "
+                "legal detour, with a warning)");
   sub->callback([&ctx, o] {
     ctx.load();
     simulate::Config cfg = ctx.cfg.simulate;
@@ -50,6 +53,7 @@ void registerDrive(CLI::App& app, Context& ctx) {
     d.out_dir = o->out;
     d.save_scans = o->save_scans;
     d.write_world_mesh = !o->no_mesh;
+    d.join_forbidden_turns = !o->strict_turns;
     d.seed = ctx.cfg.seed;
     const simulate::DriveResult r = simulate::runDrive(d, cfg);
     char line[256];

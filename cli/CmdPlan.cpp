@@ -86,6 +86,9 @@ void registerPlan(CLI::App& app, Context& ctx) {
               << std::setprecision(2) << r.planning_seconds << " s"
               << (r.completed_by_shortest_paths ? " (completed by shortest paths)" : "") << "\n"
               << "wrote " << out.string() << (rou.empty() ? "" : " and " + rou.string()) << "\n";
+    if (const int n = extra.value("edges_without_sumo", 0); n > 0 && !rou.empty())
+      std::cout << n << " route edge(s) have no SUMO edges (links SUMO models inside junctions); "
+                << "`drive` joins their neighbours by legal SUMO paths\n";
   });
 }
 

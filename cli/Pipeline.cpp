@@ -28,10 +28,11 @@ void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {
   if (r.sumo_edges.empty())
     throw std::runtime_error(route_json.string() + ": route has no SUMO edges (graph not matched to the net?)");
   const LegalRoute legal = legalizeSumoRoute(net, r.sumo_edges);
-  if (legal.repaired_transitions > 0) {
+  if (legal.repaired_transitions > 0 || legal.dropped_edges > 0) {
     std::ostringstream note;
     note << (r.notes.empty() ? "" : r.notes + "; ") << "SUMO route: " << legal.repaired_transitions
          << " transitions joined by legal detours (+" << static_cast<int>(legal.added_length_m) << " m)";
+    if (legal.dropped_edges > 0) note << ", " << legal.dropped_edges << " edges no legal path passes dropped";
     r.notes = note.str();
     r.sumo_edges = legal.edges;
     r.writeJson(route_json);

@@ -4,6 +4,7 @@
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/graph/strong_components.hpp>
 
 #include <algorithm>
 #include <stdexcept>
@@ -47,33 +48,57 @@ LegalRoute legalizeSumoRoute(const SumoNet& net, const std::vector<std::string>&
         if (it != index.end() && net.turnAllowed(c.from, c.to))
           boost::add_edge(i, it->second, pax[it->second]->length(), lg);
       }
+  std::vector<std::size_t> comp(pax.size());
+  const std::size_t ncomp = pax.empty() ? 0 : boost::strong_components(
+      lg, boost::make_iterator_property_map(comp.begin(), boost::get(boost::vertex_index, lg)));
+  std::vector<std::size_t> comp_size(ncomp, 0);
+  for (std::size_t c : comp) ++comp_size[c];
+  const std::size_t largest =
+      static_cast<std::size_t>(std::max_element(comp_size.begin(), comp_size.end()) - comp_size.begin());
+  auto inLargest = [&](const std::string& id) { return comp[index.at(id)] == largest; };
+
   std::vector<double> dist(pax.size());
   std::vector<std::size_t> pred(pax.size());
   out.edges.push_back(edges.front());
   for (std::size_t k = 1; k < edges.size(); ++k) {
-    const std::string& a = out.edges.back();
     const std::string& b = edges[k];
-    if (a == b) continue;
-    if (net.turnAllowed(a, b)) {
-      out.edges.push_back(b);
-      continue;
-    }
-    const std::size_t s = index.at(a), t = index.at(b);
-    boost::dijkstra_shortest_paths(
-        lg, s,
-        boost::predecessor_map(boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, lg)))
-            .distance_map(boost::make_iterator_property_map(dist.begin(), boost::get(boost::vertex_index, lg))));
-    if (pred[t] == t)
+    const bool b_interior = k + 1 < edges.size();
+    for (;;) {
+      const std::string a = out.edges.back();
+      if (a == b) break;
+      if (net.turnAllowed(a, b)) {
+        out.edges.push_back(b);
+        break;
+      }
+      const std::size_t s = index.at(a), t = index.at(b);
+      boost::dijkstra_shortest_paths(
+          lg, s,
+          boost::predecessor_map(boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, lg)))
+              .distance_map(boost::make_iterator_property_map(dist.begin(), boost::get(boost::vertex_index, lg))));
+      if (pred[t] != t) {
+        std::vector<std::size_t> path;
+        for (std::size_t v = pred[t]; v != s; v = pred[v]) path.push_back(v);
+        std::reverse(path.begin(), path.end());
+        for (std::size_t v : path) {
+          out.edges.push_back(pax[v]->id);
+          out.added_length_m += pax[v]->length();
+        }
+        out.edges.push_back(b);
+        ++out.repaired_transitions;
+        break;
+      }
+      // No legal way: drop whichever of the two lies outside the drivable core (b first).
+      if (b_interior && !inLargest(b)) {
+        ++out.dropped_edges;
+        break;
+      }
+      if (out.edges.size() > 1 && !inLargest(a)) {
+        out.edges.pop_back();
+        ++out.dropped_edges;
+        continue;
+      }
       throw std::invalid_argument(where + ": no legal way from edge '" + a + "' to edge '" + b + "'");
-    std::vector<std::size_t> path;
-    for (std::size_t v = pred[t]; v != s; v = pred[v]) path.push_back(v);
-    std::reverse(path.begin(), path.end());
-    for (std::size_t v : path) {
-      out.edges.push_back(pax[v]->id);
-      out.added_length_m += pax[v]->length();
     }
-    out.edges.push_back(b);
-    ++out.repaired_transitions;
   }
   return out;
 }

@@ -68,6 +68,10 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
                          {"turn_restricted", pg.restricted},
                          {"total_edge_length_m", pg.total_edge_len}};
   extra["illegal_turns"] = countIllegalTurns(pg, out.edges);
+  int without_sumo = 0;
+  for (int e : out.edges)
+    without_sumo += g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges.empty();
+  extra["edges_without_sumo"] = without_sumo;
   extra["start_node"] = pg.node_orig[static_cast<std::size_t>(start)];
   r.extra_json = extra.dump();
   return r;

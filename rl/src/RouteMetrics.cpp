@@ -1,4 +1,7 @@
 // Route metrics (route.json): coverage, revisits, loop closures, weight, EIF log-det along it.
+// The SUMO edge list concatenates the graph edges' SUMO chains; a graph edge without SUMO edges
+// (a short link SUMO models inside a junction) adds nothing, and the drive's legalisation joins
+// its neighbours (cli makeRouteDrivable).
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
@@ -28,7 +31,6 @@ void fillRouteMetrics(const PlanGraph& pg, const RoadGraph& g, int start,
   r.edges.clear();
   r.sumo_edges.clear();
   r.logdet_cov_along.clear();
-  bool sumo_known = true;
   std::vector<char> node_seen(sz(pg.n), 0), street_seen(sz(pg.num_streets), 0);
   std::vector<double> last_travel(sz(pg.n), 0.0);
   std::vector<Info3> node_info(sz(pg.n));
@@ -44,7 +46,6 @@ void fillRouteMetrics(const PlanGraph& pg, const RoadGraph& g, int start,
     const RoadEdge& re = g.edges[sz(pg.edge_orig[sz(e)])];
     r.edges.push_back(re.id);
     r.nodes.push_back(pg.node_orig[sz(pg.v[sz(e)])]);
-    if (re.sumo_edges.empty()) sumo_known = false;
     for (const auto& s : re.sumo_edges)
       if (r.sumo_edges.empty() || r.sumo_edges.back() != s) r.sumo_edges.push_back(s);
     length += pg.len[sz(e)];
@@ -73,7 +74,6 @@ void fillRouteMetrics(const PlanGraph& pg, const RoadGraph& g, int start,
     r.max_logdet_cov = std::max(r.max_logdet_cov, ld);
     r.final_logdet_cov = ld;
   }
-  if (!sumo_known) r.sumo_edges.clear();
   r.length_m = length;
   r.node_coverage_pct = 100.0 * nodes_seen / pg.n;
   r.edge_coverage_pct = pg.total_street_len > 0 ? 100.0 * covered / pg.total_street_len : 100.0;

@@ -245,13 +245,14 @@ DriveResult runDrive(const DriveOptions& opts, const Config& cfg) {
   const auto wall0 = std::chrono::steady_clock::now();
   const SumoNet net = SumoNet::read(opts.net);
   const Route route = Route::readJson(opts.route_file);
-  validateRoute(net, route.sumo_edges, opts.route_file.string());
+  const std::vector<std::string> edges =
+      drivableRoute(net, route.sumo_edges, opts.route_file.string(), opts.join_forbidden_turns);
   const LidarSpec spec = resolveLidarSpec(cfg.lidar);
   StagingDir staging(opts.out_dir, drive_files::kDriveInfo);
 
-  logInfo("drive: " + std::to_string(route.sumo_edges.size()) + " edges on " + opts.net.string());
-  DriveRecord rec = recordDrive(net, route.sumo_edges, cfg, spec, opts.seed);
-  DriveResult res = writeDriveFolder(staging.path(), net, route.sumo_edges, rec, cfg, spec, opts);
+  logInfo("drive: " + std::to_string(edges.size()) + " edges on " + opts.net.string());
+  DriveRecord rec = recordDrive(net, edges, cfg, spec, opts.seed);
+  DriveResult res = writeDriveFolder(staging.path(), net, edges, rec, cfg, spec, opts);
   staging.commit();
   res.out_dir = staging.target();
   res.wall_seconds =

@@ -39,6 +39,9 @@ struct DriveOptions {
   std::filesystem::path out_dir;
   bool save_scans = false;       ///< write KITTI scans (else regenerated on demand)
   bool write_world_mesh = true;  ///< write world.ply
+  /// Join consecutive edges SUMO does not connect with the shortest legal detour (a route
+  /// planned on a trace-built graph can contain such turns); false: reject the route instead.
+  bool join_forbidden_turns = true;
   std::uint64_t seed = 42;
 };
 
@@ -76,10 +79,17 @@ void visitFields(V& v, DriveWorldFile& c) {
 DriveWorldFile readDriveWorldFile(const std::filesystem::path& drive_dir);
 
 /// Checks a route before SUMO starts: not empty, every edge in the net and open to passenger
-/// cars, every consecutive pair a turn SUMO allows (a <connection>). Throws
+/// cars, and (check_turns) every consecutive pair a turn SUMO allows (a <connection>). Throws
 /// std::invalid_argument "WHERE: …" naming the first offending edge and its position.
 void validateRoute(const SumoNet& net, const std::vector<std::string>& edges,
-                   const std::string& where);
+                   const std::string& where, bool check_turns = true);
+
+/// The edge sequence a drive follows: validated as above; with `join_forbidden_turns` each
+/// consecutive pair SUMO does not connect is joined by the shortest legal detour (a warning
+/// says how many and how long). Throws std::invalid_argument "WHERE: …" when an edge is bad or
+/// no legal way joins a pair.
+std::vector<std::string> drivableRoute(const SumoNet& net, const std::vector<std::string>& edges,
+                                       const std::string& where, bool join_forbidden_turns);
 
 /// Quick look at map crispness: the scans stacked with their poses (point in world =
 /// T_world_sensor * point), drawn top-down, every pixel coloured by the highest point in it
