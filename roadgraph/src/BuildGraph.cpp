@@ -54,6 +54,11 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
     const std::size_t unmapped = mapSumoEdges(g, net, cfg.sumo);
     if (unmapped > 0)
       logWarn("build-graph: " + std::to_string(unmapped) + " edge(s) not mapped to SUMO edges");
+    if (cfg.sumo.turns_from_net) {
+      const TurnStats ts = turnsFromNet(g, net, cfg.sumo);
+      logInfo("build-graph: turns from the net: " + std::to_string(ts.forbidden_turns) + " of " +
+              std::to_string(ts.candidate_turns) + " turns at the graph's nodes are not allowed in SUMO");
+    }
   }
 
   const auto& st = out.built.stats;

@@ -208,7 +208,7 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
     }
     return {};
   };
-  std::size_t unmapped = 0, gaps = 0, dropped = 0;
+  std::size_t unmapped = 0, gaps = 0, dropped = 0, strays = 0;
   for (auto& ge : graph.edges) {
     ge.sumo_edges.clear();
     const auto& pl = ge.polyline;
@@ -290,6 +290,28 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
       dropped += m - chain.size();
       seq.assign(chain.rbegin(), chain.rend());
     }
+    // A chain should leave u and reach v. An end edge pointing the other way (a crossing road's
+    // lane arriving at u, or one leaving v, matched by the samples next to the node) is stray.
+    if (seq.size() >= 2) {
+      const Point3& pu = graph.nodes[static_cast<std::size_t>(ge.u)].pos;
+      auto dist = [](const Point3& a, const Point3& b) { return (a - b).head<2>().norm(); };
+      const SumoEdge* first = edges[static_cast<std::size_t>(seq.front())];
+      if (first->length() >= cfg.stray_min_length_m && !first->shape.empty() &&
+          dist(first->shape.back(), pu) < std::min(cfg.stray_radius_m, dist(first->shape.front(), pu))) {
+        seq.erase(seq.begin());
+        ++strays;
+      }
+    }
+    if (seq.size() >= 2) {
+      const Point3& pv = graph.nodes[static_cast<std::size_t>(ge.v)].pos;
+      auto dist = [](const Point3& a, const Point3& b) { return (a - b).head<2>().norm(); };
+      const SumoEdge* last = edges[static_cast<std::size_t>(seq.back())];
+      if (last->length() >= cfg.stray_min_length_m && !last->shape.empty() &&
+          dist(last->shape.front(), pv) < std::min(cfg.stray_radius_m, dist(last->shape.back(), pv))) {
+        seq.pop_back();
+        ++strays;
+      }
+    }
     for (std::size_t k = 0; k < seq.size(); ++k) {
       const SumoEdge* cur = edges[static_cast<std::size_t>(seq[k])];
       if (k > 0) {
@@ -308,6 +330,9 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
   if (dropped > 0)
     logInfo("build-graph: " + std::to_string(dropped) +
             " SUMO edge match(es) dropped that no drivable chain along their graph edge passes");
+  if (strays > 0)
+    logInfo("build-graph: " + std::to_string(strays) +
+            " SUMO edge(s) dropped from chain ends that arrive at the start node or leave the end node");
   if (gaps > 0)
     logWarn("build-graph: " + std::to_string(gaps) +
             " gap(s) between consecutive SUMO edges could not be bridged");

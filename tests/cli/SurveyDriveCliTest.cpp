@@ -56,12 +56,28 @@ TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {
       "route.json: edge 'g01_gXX'", dir, 1);
 }
 
-TEST(SurveyDriveCli, DriveRejectsATurnSumoDoesNotAllow) {
+TEST(SurveyDriveCli, DriveWithStrictTurnsRejectsATurnSumoDoesNotAllow) {
   const auto dir = test::cliTempDir("drive_bad_turn");
   const auto route = writeRoute(dir, "route.json", R"({"sumo_edges":["g00_g01","g10_g11"]})");
-  expectCleanFailure(
-      "drive --net " + kGrid + " --route " + route.string() + " --out " + (dir / "out").string(),
-      "'g00_g01' -> 'g10_g11'", dir, 1);
+  expectCleanFailure("drive --strict-turns --net " + kGrid + " --route " + route.string() +
+                         " --out " + (dir / "out").string(),
+                     "'g00_g01' -> 'g10_g11'", dir, 1);
+}
+
+TEST(SurveyDriveCli, DriveJoinsATurnSumoDoesNotAllowWithAWarning) {
+  const auto dir = test::cliTempDir("drive_joined_turn");
+  const auto route = writeRoute(dir, "route.json", R"({"sumo_edges":["g00_g01","g10_g11"]})");
+  const auto r = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
+                              (dir / "out").string() + " --no-mesh --log-level warn");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("1 turn(s) SUMO does not allow joined by the shortest legal detour"),
+            std::string::npos)
+      << r.out;
+  const auto j = nlohmann::json::parse(std::ifstream(dir / "out/drive.json"));
+  const auto edges = j["route"].get<std::vector<std::string>>();
+  ASSERT_GT(edges.size(), 2u);
+  EXPECT_EQ(edges.front(), "g00_g01");
+  EXPECT_EQ(edges.back(), "g10_g11");
 }
 
 TEST(SurveyDriveCli, DriveRejectsAnEmptyRoute) {

@@ -170,6 +170,10 @@ struct SumoMatchConfig {
   double sample_step_m = 4.0;       ///< polyline sampling for the SUMO edge mapping [m]
   double max_lane_dist_m = 12.0;    ///< samples farther from every lane are not mapped [m]
   double end_skip_m = 8.0;          ///< samples this close to an end node are skipped [m]
+  double stray_radius_m = 25.0;     ///< end edge arriving at u / leaving v this close: stray [m]
+  double stray_min_length_m = 20.0; ///< shorter end edges (junction complexes) are kept [m]
+  bool turns_from_net = true;       ///< turn permissions of the graph from the net's connections
+  double turn_max_detour_m = 60.0;  ///< SUMO edges allowed between two graph edges at a turn [m]
 };
 template <class V>
 void visitFields(V& v, SumoMatchConfig& c) {
@@ -177,6 +181,13 @@ void visitFields(V& v, SumoMatchConfig& c) {
   v.field("sample_step_m", c.sample_step_m, "polyline sampling for SUMO edge mapping [m]");
   v.field("max_lane_dist_m", c.max_lane_dist_m, "samples farther from every lane unmapped [m]");
   v.field("end_skip_m", c.end_skip_m, "samples this close to end nodes are skipped [m]");
+  v.field("stray_radius_m", c.stray_radius_m,
+          "chain end edge arriving at the start / leaving the end node this close is dropped [m]");
+  v.field("stray_min_length_m", c.stray_min_length_m, "shorter chain end edges are kept [m]");
+  v.field("turns_from_net", c.turns_from_net,
+          "turn permissions of the graph from the net (no U-turn where SUMO has none)");
+  v.field("turn_max_detour_m", c.turn_max_detour_m,
+          "SUMO edges allowed between two graph edges at a turn [m]");
 }
 
 struct Config {

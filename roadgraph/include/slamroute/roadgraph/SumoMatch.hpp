@@ -35,7 +35,20 @@ ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<ch
                                     const SumoNet& net, const SumoMatchConfig& cfg);
 
 /// Fills RoadEdge::sumo_edges with the passenger SUMO edges along each edge, in driving order
-/// (nearest lane in the edge's direction of travel). Returns the number of edges left unmapped.
+/// (nearest lane in the edge's direction of travel). An end edge of a chain that arrives at u or
+/// leaves v (cfg.stray_radius_m) is a stray match of a crossing road and dropped. Returns the
+/// number of edges left unmapped.
 std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchConfig& cfg);
+
+struct TurnStats {
+  std::size_t candidate_turns = 0;  ///< (in edge, out edge) pairs at the graph's nodes
+  std::size_t forbidden_turns = 0;  ///< of these, the ones SUMO does not lead through
+};
+/// Sets the graph's turn permissions (restricted_turns, allowed_next) from the net, after
+/// mapSumoEdges: e -> f is allowed when SUMO leads from e's last SUMO edge to f's first one
+/// over at most cfg.turn_max_detour_m of edges in between (plus the stretches between the node
+/// and the two chains' ends), or they are the same SUMO edge.
+/// An edge without SUMO edges keeps every turn except back onto its own street.
+TurnStats turnsFromNet(RoadGraph& graph, const SumoNet& net, const SumoMatchConfig& cfg);
 
 }  // namespace slamroute::roadgraph
