@@ -35,6 +35,7 @@ void registerRun(CLI::App& app, Context& ctx) {
   struct Opts {
     std::string net, out, planners = "qlearning,random,postman";
     int jobs = 2;
+    int slam_jobs = 0;
     bool save_scans = false;
   };
   auto o = std::make_shared<Opts>();
@@ -44,6 +45,10 @@ void registerRun(CLI::App& app, Context& ctx) {
   sub->add_option("--planners", o->planners, "comma-separated planners to compare")->capture_default_str();
   sub->add_option("--jobs", o->jobs, "steps run at once (each SUMO step is its own process)")
       ->capture_default_str()->check(CLI::Range(1, 64));
+  sub->add_option("--slam-jobs", o->slam_jobs,
+                  "SLAM runs at once (0 = one per planner, sharing the cores: the stage ends when "
+                  "the total work is done, not when the longest route's queue is; ~1.8 GB each)")
+      ->capture_default_str()->check(CLI::Range(0, 64));
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->callback([&ctx, o] {
     ctx.load();
@@ -120,7 +125,8 @@ void registerRun(CLI::App& app, Context& ctx) {
       s5.push_back(childStep(ctx, "evaluate " + p,
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));
-    record(s5, runSteps(s5, o->jobs));
+    const int slam_jobs = o->slam_jobs > 0 ? o->slam_jobs : std::max(o->jobs, static_cast<int>(s5.size()));
+    record(s5, runSteps(s5, slam_jobs));
 
     logInfo("[6/6] report");
     ReportInputs in;

@@ -74,6 +74,42 @@ Pose3 WheelOdometry::motion(double t0, double t1) const {
   return M;
 }
 
+GyroBiasResult removeStandstillGyroBias(const WheelOdometry& odo, double standstill_mps,
+                                        double min_standstill_s, double margin_s) {
+  GyroBiasResult r;
+  std::vector<OdometrySample> out = odo.samples();
+  const std::size_t n = out.size();
+  // Standstill samples: every sample within margin_s on both sides is below the speed.
+  std::vector<char> still(n, 0);
+  std::size_t lo = 0, hi = 0, fast = 0;  // window [lo, hi) and the fast samples in it
+  auto isFast = [&](std::size_t j) { return std::abs(out[j].speed_mps) >= standstill_mps; };
+  for (std::size_t k = 0; k < n; ++k) {
+    while (hi < n && out[hi].t <= out[k].t + margin_s) fast += isFast(hi++);
+    while (out[lo].t < out[k].t - margin_s) fast -= isFast(lo++);
+    still[k] = fast == 0 && out[k].t - margin_s >= out.front().t && out[k].t + margin_s <= out.back().t;
+  }
+  // Causal: sample k uses the standstill samples already confirmed (margin_s behind it).
+  double still_s = 0.0, still_sum = 0.0;
+  std::size_t p = 0;
+  std::vector<double> raw(n);
+  for (std::size_t k = 0; k < n; ++k) raw[k] = out[k].yaw_rate_rad_s;
+  for (std::size_t k = 0; k < n; ++k) {
+    for (; p < n && out[p].t + margin_s <= out[k].t; ++p) {
+      const double dt = p + 1 < n ? out[p + 1].t - out[p].t : 0.0;
+      if (!still[p] || dt <= 0.0) continue;
+      still_s += dt;
+      still_sum += raw[p] * dt;
+    }
+    if (still_s >= min_standstill_s) {
+      r.final_bias_rad_s = still_sum / still_s;
+      out[k].yaw_rate_rad_s -= r.final_bias_rad_s;
+    }
+  }
+  r.standstill_s = still_s;
+  r.odometry = WheelOdometry(std::move(out));
+  return r;
+}
+
 WheelOdometry readOdometryCsv(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open odometry file");

@@ -202,6 +202,15 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   if (cfg.use_odometry && fs::exists(odo_file)) odometry = readOdometryCsv(odo_file);
   if (cfg.use_odometry && odometry.empty())
     logInfo("evaluate: no " + odo_file.string() + ": predicting motion with a constant-velocity model");
+  GyroBiasResult gyro;
+  if (!odometry.empty() && cfg.gyro_standstill_mps > 0) {
+    gyro = removeStandstillGyroBias(odometry, cfg.gyro_standstill_mps, cfg.gyro_min_standstill_s,
+                                    cfg.gyro_standstill_margin_s);
+    odometry = gyro.odometry;
+    if (gyro.standstill_s >= cfg.gyro_min_standstill_s)
+      logInfo("evaluate: gyro bias " + std::to_string(gyro.final_bias_rad_s * 180.0 / std::numbers::pi) +
+              " deg/s from " + std::to_string(static_cast<int>(gyro.standstill_s)) + " s of standstill");
+  }
 
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
@@ -214,6 +223,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   nlohmann::json j = trajectoryJson(m);
   j["initial_pose"] =
       "ground-truth pose of the first scan and motion to the second (estimate is in the world frame)";
+  j["gyro_standstill_s"] = gyro.standstill_s;
+  j["gyro_bias_deg_s"] = gyro.final_bias_rad_s * 180.0 / std::numbers::pi;
   j["motion_prior"] = odometry.empty() ? "constant velocity" : "wheel odometry + gyro (odometry.csv)";
   j["scans"] = slam.trajectory.size();
   j["scan_stride"] = cfg.scan_stride;

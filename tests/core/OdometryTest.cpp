@@ -83,3 +83,42 @@ TEST(Odometry, ImuRollAndPitchRoundTripAndAreOptional) {
 
 }  // namespace
 }  // namespace slamroute
+
+namespace slamroute {
+namespace {
+
+// A drive that stops for 5 s (5..10 s), then turns at 0.1 rad/s: a gyro with a 0.01 rad/s bias
+// is corrected once 2 s of standstill are confirmed (0.6 s margins: from 5.6 s, confirmed 0.6 s
+// later, so from 8.2 s on); the stop's first and last 0.6 s, when a car may already turn, do not
+// count (here the gyro reads a turn there that must not enter the bias).
+TEST(Odometry, GyroBiasFromStandstill) {
+  std::vector<OdometrySample> s;
+  const double bias = 0.01;
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 0.1 * k;
+    const bool stopped = t >= 5.0 - 1e-9 && t < 10.0 - 1e-9;
+    double true_rate = t >= 10.0 - 1e-9 ? 0.1 : 0.0;
+    if (t > 9.65 && t < 10.0) true_rate = 0.3;  // turning as it starts
+    s.push_back({t, stopped ? 0.0 : 10.0, true_rate + bias});
+  }
+  const GyroBiasResult r = removeStandstillGyroBias(WheelOdometry(s), 0.05, 2.0, 0.6);
+  EXPECT_NEAR(r.final_bias_rad_s, bias, 1e-12);
+  EXPECT_GT(r.standstill_s, 3.0);
+  EXPECT_LT(r.standstill_s, 4.0);
+  const auto& c = r.odometry.samples();
+  EXPECT_NEAR(c[10].yaw_rate_rad_s, bias, 1e-12);   // t = 1 s: no standstill seen yet
+  EXPECT_NEAR(c[75].yaw_rate_rad_s, bias, 1e-12);   // t = 7.5 s: not yet 2 s confirmed
+  EXPECT_NEAR(c[90].yaw_rate_rad_s, 0.0, 1e-12);    // t = 9 s: corrected
+  EXPECT_NEAR(c[150].yaw_rate_rad_s, 0.1, 1e-12);   // the turn keeps its true rate
+  const Pose3 m = r.odometry.motion(10.0, 20.0);
+  EXPECT_NEAR(Eigen::AngleAxisd(m.rotation()).angle(), 1.0, 1e-9);
+  // No standstill at all: nothing changes.
+  std::vector<OdometrySample> moving(s);
+  for (auto& x : moving) x.speed_mps = 10.0;
+  const GyroBiasResult none = removeStandstillGyroBias(WheelOdometry(moving));
+  EXPECT_EQ(none.standstill_s, 0.0);
+  EXPECT_NEAR(none.odometry.samples()[150].yaw_rate_rad_s, 0.1 + bias, 1e-12);
+}
+
+}  // namespace
+}  // namespace slamroute

@@ -57,6 +57,20 @@ class WheelOdometry {
   std::vector<OdometrySample> samples_;
 };
 
+/// Gyro bias from standstill (a zero-velocity update, as inertial navigation does at stops):
+/// while the wheels report a speed below `standstill_mps` for `margin_s` before and after, the
+/// car does not turn, so the mean gyro reading there is its bias (the margin keeps out the
+/// moments a car starts or stops, when it may already turn). Each sample's yaw rate has the
+/// estimate from the standstill confirmed before it subtracted (causal, as on the vehicle), once
+/// at least `min_standstill_s` of it was seen; before that the readings are kept.
+struct GyroBiasResult {
+  WheelOdometry odometry;        ///< corrected
+  double standstill_s = 0.0;     ///< standstill time seen over the whole drive [s]
+  double final_bias_rad_s = 0.0; ///< the estimate at the end [rad/s]
+};
+GyroBiasResult removeStandstillGyroBias(const WheelOdometry& odo, double standstill_mps = 0.15,
+                                        double min_standstill_s = 2.0, double margin_s = 0.6);
+
 /// CSV with header "t,speed_mps,yaw_rate_rad_s" and optionally ",roll_rad,pitch_rad" (written
 /// when every sample has them). Throws naming the file and line.
 WheelOdometry readOdometryCsv(const std::filesystem::path& path);
