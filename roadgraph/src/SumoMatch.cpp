@@ -291,26 +291,23 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
       seq.assign(chain.rbegin(), chain.rend());
     }
     // A chain should leave u and reach v. An end edge pointing the other way (a crossing road's
-    // lane arriving at u, or one leaving v, matched by the samples next to the node) is stray.
-    if (seq.size() >= 2) {
-      const Point3& pu = graph.nodes[static_cast<std::size_t>(ge.u)].pos;
-      auto dist = [](const Point3& a, const Point3& b) { return (a - b).head<2>().norm(); };
-      const SumoEdge* first = edges[static_cast<std::size_t>(seq.front())];
-      if (first->length() >= cfg.stray_min_length_m && !first->shape.empty() &&
-          dist(first->shape.back(), pu) < std::min(cfg.stray_radius_m, dist(first->shape.front(), pu))) {
-        seq.erase(seq.begin());
-        ++strays;
-      }
+    // lane arriving at u, or one leaving v, matched by the samples next to the node) is stray:
+    // its `near` end lies close to the node and closer than its other end.
+    auto stray = [&](int sumo, int node, bool arriving) {
+      const SumoEdge* e = edges[static_cast<std::size_t>(sumo)];
+      if (e->length() < cfg.stray_min_length_m || e->shape.empty()) return false;
+      const Point3& p = graph.nodes[static_cast<std::size_t>(node)].pos;
+      const double near = ((arriving ? e->shape.back() : e->shape.front()) - p).head<2>().norm();
+      const double far = ((arriving ? e->shape.front() : e->shape.back()) - p).head<2>().norm();
+      return near < std::min(cfg.stray_radius_m, far);
+    };
+    if (seq.size() >= 2 && stray(seq.front(), ge.u, /*arriving=*/true)) {
+      seq.erase(seq.begin());
+      ++strays;
     }
-    if (seq.size() >= 2) {
-      const Point3& pv = graph.nodes[static_cast<std::size_t>(ge.v)].pos;
-      auto dist = [](const Point3& a, const Point3& b) { return (a - b).head<2>().norm(); };
-      const SumoEdge* last = edges[static_cast<std::size_t>(seq.back())];
-      if (last->length() >= cfg.stray_min_length_m && !last->shape.empty() &&
-          dist(last->shape.front(), pv) < std::min(cfg.stray_radius_m, dist(last->shape.back(), pv))) {
-        seq.pop_back();
-        ++strays;
-      }
+    if (seq.size() >= 2 && stray(seq.back(), ge.v, /*arriving=*/false)) {
+      seq.pop_back();
+      ++strays;
     }
     for (std::size_t k = 0; k < seq.size(); ++k) {
       const SumoEdge* cur = edges[static_cast<std::size_t>(seq[k])];
