@@ -3,6 +3,7 @@
 #include "slamroute/roadgraph/BuildGraph.hpp"
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
@@ -46,18 +47,20 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
     out.weights.fallback_weight = cfg.depth.fallback_weight;
   }
 
+  std::optional<TurnStats> turns;
+  std::size_t unmapped = 0;
   if (!in.net.empty()) {
     const SumoNet net = SumoNet::read(in.net);
     out.validation = validateAgainstNet(g, out.built.node_is_end, net, cfg.sumo);
     for (std::size_t n = 0; n < g.nodes.size(); ++n)
       g.nodes[n].sumo_junction = out.validation->node_junction[n];
-    const std::size_t unmapped = mapSumoEdges(g, net, cfg.sumo);
+    unmapped = mapSumoEdges(g, net, cfg.sumo);
     if (unmapped > 0)
       logWarn("build-graph: " + std::to_string(unmapped) + " edge(s) not mapped to SUMO edges");
     if (cfg.sumo.turns_from_net) {
-      const TurnStats ts = turnsFromNet(g, net, cfg.sumo);
-      logInfo("build-graph: turns from the net: " + std::to_string(ts.forbidden_turns) + " of " +
-              std::to_string(ts.candidate_turns) + " turns at the graph's nodes are not allowed in SUMO");
+      turns = turnsFromNet(g, net, cfg.sumo);
+      logInfo("build-graph: turns from the net: " + std::to_string(turns->forbidden_turns) + " of " +
+              std::to_string(turns->candidate_turns) + " turns at the graph's nodes are not allowed in SUMO");
     }
   }
 
@@ -96,6 +99,10 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
   if (out.validation) {
     meta["net"] = in.net.string();
     meta["validation"] = nlohmann::json::parse(out.validation->toJson());
+    meta["sumo_mapping"] = {{"unmapped_edges", unmapped},
+                            {"turns_from_net", turns.has_value()},
+                            {"candidate_turns", turns ? turns->candidate_turns : 0},
+                            {"forbidden_turns", turns ? turns->forbidden_turns : 0}};
   }
   g.metadata_json = meta.dump();
   return out;

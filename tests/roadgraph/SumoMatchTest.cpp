@@ -143,6 +143,14 @@ TEST(SumoMatch, BolognaSurveyThroughTheCli) {
             << v.at("edge_recall") << "\n";
   EXPECT_GE(v.at("node_f1").get<double>(), 0.8);
   EXPECT_GE(v.at("node_recall").get<double>(), 0.8);
+  // The turn table comes from the net: Bologna forbids U-turns on most streets and has divided
+  // roads, so some turns at the graph's nodes go, but most stay.
+  const auto& sm = meta.at("sumo_mapping");
+  EXPECT_TRUE(sm.at("turns_from_net").get<bool>());
+  const auto forbidden = sm.at("forbidden_turns").get<std::size_t>();
+  EXPECT_GT(forbidden, 0u);
+  EXPECT_LT(forbidden, sm.at("candidate_turns").get<std::size_t>() / 2);
+  EXPECT_FALSE(g.at("turns").is_null());
 }
 
 TEST(SumoMatch, PerfectGraphScoresOne) {
