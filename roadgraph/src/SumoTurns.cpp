@@ -12,38 +12,26 @@
 #include <queue>
 #include <unordered_map>
 
-#include "slamroute/core/Log.hpp"
+#include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/roadgraph/SumoMatch.hpp"
 
 namespace slamroute::roadgraph {
 namespace {
 
-/// Passenger edges of the net and the allowed turns between them.
+/// The net's passenger edges and allowed turns (core DriveGraph) with a bounded search on them.
 struct SumoLineGraph {
+  DriveGraph dg;
   std::unordered_map<std::string, std::size_t> index;
-  std::vector<double> length;
-  std::vector<std::vector<std::size_t>> next;
 
-  explicit SumoLineGraph(const SumoNet& net) {
-    for (const auto& e : net.edges)
-      if (!e.isInternal() && e.allowsPassenger()) {
-        index.emplace(e.id, length.size());
-        length.push_back(e.length());
-      }
-    next.resize(length.size());
-    for (const auto& c : net.connections) {
-      const auto a = index.find(c.from), b = index.find(c.to);
-      if (a == index.end() || b == index.end() || !net.turnAllowed(c.from, c.to)) continue;
-      auto& nx = next[a->second];
-      if (std::find(nx.begin(), nx.end(), b->second) == nx.end()) nx.push_back(b->second);
-    }
+  explicit SumoLineGraph(const SumoNet& net) : dg(DriveGraph::fromNet(net)) {
+    for (std::size_t i = 0; i < dg.numEdges(); ++i) index.emplace(dg.edges[i].sumo_edge, i);
   }
 
   /// Per edge, the least length of the edges driven in between to reach it from `from`
   /// (entering an edge is free; driving through it costs its length); -1 when that exceeds
   /// `cap` or the edge cannot be reached.
   std::vector<double> inBetween(std::size_t from, double cap) const {
-    std::vector<double> dist(length.size(), -1.0), reach(length.size(), -1.0);
+    std::vector<double> dist(dg.numEdges(), -1.0), reach(dg.numEdges(), -1.0);
     using Item = std::pair<double, std::size_t>;
     std::priority_queue<Item, std::vector<Item>, std::greater<>> q;
     q.push({0.0, from});
@@ -52,9 +40,9 @@ struct SumoLineGraph {
       const auto [d, x] = q.top();
       q.pop();
       if (d > dist[x]) continue;
-      for (std::size_t y : next[x]) {
+      for (std::size_t y : dg.allowed_next[x]) {
         if (reach[y] < 0.0 || d < reach[y]) reach[y] = d;
-        const double dy = d + length[y];
+        const double dy = d + dg.edges[y].length_m;
         if (y != from && dy <= cap && (dist[y] < 0.0 || dy < dist[y])) {
           dist[y] = dy;
           q.push({dy, y});
