@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 namespace slamroute::roadgraph::detail {
 
@@ -31,17 +32,11 @@ int branchesAt(const PointGrid& grid, const std::vector<Point3>& pts, const Poin
   const int n = static_cast<int>(s.local.size());
   if (coverage_deg) *coverage_deg = 0.0;
   if (n == 0) return 0;
-  const int G = static_cast<int>(std::ceil(2.0 * R / tol)) + 1;
-  s.heads.assign(static_cast<std::size_t>(G) * static_cast<std::size_t>(G), -1);
-  s.next.assign(static_cast<std::size_t>(n), -1);
-  auto cellOf = [&](double v) { return std::clamp(static_cast<int>((v + R) / tol), 0, G - 1); };
-  for (int i = 0; i < n; ++i) {
-    const auto& d = s.rel[static_cast<std::size_t>(i)];
-    const std::size_t h = static_cast<std::size_t>(cellOf(d.x())) * static_cast<std::size_t>(G) +
-                          static_cast<std::size_t>(cellOf(d.y()));
-    s.next[static_cast<std::size_t>(i)] = s.heads[h];
-    s.heads[h] = i;
-  }
+  if (grid.linkTolerance() != tol)
+    throw std::logic_error("branchesAt: the point grid is not linked at cluster_tolerance_m");
+  if (s.local_of.size() != pts.size()) s.local_of.assign(pts.size(), -1);
+  for (int i = 0; i < n; ++i)
+    s.local_of[static_cast<std::size_t>(s.local[static_cast<std::size_t>(i)])] = i;
   s.disk.reset(static_cast<std::size_t>(n));
   s.ann.reset(static_cast<std::size_t>(n));
   int self = -1;
@@ -52,18 +47,17 @@ int branchesAt(const PointGrid& grid, const std::vector<Point3>& pts, const Poin
       self_d2 = di.squaredNorm();
       self = i;
     }
-    const int gx = cellOf(di.x()), gy = cellOf(di.y());
-    for (int ax = std::max(0, gx - 1); ax <= std::min(G - 1, gx + 1); ++ax)
-      for (int ay = std::max(0, gy - 1); ay <= std::min(G - 1, gy + 1); ++ay)
-        for (int j = s.heads[static_cast<std::size_t>(ax) * static_cast<std::size_t>(G) +
-                             static_cast<std::size_t>(ay)];
-             j >= 0; j = s.next[static_cast<std::size_t>(j)]) {
-          if (j <= i || (s.rel[static_cast<std::size_t>(j)] - di).squaredNorm() > tol2) continue;
-          s.disk.unite(i, j);
-          if (s.in_ann[static_cast<std::size_t>(i)] && s.in_ann[static_cast<std::size_t>(j)])
-            s.ann.unite(i, j);
-        }
+    // Pairs closer than tol, both inside the cylinder (unite keeps the smallest index as root,
+    // so the order of the pairs does not matter).
+    grid.forEachLinked(s.local[static_cast<std::size_t>(i)], [&](int g) {
+      const int j = s.local_of[static_cast<std::size_t>(g)];
+      if (j <= i) return;
+      s.disk.unite(i, j);
+      if (s.in_ann[static_cast<std::size_t>(i)] && s.in_ann[static_cast<std::size_t>(j)])
+        s.ann.unite(i, j);
+    });
   }
+  for (int i : s.local) s.local_of[static_cast<std::size_t>(i)] = -1;
   s.cnt.assign(static_cast<std::size_t>(n), 0);
   s.conn.assign(static_cast<std::size_t>(n), cfg.require_connected ? 0 : 1);
   s.rmin.assign(static_cast<std::size_t>(n), 1e300);
@@ -98,8 +92,8 @@ int branchesAt(const PointGrid& grid, const std::vector<Point3>& pts, const Poin
     const double wgt = rad >= 0.5 * (cfg.inner_radius_m + cfg.outer_radius_m) ? 1.0 : 1e-3;
     s.sx[r] += wgt * d.x() / rad;
     s.sy[r] += wgt * d.y() / rad;
-    s.mom[r] += Eigen::Matrix<double, 5, 1>(d.x(), d.y(), d.x() * d.x(), d.x() * d.y(),
-                                            d.y() * d.y());
+    s.mom[r] +=
+        Eigen::Matrix<double, 5, 1>(d.x(), d.y(), d.x() * d.x(), d.x() * d.y(), d.y() * d.y());
     // No trace point at the centre (a refined node position): connectivity cannot be tested.
     if (self_root < 0 || s.disk.find(i) == self_root) s.conn[r] = 1;
   }
@@ -169,7 +163,8 @@ int branchesAt(const PointGrid& grid, const std::vector<Point3>& pts, const Poin
     for (int i = 0; i < n; ++i) {
       if (!s.in_ann[static_cast<std::size_t>(i)]) continue;
       const int b = branch_of[static_cast<std::size_t>(s.ann.find(i))];
-      if (b >= 0) (*members)[static_cast<std::size_t>(b)].push_back(s.local[static_cast<std::size_t>(i)]);
+      if (b >= 0)
+        (*members)[static_cast<std::size_t>(b)].push_back(s.local[static_cast<std::size_t>(i)]);
     }
   }
   if (coverage_deg) *coverage_deg = 360.0 / 64.0 * static_cast<double>(std::popcount(sectors));

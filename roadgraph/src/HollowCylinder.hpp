@@ -15,7 +15,8 @@ struct Scratch {
   std::vector<int> local;
   std::vector<Point3> rel;
   std::vector<char> in_ann;
-  std::vector<int> heads, next, cnt;
+  std::vector<int> local_of;  // per point of the whole set: its index in `local`, else -1
+  std::vector<int> cnt;
   std::vector<double> rmin, rmax, sx, sy;
   std::vector<char> conn;
   std::vector<Eigen::Matrix<double, 5, 1>> mom;  // per cluster: sum x, y, xx, xy, yy
@@ -24,9 +25,9 @@ struct Scratch {
   std::vector<std::vector<int>> members;
 };
 
-/// Hollow-cylinder test around c: returns the number of branches; with `members`, their points
-/// (indices into pts); with `coverage_deg`, the range of bearings [deg] the outer half of the
-/// ring holds points in (64 sectors).
+/// Hollow-cylinder test around c (grid linked at cfg.cluster_tolerance_m): returns the number of
+/// branches; with `members`, their points (indices into pts); with `coverage_deg`, the range of
+/// bearings [deg] the outer half of the ring holds points in (64 sectors).
 int branchesAt(const PointGrid& grid, const std::vector<Point3>& pts, const Point3& c,
                const NodeConfig& cfg, Scratch& s, std::vector<std::vector<int>>* members,
                double* coverage_deg = nullptr);

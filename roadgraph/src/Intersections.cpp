@@ -100,6 +100,7 @@ double median(std::vector<double> v) {
 
 int countBranches(const std::vector<Point3>& pts, const Point3& centre, const NodeConfig& cfg) {
   PointGrid grid(pts, 5.0);
+  grid.linkWithin(cfg.cluster_tolerance_m);
   Scratch s;
   return branchesAt(grid, pts, centre, cfg, s, nullptr);
 }
@@ -163,7 +164,8 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
   const std::size_t n = pts.size();
   res.is_intersection.assign(n, 0);
   res.node_of_point.assign(n, -1);
-  const PointGrid grid(pts, 5.0);
+  PointGrid grid(pts, 5.0);
+  grid.linkWithin(cfg.cluster_tolerance_m);
 
   // Second, larger cylinder (radii x wide_scale): at a big junction (4-lane avenues, a junction
   // box of ~25 m) turning traffic runs through the paper's 10-25 m ring and links the arms into
