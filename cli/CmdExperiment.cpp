@@ -96,7 +96,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     std::string which, net, out = "out/experiment_paper";
     int seeds = 5, jobs = 2;
     std::vector<int> sizes{50, 100, 500, 2000};
-    bool table3_only = false;
+    bool table3_only = false, resume = false;
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("experiment", "Reproduce the paper's tables (§4) over several seeds");
@@ -107,15 +107,22 @@ void registerExperiment(CLI::App& app, Context& ctx) {
   sub->add_option("--jobs", o->jobs, "steps run at once")->capture_default_str()->check(CLI::Range(1, 64));
   sub->add_option("--sizes", o->sizes, "graph sizes for Table 3 (comma-separated)")->delimiter(',')->capture_default_str();
   sub->add_flag("--table3-only", o->table3_only, "only the planning-time table (no SUMO, no SLAM)");
+  sub->add_flag("--resume", o->resume,
+                "keep the survey, graph, routes, drives and evaluations already in --out (an "
+                "interrupted run, or new evaluations of the same drives after deleting eval/); "
+                "they must come from the same settings");
   sub->callback([&ctx, o] {
     ctx.load();
     const auto t0 = std::chrono::steady_clock::now();
     const fs::path out = fs::absolute(o->out);
     fs::create_directories(out / "logs");
+    // With --resume, steps whose output exists are kept instead of run again.
+    auto todo = [&o](std::vector<Step> steps) { return o->resume ? stepsNotDone(std::move(steps)) : steps; };
     std::ostringstream md;
     md << "# The paper's tables, reproduced\n\nCommand: `slamroute --seed " << ctx.cfg.seed
        << " experiment paper --out " << o->out
-       << (o->table3_only ? std::string(" --table3-only") : " --seeds " + std::to_string(o->seeds)) << "`\n\n";
+       << (o->table3_only ? std::string(" --table3-only") : " --seeds " + std::to_string(o->seeds))
+       << (o->resume ? " --resume" : "") << "`\n\n";
 
     if (!o->table3_only) {
       const std::string net_path = fs::absolute(o->net.empty() ? defaultNetPath() : o->net).string();
@@ -124,13 +131,15 @@ void registerExperiment(CLI::App& app, Context& ctx) {
       logInfo("[1/4] survey and road graph");
       std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_path, "--out", (out / "survey").string()},
                                      out / "logs" / "survey.log")};
-      runSteps(s1, 1);
+      s1[0].output = out / "survey" / "survey.json";
+      runSteps(todo(s1), 1);
       const fs::path graph = out / "graph" / "graph.json";
       std::vector<Step> s2{childStep(ctx, "build-graph",
                                      {"build-graph", "--survey", (out / "survey").string(), "--net", net_path,
                                       "--out", graph.string()},
                                      out / "logs" / "build-graph.log")};
-      runSteps(s2, 1);
+      s2[0].output = graph;
+      runSteps(todo(s2), 1);
 
       logInfo("[2/4] planning " + std::to_string(o->seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
       std::vector<Step> plans, random_plans, drives, evals;
@@ -147,25 +156,28 @@ void registerExperiment(CLI::App& app, Context& ctx) {
           }
           (v.planner == "random" ? random_plans : plans)
               .push_back(childStep(ctx, "plan " + id, a, out / "logs" / ("plan-" + id + ".log"), s));
+          (v.planner == "random" ? random_plans : plans).back().output = out / "routes" / (id + ".json");
           drives.push_back(childStep(ctx, "drive " + id,
                                      {"drive", "--net", net_path, "--route", (out / "routes" / (id + ".json")).string(),
                                       "--out", (out / "drives" / id).string()},
                                      out / "logs" / ("drive-" + id + ".log"), s));
+          drives.back().output = out / "drives" / id / "drive.json";  // the folder appears complete
           evals.push_back(childStep(ctx, "evaluate " + id,
                                     {"evaluate", "--drive", (out / "drives" / id).string(), "--out",
                                      (out / "eval" / id).string()},
                                     out / "logs" / ("evaluate-" + id + ".log"), s));
+          evals.back().output = out / "eval" / id / "metrics.json";  // written last
         }
-      runSteps(plans, o->jobs);
+      runSteps(todo(plans), o->jobs);
       for (auto& st : random_plans)
         for (auto& a : st.args)
           if (!a.empty() && a[0] == '@') a = std::to_string(routeLength(a.substr(1)));
-      runSteps(random_plans, o->jobs);
+      runSteps(todo(random_plans), o->jobs);
       for (int s = 1; s <= o->seeds; ++s)
         for (const auto& v : kVariants) makeRouteDrivable(net, out / "routes" / (v.name + "_s" + std::to_string(s) + ".json"));
       logInfo("[3/4] driving and LiDAR SLAM");
-      runSteps(drives, o->jobs);
-      runSteps(evals, o->jobs);
+      runSteps(todo(drives), o->jobs);
+      runSteps(todo(evals), o->jobs);
 
       std::map<std::string, std::map<std::string, Stat>> st;
       for (int s = 1; s <= o->seeds; ++s)

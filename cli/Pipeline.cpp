@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "slamroute/core/Log.hpp"
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/core/SumoRoute.hpp"
@@ -19,6 +20,17 @@ Step childStep(const Context& ctx, const std::string& label, std::vector<std::st
   }
   full.insert(full.end(), args.begin(), args.end());
   return {label, full, log};
+}
+
+std::vector<Step> stepsNotDone(std::vector<Step> steps) {
+  std::vector<Step> left;
+  for (auto& st : steps) {
+    if (!st.output.empty() && fs::exists(st.output))
+      logInfo("  kept     " + st.label + " (" + st.output.string() + ")");
+    else
+      left.push_back(std::move(st));
+  }
+  return left;
 }
 
 double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }

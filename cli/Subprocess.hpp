@@ -12,6 +12,9 @@ struct Step {
   std::string label;               ///< shown in progress lines
   std::vector<std::string> args;   ///< arguments after the program name
   std::filesystem::path log;       ///< child's stdout+stderr go here
+  /// The file the step writes last (atomically); `experiment --resume` skips a step whose output
+  /// exists. Empty: always run.
+  std::filesystem::path output{};
 };
 
 struct StepResult {
