@@ -174,26 +174,28 @@ void writeReport(const ReportInputs& in) {
 
   // --- survey and graph
   md << "## Road graph (paper §3.1)\n\n";
-  if (!survey.empty())
-    md << "Survey: " << survey.dump() << "\n\n";
-  md << "Extracted graph: " << graph.nodes.size() << " nodes, " << graph.edges.size()
-     << " directed edges, " << fmt(graph.totalLength() / 1000.0, 2) << " km.\n\n";
-  // Scalar figures of the graph's metadata sections (validation against the net, extraction
-  // statistics, depth weights), one table each.
-  for (const char* section : {"validation", "stats", "weights"}) {
-    if (!gmeta.contains(section) || !gmeta[section].is_object()) continue;
-    md << "| " << section << " | value |\n|---|---|\n";
-    for (const auto& [k, v] : gmeta[section].items()) {
+  // Scalar figures of a JSON object as a two-column table (arrays by their length).
+  auto scalarTable = [&md](const std::string& title, const json& obj, const std::string& listed_in) {
+    md << "| " << title << " | value |\n|---|---|\n";
+    for (const auto& [k, v] : obj.items()) {
       if (v.is_number_float()) {
         md << "| " << k << " | " << fmt(v.get<double>(), 3) << " |\n";
       } else if (v.is_number() || v.is_boolean() || v.is_string()) {
         md << "| " << k << " | " << v.dump() << " |\n";
       } else if (v.is_array()) {
-        md << "| " << k << " | " << v.size() << " listed in graph.json |\n";
+        md << "| " << k << " | " << v.size() << " listed in " << listed_in << " |\n";
       }
     }
     md << "\n";
-  }
+  };
+  if (survey.is_object() && !survey.empty()) scalarTable("survey", survey, "survey.json");
+  md << "Extracted graph: " << graph.nodes.size() << " nodes, " << graph.edges.size()
+     << " directed edges, " << fmt(graph.totalLength() / 1000.0, 2) << " km.\n\n";
+  // The graph's metadata sections: validation against the net, extraction statistics, depth
+  // weights, and how the graph maps onto the net's edges and turns.
+  for (const char* section : {"validation", "stats", "weights", "sumo_mapping"})
+    if (gmeta.contains(section) && gmeta[section].is_object())
+      scalarTable(section, gmeta[section], "graph.json");
   // The simulated 3D city the drives saw (rebuilt from the first drive's world.yaml: same net,
   // world config and seed for every drive of the run).
   std::optional<simulate::World> world;

@@ -35,7 +35,8 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   EXPECT_LT(rnd["length_m"].get<double>(), q["length_m"].get<double>() + 200.0);
   const std::string report = readFile(out / "report.md");
   for (const char* s : {"| qlearning |", "| random |", "| postman |", "Spearman", "report/graph_weights.png",
-                        "node_recall"})
+                        "node_recall", "| survey | value |", "| visited_edges |", "| sumo_mapping | value |",
+                        "| forbidden_turns |"})
     EXPECT_NE(report.find(s), std::string::npos) << s;
   EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
 }
