@@ -138,7 +138,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
                                      {"build-graph", "--survey", (out / "survey").string(), "--net", net_path,
                                       "--out", graph.string()},
                                      out / "logs" / "build-graph.log")};
-      s2[0].output = graph;
+      s2[0].output = fs::path(graph).replace_extension(".png");  // the last of graph.json's siblings
       runSteps(todo(s2), 1);
 
       logInfo("[2/4] planning " + std::to_string(o->seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
