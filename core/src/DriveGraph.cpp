@@ -21,7 +21,6 @@ DriveGraph DriveGraph::fromNet(const SumoNet& net) {
     vertex_of.emplace(jid, idx);
     return idx;
   };
-  std::unordered_map<std::string, std::size_t> edge_of;
   for (const SumoEdge& e : net.edges) {
     if (!e.allowsPassenger() || e.from.empty() || e.to.empty()) continue;
     const std::size_t u = vertex(e.from), v = vertex(e.to);
@@ -32,7 +31,7 @@ DriveGraph DriveGraph::fromNet(const SumoNet& net) {
     de.speed_mps = e.speed();
     de.shape = e.shape;
     boost::add_edge(u, v, de, dg.g);
-    edge_of.emplace(e.id, dg.edges.size());
+    dg.edge_of.emplace(e.id, dg.edges.size());
     dg.edges.push_back({u, v, e.id, de.length_m});
   }
   if (dg.edges.empty())

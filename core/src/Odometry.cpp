@@ -89,16 +89,16 @@ GyroBiasResult removeStandstillGyroBias(const WheelOdometry& odo, double standst
     still[k] = fast == 0 && out[k].t - margin_s >= out.front().t && out[k].t + margin_s <= out.back().t;
   }
   // Causal: sample k uses the standstill samples already confirmed (margin_s behind it).
+  // The bias is averaged over the raw readings (`out` is corrected as k advances).
+  const std::vector<OdometrySample>& raw = odo.samples();
   double still_s = 0.0, still_sum = 0.0;
   std::size_t p = 0;
-  std::vector<double> raw(n);
-  for (std::size_t k = 0; k < n; ++k) raw[k] = out[k].yaw_rate_rad_s;
   for (std::size_t k = 0; k < n; ++k) {
     for (; p < n && out[p].t + margin_s <= out[k].t; ++p) {
       const double dt = p + 1 < n ? out[p + 1].t - out[p].t : 0.0;
       if (!still[p] || dt <= 0.0) continue;
       still_s += dt;
-      still_sum += raw[p] * dt;
+      still_sum += raw[p].yaw_rate_rad_s * dt;
     }
     if (still_s >= min_standstill_s) {
       r.final_bias_rad_s = still_sum / still_s;

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <functional>
 #include <queue>
-#include <unordered_map>
 
 #include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/roadgraph/SumoMatch.hpp"
@@ -21,11 +20,8 @@ namespace {
 /// The net's passenger edges and allowed turns (core DriveGraph) with a bounded search on them.
 struct SumoLineGraph {
   DriveGraph dg;
-  std::unordered_map<std::string, std::size_t> index;
 
-  explicit SumoLineGraph(const SumoNet& net) : dg(DriveGraph::fromNet(net)) {
-    for (std::size_t i = 0; i < dg.numEdges(); ++i) index.emplace(dg.edges[i].sumo_edge, i);
-  }
+  explicit SumoLineGraph(const SumoNet& net) : dg(DriveGraph::fromNet(net)) {}
 
   /// Per edge, the least length of the edges driven in between to reach it from `from`
   /// (entering an edge is free; driving through it costs its length); -1 when that exceeds
@@ -72,8 +68,8 @@ Point3 junctionEnd(const SumoNet& net, const std::string& id) {
 TurnStats turnsFromNet(RoadGraph& graph, const SumoNet& net, const SumoMatchConfig& cfg) {
   const SumoLineGraph lg(net);
   auto sumoIndex = [&](const std::string& id) -> long {
-    const auto it = lg.index.find(id);
-    return it == lg.index.end() ? -1 : static_cast<long>(it->second);
+    const auto it = lg.dg.edge_of.find(id);
+    return it == lg.dg.edge_of.end() ? -1 : static_cast<long>(it->second);
   };
   const auto out = graph.outEdges();
   TurnStats st;

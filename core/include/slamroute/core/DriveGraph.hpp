@@ -3,6 +3,7 @@
 // edges are directed graph edges (a Boost.Graph adjacency_list), plus SUMO's turn permissions.
 #include <boost/graph/adjacency_list.hpp>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "slamroute/core/SumoNet.hpp"
@@ -38,6 +39,9 @@ struct DriveGraph {
   /// Vertices (and edges) in the largest strongly connected component.
   std::vector<bool> in_lscc_vertex, in_lscc_edge;
   std::size_t lscc_vertices = 0, lscc_edges = 0;
+
+  /// SUMO edge id -> index into `edges`.
+  std::unordered_map<std::string, std::size_t> edge_of;
 
   std::size_t numVertices() const { return boost::num_vertices(g); }
   std::size_t numEdges() const { return edges.size(); }
