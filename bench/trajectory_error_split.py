@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+# Where a drive's trajectory error lies (bench/RESULTS.md "Corner features at grazing incidence"):
+# ATE RMSE after a rigid (Umeyama, no scale) alignment split into along-street, across-street and
+# height components (in the ground truth's heading), and the per-scan relative-pose error summed
+# separately over turns (|yaw rate| > 5 deg/s) and straight stretches: a negative "along, straight"
+# sum is a shortfall on the straights. Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
+# Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+import sys
+
+import numpy as np
+from scipy.spatial.transform import Rotation as R
+
+gt = np.loadtxt(sys.argv[1] + '/groundtruth.tum')
+es = np.loadtxt(sys.argv[2] + '/estimate.tum')
+g = gt[[np.argmin(abs(gt[:, 0] - t)) for t in es[:, 0]]]
+
+# Rigid alignment of the estimate's positions onto the ground truth's.
+P, Q = es[:, 1:4], g[:, 1:4]
+mp, mq = P.mean(0), Q.mean(0)
+U, _, Vt = np.linalg.svd((P - mp).T @ (Q - mq))
+D = np.eye(3)
+D[2, 2] = np.sign(np.linalg.det(Vt.T @ U.T))
+d = ((Vt.T @ D @ U.T) @ (P - mp).T).T + mq - Q
+yaw = R.from_quat(g[:, 4:8]).as_euler('ZYX')[:, 0]
+along = d[:, 0] * np.cos(yaw) + d[:, 1] * np.sin(yaw)
+across = -d[:, 0] * np.sin(yaw) + d[:, 1] * np.cos(yaw)
+rms = lambda x: np.sqrt((x ** 2).mean())
+print('ATE RMSE %.3f m; RMS along %.3f, across %.3f, height %.3f m' %
+      (np.sqrt((d ** 2).sum(1).mean()), rms(along), rms(across), rms(d[:, 2])))
+
+
+def poses(a):
+    M = np.tile(np.eye(4), (len(a), 1, 1))
+    M[:, :3, :3] = R.from_quat(a[:, 4:8]).as_matrix()
+    M[:, :3, 3] = a[:, 1:4]
+    return M
+
+
+Te, Tg = poses(es), poses(g)
+rows = []
+for i in range(1, len(es)):
+    de, dg = np.linalg.inv(Te[i - 1]) @ Te[i], np.linalg.inv(Tg[i - 1]) @ Tg[i]
+    E = np.linalg.inv(dg) @ de
+    rate = np.degrees(np.arctan2(dg[1, 0], dg[0, 0])) / max(es[i, 0] - es[i - 1, 0], 1e-6)
+    rows.append((E[0, 3], E[1, 3], abs(rate) > 5.0))
+rows = np.array(rows)
+turn = rows[:, 2] > 0
+print('relative-pose error sums: along turns %.3f, straight %.3f m; across turns %.3f, straight %.3f m'
+      % (rows[turn, 0].sum(), rows[~turn, 0].sum(), rows[turn, 1].sum(), rows[~turn, 1].sum()))
