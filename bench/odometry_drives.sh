@@ -23,7 +23,7 @@ drive() {  # name route [extra args]
 }
 evaluate() {  # drive eval [global args] (e.g. --config F)
   local d=$1 e=$2; shift 2
-  "$bin" --log-level warn "$@" evaluate --drive "$out/$d" --out "$out/$e" "$@" > /dev/null
+  "$bin" --log-level warn "$@" evaluate --drive "$out/$d" --out "$out/$e" > /dev/null
   python3 - "$out/$e/metrics.json" "$e" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))

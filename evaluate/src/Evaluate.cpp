@@ -11,8 +11,10 @@
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/OdometrySpec.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
+#include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/StridedScanSource.hpp"
 
@@ -212,8 +214,18 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
               " deg/s from " + std::to_string(static_cast<int>(gyro.standstill_s)) + " s of standstill");
   }
 
+  // The gyro weighed by its own noise figures when the drive states them (odometry.yaml).
+  Config slam_cfg = cfg;
+  if (!odometry.empty()) {
+    slam_cfg.odometry_prior_sigma_deg =
+        yawPriorSigmaDeg(cfg, readOdometrySpec(drive / drive_files::kOdometrySpec));
+    if (slam_cfg.odometry_prior_sigma_deg != cfg.odometry_prior_sigma_deg)
+      logInfo("evaluate: yaw prior " + std::to_string(slam_cfg.odometry_prior_sigma_deg) + " deg per 0.1 s from " +
+              (drive / drive_files::kOdometrySpec).string());
+  }
+
   Progress progress("evaluate: SLAM", source.size());
-  SlamResult slam = runSlam(source, cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
+  SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry);
   progress.finish();
   writeTum(out / "estimate.tum", slam.trajectory);
@@ -226,12 +238,14 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   j["gyro_standstill_s"] = gyro.standstill_s;
   j["gyro_bias_deg_s"] = gyro.final_bias_rad_s * 180.0 / std::numbers::pi;
   j["motion_prior"] = odometry.empty() ? "constant velocity" : "wheel odometry + gyro (odometry.csv)";
+  if (!odometry.empty()) j["odometry_prior_sigma_deg"] = slam_cfg.odometry_prior_sigma_deg;
   j["scans"] = slam.trajectory.size();
   j["scan_stride"] = cfg.scan_stride;
   j["keyframes"] = slam.keyframes;
   j["loop_closures"] = slam.loops.size();
   j["loop_candidates"] = slam.loop_candidates;
   j["loops_rejected_correction"] = slam.loops_rejected;
+  j["loops_rejected_ambiguous"] = slam.loops_ambiguous;
   nlohmann::json loops = nlohmann::json::array();
   for (const auto& l : slam.loops)
     loops.push_back({{"old_keyframe", l.from_keyframe}, {"new_keyframe", l.to_keyframe},

@@ -58,4 +58,11 @@ Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
   return out;
 }
 
+double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec) {
+  if (cfg.odometry_prior_sigma_deg <= 0 || !spec || cfg.odometry_prior_gyro_factor <= 0)
+    return cfg.odometry_prior_sigma_deg;
+  const double per_interval = 0.1 * std::hypot(spec->gyro_noise_deg_s, spec->gyro_bias_sigma_deg_s);
+  return std::max(cfg.odometry_prior_min_sigma_deg, cfg.odometry_prior_gyro_factor * per_interval);
+}
+
 }  // namespace slamroute::evaluate

@@ -220,23 +220,35 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
   return res;
 }
 
-IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,
-                          int iterations, double max_corr_m) {
-  IcpResult res;
-  res.T_target_source = init;
-  if (source.empty() || target.size() < 8) return res;
-  KdTree tree;
-  tree.build(target);
+IcpTarget::IcpTarget(Cloud target) : cloud_(std::move(target)) {
+  if (cloud_.size() < 8) return;
+  tree_.build(cloud_);
   // Target normals from 8 neighbours; points without a clear plane keep a zero normal.
-  std::vector<Vec3> normals(target.size(), Vec3::Zero());
+  normals_.assign(cloud_.size(), Vec3::Zero());
   std::vector<int> idx;
   std::vector<float> d2;
-  for (std::size_t i = 0; i < target.size(); ++i) {
-    if (tree.knn(target[i], 8, idx, d2) < 8) continue;
-    const Pca s = pca(target, idx);
+  for (std::size_t i = 0; i < cloud_.size(); ++i) {
+    if (tree_.knn(cloud_[i], 8, idx, d2) < 8) continue;
+    const Pca s = pca(cloud_, idx);
     const Vec3 ev = s.es.eigenvalues();
-    if (ev(0) < 0.2 * ev(1)) normals[i] = s.es.eigenvectors().col(0);
+    if (ev(0) < 0.2 * ev(1)) normals_[i] = s.es.eigenvectors().col(0);
   }
+}
+
+IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,
+                          int iterations, double max_corr_m) {
+  return IcpTarget(target).align(source, init, iterations, max_corr_m);
+}
+
+IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iterations, double max_corr_m) const {
+  IcpResult res;
+  res.T_target_source = init;
+  if (source.empty() || cloud_.size() < 8) return res;
+  const KdTree& tree = tree_;
+  const std::vector<Vec3>& normals = normals_;
+  const Cloud& target = cloud_;
+  std::vector<int> idx;
+  std::vector<float> d2;
   Pose3 T = init;
   for (int it = 0; it < iterations; ++it) {
     const double frac = iterations > 1 ? static_cast<double>(it) / (iterations - 1) : 1.0;
@@ -276,6 +288,29 @@ IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3&
   res.inlier_ratio = static_cast<double>(inl) / static_cast<double>(source.size());
   if (res.iterations == iterations) res.converged = true;
   return res;
+}
+
+std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source, const IcpResult& match,
+                                     const IcpAmbiguity& amb) {
+  const Pose3& T = match.T_target_source;
+  Vec3 along = T.rotation().col(0);
+  along.z() = 0.0;
+  if (along.norm() < 1e-6) return std::nullopt;
+  along.normalize();
+  const Vec3 across(-along.y(), along.x(), 0.0);
+  std::vector<Vec3> shifts;
+  for (const double d : amb.along_m) shifts.insert(shifts.end(), {d * along, -d * along});
+  for (const double d : amb.across_m) shifts.insert(shifts.end(), {d * across, -d * across});
+  for (const Vec3& shift : shifts) {
+    Pose3 init = T;
+    init.translation() += shift;
+    const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
+    const double apart = (r.T_target_source.translation() - T.translation()).norm();
+    if (apart > amb.separation_m && amb.accept(r) && r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin &&
+        r.fitness_m2 < match.fitness_m2)
+      return apart;
+  }
+  return std::nullopt;
 }
 
 }  // namespace slamroute::evaluate

@@ -86,6 +86,7 @@ struct LidarSlam::Impl {
   std::vector<LoopClosure> loops;
   int loop_candidates = 0;
   int loops_rejected = 0;           ///< ICP matches refused for too large a correction
+  int loops_ambiguous = 0;          ///< ICP matches refused because another pose fits too
   double driven_since_loop = 0.0;   ///< keyframe path since the last accepted closure [m]
   double last_loop_t = -1e18, last_attempt_t = -1e18;
   bool have_prev = false;
@@ -196,15 +197,21 @@ struct LidarSlam::Impl {
       const Cloud c = transformed(kf.cloud, kf.T_world);
       target.insert(target.end(), c.begin(), c.end());
     }
-    target = voxelFilter(target, cfg.loop_voxel_m);
+    const IcpTarget icp_target(voxelFilter(target, cfg.loop_voxel_m));
     const Cloud source = voxelFilter(cur.cloud, cfg.loop_voxel_m);
-    const IcpResult icp = icpPointToPlane(source, target, cur.T_world, cfg.loop_icp_iterations,
-                                          cfg.loop_icp_max_corr_m);
+    const IcpResult icp = icp_target.align(source, cur.T_world, cfg.loop_icp_iterations, cfg.loop_icp_max_corr_m);
     logDebug("loop candidate kf " + std::to_string(best) + " -> " + std::to_string(n - 1) +
              ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
              std::to_string(icp.inlier_ratio));
-    if (!(icp.fitness_m2 < cfg.loop_fitness_m2 && icp.inlier_ratio >= cfg.loop_min_inlier_ratio))
+    const IcpAcceptance accept{cfg.loop_fitness_m2, cfg.loop_min_inlier_ratio};
+    if (!accept(icp)) return false;
+    const IcpAmbiguity amb{cfg.loop_ambiguity_along_m, cfg.loop_ambiguity_across_m, cfg.loop_ambiguity_separation_m,
+                           cfg.loop_ambiguity_inlier_margin, cfg.loop_icp_iterations, cfg.loop_icp_max_corr_m, accept};
+    if (const auto other = betterIcpMatch(icp_target, source, icp, amb)) {
+      ++loops_ambiguous;
+      logDebug("loop candidate refused: a match " + std::to_string(*other) + " m away fits better");
       return false;
+    }
     const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
     if (!plausibleLoopCorrection(correction, driven_since_loop, cfg)) {
       ++loops_rejected;
@@ -550,6 +557,7 @@ struct LidarSlam::Impl {
     out.loops = loops;
     out.loop_candidates = loop_candidates;
     out.loops_rejected = loops_rejected;
+    out.loops_ambiguous = loops_ambiguous;
     out.keyframes = static_cast<int>(kfs.size());
     out.times = times;
     return out;

@@ -8,6 +8,7 @@
 #include "slamroute/core/ConfigIO.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/OdometrySpec.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/World.hpp"
 
@@ -67,6 +68,12 @@ DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
   writeTum(dir / drive_files::kGroundTruth, rec.groundtruth);
   writeFileAtomic(dir / drive_files::kPoseEdges, poseEdgesCsv(rec));
   writeOdometryCsv(dir / drive_files::kOdometry, simulateOdometry(rec.groundtruth, cfg.drive, opts.seed));
+  OdometrySpec odo_spec;
+  odo_spec.scale_sigma = cfg.drive.odometry_scale_sigma;
+  odo_spec.speed_noise_mps = cfg.drive.odometry_speed_noise_mps;
+  odo_spec.gyro_bias_sigma_deg_s = cfg.drive.gyro_bias_sigma_deg_s;
+  odo_spec.gyro_noise_deg_s = cfg.drive.gyro_noise_deg_s;
+  writeOdometrySpec(dir / drive_files::kOdometrySpec, odo_spec);
 
   std::vector<double> times;
   times.reserve(rec.groundtruth.size());

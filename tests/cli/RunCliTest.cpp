@@ -26,6 +26,8 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
     for (const char* k : {"ate_rmse_m", "ate_mean_m", "ate_max_m", "rpe_trans_pct", "coverage_edge_pct",
                           "route_length_m", "loop_closures"})
       EXPECT_TRUE(m.contains(k)) << p << " lacks " << k;
+    // The drive's odometry.yaml (default simulated gyro) sets the yaw prior: 1.8 x 0.1 s x 0.112 deg/s.
+    EXPECT_NEAR(m.value("odometry_prior_sigma_deg", 0.0), 0.020125, 1e-6) << p;
     const auto route = nlohmann::json::parse(readFile(out / "routes" / (p + ".json")));
     EXPECT_GT(route["length_m"].get<double>(), 100.0) << p;
   }

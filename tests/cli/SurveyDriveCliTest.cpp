@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliTestUtil.hpp"
+#include "slamroute/core/OdometrySpec.hpp"
 
 namespace slamroute {
 namespace {
@@ -40,8 +41,14 @@ TEST(SurveyDriveCli, DriveWritesTheDriveFolder) {
                               " --out " + (dir / "out").string() + " --no-mesh --log-level warn");
   ASSERT_EQ(r.code, 0) << r.out;
   for (const char* f : {"groundtruth.tum", "pose_edges.csv", "sensor.yaml", "world.yaml",
-                        "traffic.csv", "drive.json"})
+                        "traffic.csv", "drive.json", "odometry.csv", "odometry.yaml"})
     EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  // odometry.yaml states the simulated odometry's noise (DriveConfig defaults).
+  const auto spec = readOdometrySpec(dir / "out/odometry.yaml");
+  ASSERT_TRUE(spec.has_value());
+  EXPECT_DOUBLE_EQ(spec->gyro_noise_deg_s, 0.1);
+  EXPECT_DOUBLE_EQ(spec->gyro_bias_sigma_deg_s, 0.05);
+  EXPECT_DOUBLE_EQ(spec->scale_sigma, 0.01);
   const auto j = nlohmann::json::parse(std::ifstream(dir / "out/drive.json"));
   EXPECT_EQ(j["teleports"], 0);
   EXPECT_EQ(j["seed"], 9);

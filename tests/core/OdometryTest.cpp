@@ -6,6 +6,7 @@
 
 #include "TestUtil.hpp"
 #include "slamroute/core/Odometry.hpp"
+#include "slamroute/core/OdometrySpec.hpp"
 
 namespace slamroute {
 namespace {
@@ -36,6 +37,38 @@ TEST(Odometry, FullCircleClosesAndQuarterHasTheRadius) {
   EXPECT_NEAR(quarter.translation().y(), r, 1e-3 * r);
   EXPECT_NEAR(std::atan2(quarter.rotation()(1, 0), quarter.rotation()(0, 0)), std::numbers::pi / 2, 1e-9);
   EXPECT_NEAR(o.yawRate(3.33), w, 1e-12);
+}
+
+TEST(OdometrySpec, YamlRoundTripAndBadFiles) {
+  const auto dir = test::tempDir("odometry_spec");
+  EXPECT_FALSE(readOdometrySpec(dir / "none.yaml").has_value());  // optional file
+  const OdometrySpec spec{0.01, 0.05, 0.02, 0.1};
+  writeOdometrySpec(dir / "odometry.yaml", spec);
+  const auto r = readOdometrySpec(dir / "odometry.yaml");
+  ASSERT_TRUE(r.has_value());
+  EXPECT_DOUBLE_EQ(r->scale_sigma, 0.01);
+  EXPECT_DOUBLE_EQ(r->speed_noise_mps, 0.05);
+  EXPECT_DOUBLE_EQ(r->gyro_bias_sigma_deg_s, 0.02);
+  EXPECT_DOUBLE_EQ(r->gyro_noise_deg_s, 0.1);
+  // A partial file keeps 0 (noise-free) for what it does not state.
+  test::writeText(dir / "partial.yaml", "gyro_noise_deg_s: 0.3\n");
+  EXPECT_DOUBLE_EQ(readOdometrySpec(dir / "partial.yaml")->gyro_noise_deg_s, 0.3);
+  EXPECT_DOUBLE_EQ(readOdometrySpec(dir / "partial.yaml")->gyro_bias_sigma_deg_s, 0.0);
+  const auto expectError = [&](const char* name, const char* text, const char* fragment) {
+    test::writeText(dir / name, text);
+    try {
+      readOdometrySpec(dir / name);
+      FAIL() << name;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  expectError("negative.yaml", "gyro_noise_deg_s: -0.1\n", "gyro_noise_deg_s");
+  expectError("nan.yaml", "gyro_bias_sigma_deg_s: .nan\n", "gyro_bias_sigma_deg_s");
+  expectError("typo.yaml", "gyro_nois_deg_s: 0.1\n", "gyro_nois_deg_s");
+  expectError("text.yaml", "gyro_noise_deg_s: fast\n", "gyro_noise_deg_s");
+  expectError("broken.yaml", "gyro_noise_deg_s: [0.1\n", "not valid YAML");
 }
 
 TEST(Odometry, CsvRoundTripAndBadFiles) {

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <random>
 
+#include "SyntheticScene.hpp"
 #include "slamroute/evaluate/Registration.hpp"
 
 namespace slamroute::evaluate {
@@ -135,6 +136,72 @@ TEST(AlignFeaturesPrior, AWeakPriorDoesNotMoveAConstrainedResult) {
   const AlignResult r = alignFeatures(map, moved(edges, T_true.inverse()), moved(planes, T_true.inverse()),
                                       Pose3::Identity(), opt);
   EXPECT_LT((r.T_target_source.translation() - T_true.translation()).norm(), 0.01);
+}
+
+/// A street 16 m wide between two facades along x (-60..60 m), with the ground, and 2 m wide
+/// pillars standing 1 m out of each facade at the given x positions; 0.4 m point spacing.
+Cloud streetWithPillars(const std::vector<double>& pillars_x) {
+  Cloud c;
+  const auto add = [&](double x, double y, double z) {
+    c.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+  };
+  for (double x = -60; x <= 60; x += 0.4) {
+    for (double y = -8; y <= 8; y += 0.4) add(x, y, 0.0);
+    for (double z = 0.2; z < 6; z += 0.4) add(x, 8.0, z), add(x, -8.0, z);
+  }
+  for (const double px : pillars_x)
+    for (double z = 0.2; z < 6; z += 0.4)
+      for (double side : {1.0, -1.0}) {
+        for (double x = px - 1.0; x <= px + 1.0; x += 0.4) add(x, side * 7.0, z);  // front face
+        for (double y = 7.0; y < 8.0; y += 0.4) add(px - 1.0, side * y, z), add(px + 1.0, side * y, z);
+      }
+  return c;
+}
+
+/// What a keyframe at the origin sees of it: the points within 25 m.
+Cloud near(const Cloud& c) {
+  Cloud out;
+  for (const auto& p : c)
+    if (p.head<2>().norm() < 25.0f) out.push_back(p);
+  return out;
+}
+
+IcpAmbiguity alongTheStreet() {
+  IcpAmbiguity amb;
+  amb.along_m = {3, 6, 9};
+  amb.across_m = {3};
+  return amb;
+}
+
+TEST(IcpAmbiguity, AMatchStuckOnTheWrongPillarsHasABetterOneWhereItBelongs) {
+  // A drifted estimate 6 m along the street: walls and ground match anywhere, so ICP stays
+  // there and the match even passes the fitness test (a false loop closure).
+  const Cloud world = streetWithPillars({-47, -31, -26, -12, -4, 5, 9, 21, 32, 35, 50});
+  const IcpTarget target(world);
+  const Cloud source = near(world);
+  const IcpAmbiguity amb = alongTheStreet();
+  const IcpResult wrong = target.align(source, test::poseXYZYaw(6.0, 0.0, 0.0, 0.0), amb.iterations, amb.max_corr_m);
+  ASSERT_TRUE(amb.accept(wrong));
+  ASSERT_GT(wrong.T_target_source.translation().norm(), 5.0);
+  // Started 6 m back, ICP finds the true pose, which fits better.
+  const auto better = betterIcpMatch(target, source, wrong, amb);
+  ASSERT_TRUE(better.has_value());
+  EXPECT_NEAR(*better, wrong.T_target_source.translation().norm(), 0.1);
+}
+
+TEST(IcpAmbiguity, TheTrueMatchHasNoBetterOne) {
+  std::vector<double> periodic;  // equal pillars every 8 m: the other fits are no better
+  for (double x = -56; x <= 56; x += 8) periodic.push_back(x);
+  for (const auto& pillars : {std::vector<double>{-47, -31, -26, -12, -4, 5, 9, 21, 32, 35, 50}, periodic}) {
+    const Cloud world = streetWithPillars(pillars);
+    const IcpTarget target(world);
+    const Cloud source = near(world);
+    const IcpAmbiguity amb = alongTheStreet();
+    const IcpResult r = target.align(source, Pose3::Identity(), amb.iterations, amb.max_corr_m);
+    ASSERT_TRUE(amb.accept(r));
+    EXPECT_LT(r.T_target_source.translation().norm(), 0.05);
+    EXPECT_FALSE(betterIcpMatch(target, source, r, amb).has_value());
+  }
 }
 
 }  // namespace

@@ -93,6 +93,14 @@ struct Config {
   /// 0.02 m as well (a simulated car also slips sideways in turns, the wheels do not see it) [m], [deg]
   double odometry_prior_sigma_m = 0.0;
   double odometry_prior_sigma_deg = 0.02;
+  /// When the drive states its gyro's noise (odometry.yaml), the yaw sigma follows it instead:
+  /// this factor x 0.1 s x sqrt(noise^2 + bias^2), at least odometry_prior_min_sigma_deg. The
+  /// simulated default gyro (0.1 deg/s noise, 0.05 deg/s bias) gives 0.0201 deg, i.e. the tuned
+  /// value above; a noise-free gyro gets the floor 0.0002 deg (a fibre-optic gyro's 0.1 s
+  /// random walk is ~0.0001 deg). Noise-free route1k drive (bench/RESULTS.md): ATE 0.132 m with
+  /// 0.02 deg, 0.091 m with 0.0002 deg. 0 = always odometry_prior_sigma_deg [-], [deg]
+  double odometry_prior_gyro_factor = 1.8;
+  double odometry_prior_min_sigma_deg = 0.0002;
   double registration_sigma_m = 0.05;
   /// With IMU roll / pitch in odometry.csv: after each scan the pose's roll and pitch move this
   /// share of the way to the IMU's (LeGO-LOAM blends 0.002 per scan at 10 Hz; 0 = off). On the
@@ -134,6 +142,17 @@ struct Config {
   double loop_fitness_m2 = 0.09;     ///< accept if mean squared inlier distance below [m^2]
   double loop_min_inlier_ratio = 0.5;  ///< ... and at least this share of points matched
   double loop_cooldown_s = 5.0;      ///< min time between two accepted closures [s]
+  /// Local-minimum check (not in LeGO-LOAM): an accepted ICP match is run again from its result
+  /// shifted by these offsets along and across the new keyframe's heading (both signs). When one
+  /// of them ends on another pose, more than loop_ambiguity_separation_m away, that passes the
+  /// same test and fits better (lower fitness, at least loop_ambiguity_inlier_margin more of the
+  /// points matched), the first match stopped in a local minimum, e.g. one facade along a row of
+  /// look-alike facades: the closure is refused and the next keyframe tries again. On the false
+  /// closures of `experiment paper` the better pose found this way was the true one. Empty = off [m]
+  std::vector<double> loop_ambiguity_along_m = {3, 6, 9, 12};
+  std::vector<double> loop_ambiguity_across_m = {3, 6};
+  double loop_ambiguity_separation_m = 1.5;
+  double loop_ambiguity_inlier_margin = 0.0;
   /// A closure may move the new keyframe at most loop_max_correction_m plus
   /// loop_correction_per_m times the distance driven since the last accepted closure (the drift
   /// the odometry can have gathered since); a larger jump is taken for a look-alike place.
@@ -226,6 +245,10 @@ void visitFields(V& v, Config& c) {
           "scan-to-map prior towards the odometry, x/y sigma per 0.1 s (0 = off) [m]");
   v.field("odometry_prior_sigma_deg", c.odometry_prior_sigma_deg,
           "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
+  v.field("odometry_prior_gyro_factor", c.odometry_prior_gyro_factor,
+          "with the drive's odometry.yaml: yaw sigma = this x 0.1 s x sqrt(gyro noise^2 + bias^2), 0 = off");
+  v.field("odometry_prior_min_sigma_deg", c.odometry_prior_min_sigma_deg,
+          "... but at least this (a noise-free gyro) [deg]");
   v.field("registration_sigma_m", c.registration_sigma_m, "LiDAR residual sigma for the odometry prior [m]");
   v.field("imu_tilt_weight", c.imu_tilt_weight,
           "share of the way roll/pitch move to the IMU's after each scan (odometry.csv with roll/pitch), 0 = off");
@@ -248,6 +271,13 @@ void visitFields(V& v, Config& c) {
   v.field("loop_fitness_m2", c.loop_fitness_m2, "ICP fitness threshold [m^2]");
   v.field("loop_min_inlier_ratio", c.loop_min_inlier_ratio, "ICP min inlier share");
   v.field("loop_cooldown_s", c.loop_cooldown_s, "min time between closures [s]");
+  v.field("loop_ambiguity_along_m", c.loop_ambiguity_along_m,
+          "loop closure refused when ICP from these offsets along the heading finds a better match, [] = off [m]");
+  v.field("loop_ambiguity_across_m", c.loop_ambiguity_across_m, "... and across it [m]");
+  v.field("loop_ambiguity_separation_m", c.loop_ambiguity_separation_m,
+          "... at least this far from the first one [m]");
+  v.field("loop_ambiguity_inlier_margin", c.loop_ambiguity_inlier_margin,
+          "... matching this much larger a share of the points (and with a lower fitness)");
   v.field("loop_max_correction_m", c.loop_max_correction_m,
           "max jump of a loop closure right after another one (negative = no bound) [m]");
   v.field("loop_correction_per_m", c.loop_correction_per_m,

@@ -1,6 +1,9 @@
 #pragma once
 // What a car can do between two scans: the bounds the SLAM front end checks a registration
 // against before it believes it (evaluate/src/Slam.cpp).
+#include <optional>
+
+#include "slamroute/core/OdometrySpec.hpp"
 #include "slamroute/core/Types.hpp"
 #include "slamroute/evaluate/Config.hpp"
 
@@ -39,5 +42,11 @@ bool plausibleLoopCorrection(double correction_m, double driven_m, const Config&
 /// with its IMU after each scan-to-map step: the LiDAR alone cannot tell a tilted map from a
 /// tilted road, so a pitch error taken on a ramp would otherwise stay for good.
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w);
+
+/// Yaw sigma of the scan-to-map's prior towards the odometry, per 0.1 s [deg]: from the gyro's
+/// noise figures when the drive states them (cfg.odometry_prior_gyro_factor x 0.1 s x
+/// sqrt(noise^2 + bias^2), at least cfg.odometry_prior_min_sigma_deg), else
+/// cfg.odometry_prior_sigma_deg. A configured 0 (prior off) stays 0.
+double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec);
 
 }  // namespace slamroute::evaluate

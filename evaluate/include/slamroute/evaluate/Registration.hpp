@@ -2,6 +2,8 @@
 // Feature registration (LOAM point-to-line / point-to-plane, Gauss-Newton on SE(3) with a DoF
 // mask for LeGO-LOAM's two-step odometry) and point-to-plane ICP for loop closure.
 #include <cstdint>
+#include <optional>
+#include <vector>
 
 #include "slamroute/core/Types.hpp"
 #include "slamroute/evaluate/Features.hpp"
@@ -62,6 +64,48 @@ struct IcpResult {
   int iterations = 0;
   bool converged = false;
 };
+
+/// Point-to-plane ICP target: k-d tree and normals (8 neighbours) built once, so that several
+/// alignments against it (a loop closure's ambiguity check) share them.
+class IcpTarget {
+ public:
+  explicit IcpTarget(Cloud target);
+  /// The correspondence radius shrinks from max_corr_m to max_corr_m / 3.
+  IcpResult align(const Cloud& source, const Pose3& init, int iterations, double max_corr_m) const;
+
+ private:
+  Cloud cloud_;
+  KdTree tree_;
+  std::vector<Vec3> normals_;  ///< zero where the neighbours show no clear plane
+};
+
+/// A match is accepted when its fitness is below max_fitness_m2 and enough points matched.
+struct IcpAcceptance {
+  double max_fitness_m2 = 0.09;
+  double min_inlier_ratio = 0.5;
+  bool operator()(const IcpResult& r) const {
+    return r.fitness_m2 < max_fitness_m2 && r.inlier_ratio >= min_inlier_ratio;
+  }
+};
+
+/// Where to look for a better match than the one ICP found (a loop closure's check that it did
+/// not stop in a local minimum, e.g. one facade further along a row of look-alike facades).
+struct IcpAmbiguity {
+  std::vector<double> along_m;   ///< start offsets along the match's heading (both signs) [m]
+  std::vector<double> across_m;  ///< ... and across it [m]
+  double separation_m = 1.5;     ///< another match must end at least this far away [m]
+  double inlier_margin = 0.0;    ///< ... and match this much more of the source's points
+  int iterations = 30;
+  double max_corr_m = 2.0;
+  IcpAcceptance accept;
+};
+
+/// ICP from `match` shifted by each offset of `amb`: the distance from `match` to the first
+/// result that ends more than amb.separation_m away, is accepted, matches a larger share of the
+/// source (by amb.inlier_margin) and has a lower fitness, i.e. a better fit elsewhere; nullopt
+/// when there is none.
+std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source, const IcpResult& match,
+                                     const IcpAmbiguity& amb);
 
 /// Point-to-plane ICP; the correspondence radius shrinks from max_corr_m to max_corr_m / 3.
 IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,

@@ -11,6 +11,8 @@
 //   world.yaml        net (absolute path), seed, world section
 //   world.ply         the static world mesh
 //   traffic.csv       other vehicles within range per pose (Traffic.hpp)
+//   odometry.csv      wheel speed + gyro yaw rate + IMU roll / pitch (core Odometry.hpp)
+//   odometry.yaml     their noise figures (core OdometrySpec.hpp), from DriveConfig
 //   drive.json        route, length driven, duration, teleports (always 0), frames
 //   scans/            only with save_scans: NNNNNN.bin (KITTI) + times.txt
 // Everything is written to a temporary folder beside DIR and renamed into place at the end,
