@@ -186,7 +186,6 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   if (source.size() == 0)
     throw std::runtime_error(drive.string() + (all_scans.size() == 0 ? ": the drive has no scans"
                                                                      : ": no scans in the time window"));
-  fs::create_directories(out);
   // Initial pose = the ground-truth pose at the first scan (documented in metrics.json).
   // Initial motion = the ground-truth motion between the first two scans (SUMO vehicles depart
   // at speed; a real crew would take it from wheel odometry).
@@ -224,6 +223,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
               (drive / drive_files::kOdometrySpec).string());
   }
 
+  // Only now that every input file has been read: a bad one leaves no output folder behind.
+  fs::create_directories(out);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry);

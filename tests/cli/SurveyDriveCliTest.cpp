@@ -1,6 +1,6 @@
 // `slamroute drive` / `slamroute survey` from the command line: a good drive, and bad input
-// (missing edge, forbidden turn, empty route, unknown net) giving a one-line error naming the
-// file, a non-zero exit and nothing written.
+// (missing edge, forbidden turn, empty route, unknown net; evaluate with a bad odometry.yaml)
+// giving a one-line error naming the file, a non-zero exit and nothing written.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -53,6 +53,21 @@ TEST(SurveyDriveCli, DriveWritesTheDriveFolder) {
   EXPECT_EQ(j["teleports"], 0);
   EXPECT_EQ(j["seed"], 9);
   EXPECT_EQ(j["route"], nlohmann::json({"g00_g01", "g01_g11", "g11_g21"}));
+}
+
+TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
+  const auto dir = test::cliTempDir("evaluate_bad_spec");
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11"])");
+  const auto d = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
+                              (dir / "drive").string() + " --no-mesh --log-level warn");
+  ASSERT_EQ(d.code, 0) << d.out;
+  std::ofstream(dir / "drive/odometry.yaml") << "gyro_noise_deg_s: -0.1\n";
+  const auto r = test::runCli("--log-level warn evaluate --drive " + (dir / "drive").string() + " --out " +
+                              (dir / "eval").string());
+  EXPECT_NE(r.code, 0) << r.out;
+  EXPECT_EQ(test::countLines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("odometry.yaml: 'gyro_noise_deg_s' must be a number >= 0"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "eval"));
 }
 
 TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {
