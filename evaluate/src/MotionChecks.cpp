@@ -59,10 +59,10 @@ Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
 }
 
 double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec) {
-  if (cfg.odometry_prior_sigma_deg <= 0 || !spec || cfg.odometry_prior_gyro_factor <= 0)
-    return cfg.odometry_prior_sigma_deg;
-  const double per_interval = 0.1 * std::hypot(spec->gyro_noise_deg_s, spec->gyro_bias_sigma_deg_s);
-  return std::max(cfg.odometry_prior_min_sigma_deg, cfg.odometry_prior_gyro_factor * per_interval);
+  const double ref = std::hypot(cfg.odometry_prior_ref_noise_deg_s, cfg.odometry_prior_ref_bias_deg_s);
+  if (cfg.odometry_prior_sigma_deg <= 0 || !spec || !(ref > 0)) return cfg.odometry_prior_sigma_deg;
+  const double gyro = std::hypot(spec->gyro_noise_deg_s, spec->gyro_bias_sigma_deg_s);
+  return std::max(cfg.odometry_prior_min_sigma_deg, cfg.odometry_prior_sigma_deg * gyro / ref);
 }
 
 }  // namespace slamroute::evaluate

@@ -86,18 +86,18 @@ TEST(MotionChecks, LoopCorrectionIsBoundedByTheDriftSinceTheLastClosure) {
 }
 
 TEST(MotionChecks, YawPriorFollowsTheGyroSpecOfTheDrive) {
-  const Config cfg;  // 0.02 deg without a spec, factor 1.8, floor 0.0002 deg
+  const Config cfg;  // 0.02 deg, tuned for a 0.1 deg/s noise + 0.05 deg/s bias gyro; floor 0.0002
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, std::nullopt), 0.02);
-  // The simulated default gyro (0.1 deg/s noise, 0.05 deg/s bias): 1.8 x 0.1 x 0.1118 deg.
-  EXPECT_NEAR(yawPriorSigmaDeg(cfg, OdometrySpec{0.01, 0.05, 0.05, 0.1}), 0.020125, 1e-6);
-  // A noise-free gyro is trusted down to the floor; a poor one gets a wide sigma.
+  // The simulated default gyro is the reference: the tuned sigma exactly.
+  EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, OdometrySpec{0.01, 0.05, 0.05, 0.1}), 0.02);
+  // A noise-free gyro is trusted down to the floor; a ten times noisier one gets ~ten times the sigma.
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, OdometrySpec{}), 0.0002);
-  EXPECT_NEAR(yawPriorSigmaDeg(cfg, OdometrySpec{0, 0, 0.0, 1.0}), 0.18, 1e-12);
+  EXPECT_NEAR(yawPriorSigmaDeg(cfg, OdometrySpec{0, 0, 0.5, 1.0}), 0.2, 1e-12);
   Config off = cfg;  // the prior switched off stays off
   off.odometry_prior_sigma_deg = 0.0;
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(off, OdometrySpec{}), 0.0);
-  Config fixed = cfg;  // factor 0: the configured sigma whatever the drive says
-  fixed.odometry_prior_gyro_factor = 0.0;
+  Config fixed = cfg;  // no reference: the configured sigma whatever the drive says
+  fixed.odometry_prior_ref_noise_deg_s = fixed.odometry_prior_ref_bias_deg_s = 0.0;
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(fixed, OdometrySpec{}), 0.02);
 }
 

@@ -93,13 +93,14 @@ struct Config {
   /// 0.02 m as well (a simulated car also slips sideways in turns, the wheels do not see it) [m], [deg]
   double odometry_prior_sigma_m = 0.0;
   double odometry_prior_sigma_deg = 0.02;
-  /// When the drive states its gyro's noise (odometry.yaml), the yaw sigma follows it instead:
-  /// this factor x 0.1 s x sqrt(noise^2 + bias^2), at least odometry_prior_min_sigma_deg. The
-  /// simulated default gyro (0.1 deg/s noise, 0.05 deg/s bias) gives 0.0201 deg, i.e. the tuned
-  /// value above; a noise-free gyro gets the floor 0.0002 deg (a fibre-optic gyro's 0.1 s
-  /// random walk is ~0.0001 deg). Noise-free route1k drive (bench/RESULTS.md): ATE 0.132 m with
-  /// 0.02 deg, 0.091 m with 0.0002 deg. 0 = always odometry_prior_sigma_deg [-], [deg]
-  double odometry_prior_gyro_factor = 1.8;
+  /// The sigma above was tuned for the simulated default gyro (white noise 0.1 deg/s, bias
+  /// 0.05 deg/s). When the drive states its gyro's figures (odometry.yaml), the sigma scales
+  /// with them: x sqrt(noise^2 + bias^2) / sqrt(ref_noise^2 + ref_bias^2), at least
+  /// odometry_prior_min_sigma_deg (a noise-free gyro; a fibre-optic gyro's 0.1 s random walk is
+  /// ~0.0001 deg). Noise-free route1k drive (bench/RESULTS.md): ATE 0.132 m with 0.02 deg, 0.091 m
+  /// with 0.0002 deg. Reference 0 = always odometry_prior_sigma_deg [deg/s], [deg]
+  double odometry_prior_ref_noise_deg_s = 0.1;
+  double odometry_prior_ref_bias_deg_s = 0.05;
   double odometry_prior_min_sigma_deg = 0.0002;
   double registration_sigma_m = 0.05;
   /// With IMU roll / pitch in odometry.csv: after each scan the pose's roll and pitch move this
@@ -245,8 +246,9 @@ void visitFields(V& v, Config& c) {
           "scan-to-map prior towards the odometry, x/y sigma per 0.1 s (0 = off) [m]");
   v.field("odometry_prior_sigma_deg", c.odometry_prior_sigma_deg,
           "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
-  v.field("odometry_prior_gyro_factor", c.odometry_prior_gyro_factor,
-          "with the drive's odometry.yaml: yaw sigma = this x 0.1 s x sqrt(gyro noise^2 + bias^2), 0 = off");
+  v.field("odometry_prior_ref_noise_deg_s", c.odometry_prior_ref_noise_deg_s,
+          "gyro white noise the yaw sigma is tuned for; a drive's odometry.yaml scales it, 0 = off [deg/s]");
+  v.field("odometry_prior_ref_bias_deg_s", c.odometry_prior_ref_bias_deg_s, "... and gyro bias [deg/s]");
   v.field("odometry_prior_min_sigma_deg", c.odometry_prior_min_sigma_deg,
           "... but at least this (a noise-free gyro) [deg]");
   v.field("registration_sigma_m", c.registration_sigma_m, "LiDAR residual sigma for the odometry prior [m]");

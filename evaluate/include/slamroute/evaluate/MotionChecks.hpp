@@ -44,9 +44,10 @@ bool plausibleLoopCorrection(double correction_m, double driven_m, const Config&
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w);
 
 /// Yaw sigma of the scan-to-map's prior towards the odometry, per 0.1 s [deg]: from the gyro's
-/// noise figures when the drive states them (cfg.odometry_prior_gyro_factor x 0.1 s x
-/// sqrt(noise^2 + bias^2), at least cfg.odometry_prior_min_sigma_deg), else
-/// cfg.odometry_prior_sigma_deg. A configured 0 (prior off) stays 0.
+/// noise figures when the drive states them (cfg.odometry_prior_sigma_deg scaled by the root sum
+/// of squares of the gyro's noise and bias over that of the reference gyro it was tuned for, at
+/// least cfg.odometry_prior_min_sigma_deg), else cfg.odometry_prior_sigma_deg. A configured 0
+/// (prior off) stays 0.
 double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec);
 
 }  // namespace slamroute::evaluate
