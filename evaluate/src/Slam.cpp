@@ -86,7 +86,7 @@ struct LidarSlam::Impl {
   std::vector<LoopClosure> loops;
   int loop_candidates = 0;
   int loops_rejected = 0;           ///< ICP matches refused for too large a correction
-  int loops_ambiguous = 0;          ///< ICP matches refused because another pose fits too
+  int loops_ambiguous = 0;          ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   double driven_since_loop = 0.0;   ///< keyframe path since the last accepted closure [m]
   double last_loop_t = -1e18, last_attempt_t = -1e18;
   bool have_prev = false;

@@ -41,7 +41,7 @@ struct SlamResult {
   std::vector<LoopClosure> loops;       ///< accepted loop closures
   int loop_candidates = 0;              ///< ICP attempts
   int loops_rejected = 0;               ///< ICP matches refused for too large a correction
-  int loops_ambiguous = 0;              ///< ICP matches refused because another pose fits too
+  int loops_ambiguous = 0;              ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
   StageTimes times;
   Cloud map;                            ///< world frame, voxel-filtered (cfg.map_voxel_m)
