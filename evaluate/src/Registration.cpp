@@ -235,11 +235,6 @@ IcpTarget::IcpTarget(Cloud target) : cloud_(std::move(target)) {
   }
 }
 
-IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,
-                          int iterations, double max_corr_m) {
-  return IcpTarget(target).align(source, init, iterations, max_corr_m);
-}
-
 IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iterations, double max_corr_m) const {
   IcpResult res;
   res.T_target_source = init;

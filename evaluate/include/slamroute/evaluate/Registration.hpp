@@ -107,8 +107,4 @@ struct IcpAmbiguity {
 std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source, const IcpResult& match,
                                      const IcpAmbiguity& amb);
 
-/// Point-to-plane ICP; the correspondence radius shrinks from max_corr_m to max_corr_m / 3.
-IcpResult icpPointToPlane(const Cloud& source, const Cloud& target, const Pose3& init,
-                          int iterations, double max_corr_m);
-
 }  // namespace slamroute::evaluate
