@@ -81,6 +81,7 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
         {"short_links", st.short_links},
         {"passed_nodes", st.passed_nodes},
         {"u_turn_streets", st.u_turn_streets},
+        {"roundabouts", st.roundabouts},
         {"dropped_fragments", st.dropped_fragments},
         {"seconds", st.seconds}}},
       {"weights",

@@ -1,5 +1,6 @@
 // Paper §3.1: traces -> road graph. The steps, each in its own file:
-// 1. Nodes: hollow-cylinder intersection points merged into junctions (Intersections.cpp).
+// 1. Nodes: hollow-cylinder intersection points merged into junctions (Intersections.cpp); at
+//    roundabouts, which the cylinder cannot see, the ring's junctions instead (Roundabouts.cpp).
 // 2. Streets: the trace points left after removing the nodes' neighbourhoods, clustered, each
 //    cluster attached to its two nearest nodes, eqs. 1-2 (StreetClusters.cpp), with its centreline
 //    (Centreline.cpp); dead ends that nearly touch are one node (EndNodes.cpp).
@@ -19,6 +20,7 @@
 #include "Streets.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/roadgraph/Intersections.hpp"
+#include "slamroute/roadgraph/Roundabouts.hpp"
 
 namespace slamroute::roadgraph {
 namespace {
@@ -102,10 +104,30 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
   logInfo("build-graph: " + std::to_string(raw.size()) + " trace points -> " +
           std::to_string(ds.points.size()) + " voxels");
 
-  // Step 1: nodes (hollow cylinder).
-  const IntersectionResult ir = detectIntersections(ds.points, cfg.nodes, &ds.axes);
+  // Trace points by vehicle, then time.
+  std::vector<std::size_t> order(traces.points.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto &pa = traces.points[a], &pb = traces.points[b];
+    return pa.vehicle != pb.vehicle ? pa.vehicle < pb.vehicle : pa.t < pb.t;
+  });
+  const double half_h = 0.5 * cfg.nodes.height_m;
+
+  // Step 1: nodes (hollow cylinder), and roundabouts, whose junctions replace the nodes there.
+  IntersectionResult ir = detectIntersections(ds.points, cfg.nodes, &ds.axes);
   st.intersection_points =
       static_cast<std::size_t>(std::count(ir.is_intersection.begin(), ir.is_intersection.end(), 1));
+  const std::vector<Roundabout> rbs =
+      detectRoundabouts(traces, order, travel, cfg.roundabouts, ec.max_gap_s, half_h);
+  st.roundabouts = rbs.size();
+  if (!rbs.empty()) {
+    const std::size_t replaced = mergeRoundaboutNodes(ir.nodes, rbs, cfg.roundabouts, half_h);
+    std::size_t junctions = 0;
+    for (const auto& rb : rbs) junctions += rb.junctions.size();
+    logInfo("build-graph: " + std::to_string(rbs.size()) + " roundabout(s), " +
+            std::to_string(junctions) + " ring junctions in place of " +
+            std::to_string(replaced) + " node(s)");
+  }
   if (ir.nodes.empty())
     throw std::runtime_error(where + ": no intersection found in the traces (no point sees >= " +
                              std::to_string(cfg.nodes.min_branches) +
@@ -117,15 +139,7 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
   const std::size_t n_inter = gn.n_inter;
 
   // Step 2: remove node neighbourhoods, cluster the rest into streets, attach them to nodes.
-  const double half_h = 0.5 * cfg.nodes.height_m;
   const detail::StreetPoints spts = detail::clearNodeNeighbourhoods(ds.points, gn.pos, ec, half_h);
-  // Trace points by vehicle, then time.
-  std::vector<std::size_t> order(traces.points.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto &pa = traces.points[a], &pb = traces.points[b];
-    return pa.vehicle != pb.vehicle ? pa.vehicle < pb.vehicle : pa.t < pb.t;
-  });
   std::vector<Street> streets =
       detail::attachStreets(spts, traces, order, ds.voxel_of, gn, ec, half_h, st);
   std::vector<Point3>& nodes = gn.pos;

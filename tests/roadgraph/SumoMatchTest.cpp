@@ -117,32 +117,41 @@ TEST(SumoMatch, BolognaFromLaneTraces) {
 }
 
 // End to end as the issue runs it: `slamroute survey` (SUMO vehicles, 0.5 m GPS-like noise, seeded)
-// then `slamroute build-graph --net`, node F1 read from graph.json's validation block.
-TEST(SumoMatch, BolognaSurveyThroughTheCli) {
-  const fs::path net = fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml";
-  if (!fs::exists(net)) GTEST_SKIP() << net << " not available";
-  if (!fs::exists(SLAMROUTE_BINARY)) GTEST_SKIP() << "slamroute CLI not built";
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "roadgraph_bologna_survey";
+// then `slamroute build-graph --net`; returns graph.json (metadata parsed), or null when skipped.
+nlohmann::json surveyThroughTheCli(const fs::path& net, const std::string& name) {
+  if (!fs::exists(net) || !fs::exists(SLAMROUTE_BINARY)) return nullptr;
+  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / ("roadgraph_" + name + "_survey");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string bin = SLAMROUTE_BINARY, log = " >> " + (dir / "log.txt").string() + " 2>&1";
-  ASSERT_EQ(std::system((bin + " --seed 42 survey --net " + net.string() + " --out " +
+  EXPECT_EQ(std::system((bin + " --seed 42 survey --net " + net.string() + " --out " +
                          (dir / "survey").string() + " --depth-spacing 0" + log).c_str()),
             0);
-  ASSERT_EQ(std::system((bin + " build-graph --survey " + (dir / "survey").string() +
+  EXPECT_EQ(std::system((bin + " build-graph --survey " + (dir / "survey").string() +
                          " --no-depth --net " + net.string() + " --out " +
                          (dir / "graph.json").string() + log).c_str()),
             0);
   std::ifstream in(dir / "graph.json");
-  const auto g = nlohmann::json::parse(in);
-  const auto meta = g.at("metadata").is_string() ? nlohmann::json::parse(g.at("metadata").get<std::string>())
-                                                 : g.at("metadata");
-  const auto& v = meta.at("validation");
-  std::cout << "Bologna survey: node P " << v.at("node_precision") << " R " << v.at("node_recall")
+  auto g = nlohmann::json::parse(in);
+  if (g.at("metadata").is_string()) g["metadata"] = nlohmann::json::parse(g.at("metadata").get<std::string>());
+  const auto& v = g.at("metadata").at("validation");
+  std::cout << name << " survey: node P " << v.at("node_precision") << " R " << v.at("node_recall")
             << " F1 " << v.at("node_f1") << ", edge P " << v.at("edge_precision") << " R "
             << v.at("edge_recall") << "\n";
-  EXPECT_GE(v.at("node_f1").get<double>(), 0.8);
+  return g;
+}
+
+TEST(SumoMatch, BolognaSurveyThroughTheCli) {
+  const auto g = surveyThroughTheCli(
+      fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml", "bologna");
+  if (g.is_null()) GTEST_SKIP() << "net or slamroute CLI not available";
+  const auto& meta = g.at("metadata");
+  const auto& v = meta.at("validation");
+  // 0.887 (0.867 before roundabouts); the issue's 0.9 is not reached, see bench/RESULTS.md.
+  EXPECT_GE(v.at("node_f1").get<double>(), 0.85);
   EXPECT_GE(v.at("node_recall").get<double>(), 0.8);
+  // Via Andrea Costa's roundabout (radius ~18 m, two-lane ring) is the net's only one.
+  EXPECT_EQ(meta.at("stats").at("roundabouts").get<int>(), 1);
   // The turn table comes from the net: Bologna forbids U-turns on most streets and has divided
   // roads, so some turns at the graph's nodes go, but most stay.
   const auto& sm = meta.at("sumo_mapping");
@@ -151,6 +160,16 @@ TEST(SumoMatch, BolognaSurveyThroughTheCli) {
   EXPECT_GT(forbidden, 0u);
   EXPECT_LT(forbidden, sm.at("candidate_turns").get<std::size_t>() / 2);
   EXPECT_FALSE(g.at("turns").is_null());
+}
+
+TEST(SumoMatch, IngolstadtSurveyReachesTheIssueTarget) {
+  const auto g = surveyThroughTheCli(
+      fs::path(SLAMROUTE_SHARED_DIR) / "networks/ingolstadt21/ingolstadt21.net.xml", "ingolstadt");
+  if (g.is_null()) GTEST_SKIP() << "net or slamroute CLI not available";
+  const auto& meta = g.at("metadata");
+  EXPECT_GE(meta.at("validation").at("node_f1").get<double>(), 0.9);  // issue 4; 0.891 before
+  // One small three-arm roundabout with split arms: its six ring junctions are SUMO junctions.
+  EXPECT_EQ(meta.at("stats").at("roundabouts").get<int>(), 1);
 }
 
 TEST(SumoMatch, PerfectGraphScoresOne) {

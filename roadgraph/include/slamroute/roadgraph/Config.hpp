@@ -190,8 +190,72 @@ void visitFields(V& v, SumoMatchConfig& c) {
           "SUMO edges allowed between two graph edges at a turn [m]");
 }
 
+/// Roundabouts (Roundabouts.cpp): rings that vehicles circle round an empty middle.
+struct RoundaboutConfig {
+  bool enabled = true;
+  double min_radius_m = 6.0;   ///< smallest ring radius (centre to circulating lane) [m]
+  double max_radius_m = 30.0;  ///< largest ring radius [m]
+  double resample_m = 2.0;     ///< each path is averaged over this much travel before fitting [m]
+  /// A vehicle circles the ring when a stretch of its path fits a circle (rms below
+  /// max_fit_rms_m) and turns monotonically about it by at least min_sweep_deg. 120 deg: a turn
+  /// at a crossing sweeps about 90 deg; a roundabout's through movement 150-200 deg.
+  double min_sweep_deg = 120.0;  ///< [deg]
+  double max_fit_rms_m = 0.8;    ///< [m]
+  double centre_tolerance_m = 6.0;  ///< circle fits with centres this close are one ring [m]
+  int min_vehicles = 3;             ///< distinct vehicles that must circle a ring
+  /// Trace points this close to the radius are on the ring [m]. 3.5 m: a two-lane ring (Bologna)
+  /// puts its lanes 1.6 m either side of the fitted radius, plus GPS noise; with 2.5 m vehicles
+  /// changing lanes left the band and seemed to leave the ring.
+  double ring_width_m = 3.5;
+  /// Share of the ring's 36 sectors holding >= 3 points that move along the ring (a bend or two
+  /// junctions' turning arcs cover part of a circle only).
+  double min_occupied = 0.9;
+  double min_sense_share = 0.9;   ///< share of the points along the ring circling in its sense
+  double max_inner_share = 0.02;  ///< points within half the radius / points on the ring
+  /// A vehicle joins (leaves) the ring where it first (last) comes this close to the radius [m].
+  /// 1 m: Ingolstadt's split arms then join and leave 7.8 m apart along the ring (5 m with 2.5 m).
+  double join_width_m = 1.0;
+  double min_run_sweep_deg = 20.0;  ///< a stay on the ring counts when it turns this far [deg]
+  double arm_gap_m = 4.0;  ///< joins (or leaves) farther apart along the ring: separate [m]
+  int min_arm_vehicles = 2;         ///< stays that must join (leave) where a junction is
+  double junction_merge_m = 5.0;  ///< a join and a leave this close along the ring: one [m]
+  /// Hollow-cylinder nodes within radius + this of the centre are replaced [m]. 14 m: the
+  /// carriageways of a divided arm part 25-30 m from the centre of a 36 m ring; their fork is no
+  /// junction of the net.
+  double absorb_margin_m = 14.0;
+};
+template <class V>
+void visitFields(V& v, RoundaboutConfig& c) {
+  v.field("enabled", c.enabled, "detect roundabouts (rings vehicles circle) as their junctions");
+  v.field("min_radius_m", c.min_radius_m, "smallest ring radius [m]");
+  v.field("max_radius_m", c.max_radius_m, "largest ring radius [m]");
+  v.field("resample_m", c.resample_m, "paths averaged over this much travel before fitting [m]");
+  v.field("min_sweep_deg", c.min_sweep_deg,
+          "a vehicle circles a ring when its path turns this far on one fitted circle [deg]");
+  v.field("max_fit_rms_m", c.max_fit_rms_m, "circle fit residual limit [m]");
+  v.field("centre_tolerance_m", c.centre_tolerance_m, "circle centres this close: one ring [m]");
+  v.field("min_vehicles", c.min_vehicles, "distinct vehicles that must circle a ring");
+  v.field("ring_width_m", c.ring_width_m, "points this close to the radius are on the ring [m]");
+  v.field("min_occupied", c.min_occupied,
+          "share of the ring's 36 sectors with points moving along it (0-1)");
+  v.field("min_sense_share", c.min_sense_share,
+          "share of points along the ring circling in its sense (0-1)");
+  v.field("max_inner_share", c.max_inner_share,
+          "points inside half the radius relative to points on the ring (an empty middle)");
+  v.field("join_width_m", c.join_width_m,
+          "a vehicle joins (leaves) the ring where it first (last) comes this close to the radius [m]");
+  v.field("min_run_sweep_deg", c.min_run_sweep_deg, "a stay on the ring turns this far [deg]");
+  v.field("arm_gap_m", c.arm_gap_m, "joins (leaves) farther apart along the ring: separate [m]");
+  v.field("min_arm_vehicles", c.min_arm_vehicles, "stays that must join (leave) at a junction");
+  v.field("junction_merge_m", c.junction_merge_m,
+          "a join and a leave this close along the ring are one junction [m]");
+  v.field("absorb_margin_m", c.absorb_margin_m,
+          "hollow-cylinder nodes within radius + this of the centre are replaced [m]");
+}
+
 struct Config {
   NodeConfig nodes;
+  RoundaboutConfig roundabouts;
   EdgeConfig edges;
   DepthConfig depth;
   SumoMatchConfig sumo;
@@ -200,6 +264,7 @@ struct Config {
 template <class V>
 void visitFields(V& v, Config& c) {
   v.section("nodes", c.nodes);
+  v.section("roundabouts", c.roundabouts);
   v.section("edges", c.edges);
   v.section("depth", c.depth);
   v.section("sumo", c.sumo);
