@@ -97,6 +97,17 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
   for (std::size_t n = 0; n < out.built.node_is_end.size(); ++n)
     if (out.built.node_is_end[n]) ends.push_back(static_cast<int>(n));
   meta["end_nodes"] = ends;
+  nlohmann::json rbs = nlohmann::json::array();
+  for (const auto& rb : out.built.roundabouts) {
+    nlohmann::json junctions = nlohmann::json::array();
+    for (const auto& j : rb.junctions) junctions.push_back({j.x(), j.y(), j.z()});
+    rbs.push_back({{"centre", {rb.centre.x(), rb.centre.y(), rb.centre.z()}},
+                   {"radius_m", rb.radius_m},
+                   {"sense", rb.sense > 0 ? "counter-clockwise" : "clockwise"},
+                   {"vehicles", rb.vehicles},
+                   {"junctions", junctions}});
+  }
+  meta["roundabouts"] = rbs;
   if (out.validation) {
     meta["net"] = in.net.string();
     meta["validation"] = nlohmann::json::parse(out.validation->toJson());

@@ -117,8 +117,8 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
   IntersectionResult ir = detectIntersections(ds.points, cfg.nodes, &ds.axes);
   st.intersection_points =
       static_cast<std::size_t>(std::count(ir.is_intersection.begin(), ir.is_intersection.end(), 1));
-  const std::vector<Roundabout> rbs =
-      detectRoundabouts(traces, order, travel, cfg.roundabouts, ec.max_gap_s, half_h);
+  out.roundabouts = detectRoundabouts(traces, order, travel, cfg.roundabouts, ec.max_gap_s, half_h);
+  const std::vector<Roundabout>& rbs = out.roundabouts;
   st.roundabouts = rbs.size();
   if (!rbs.empty()) {
     const std::size_t replaced = mergeRoundaboutNodes(ir.nodes, rbs, cfg.roundabouts, half_h);

@@ -10,9 +10,9 @@
 //    or two turning arcs of junctions fill part of a circle; a crossing has traffic in its middle.
 // 4. Junctions: each vehicle's stays on the ring (consecutive points on it, moving along it in its
 //    sense) start where it joins and end where it leaves (where it comes within join_width_m of
-//    the radius, see ringJunctions). Joins and leaves are grouped along the
-//    ring (arm_gap_m); each group of >= min_arm_vehicles is a junction, and a join and a leave
-//    closer than junction_merge_m (a two-way arm) are one.
+//    the radius, see ringJunctions). Joins and leaves are grouped along the ring (arm_gap_m);
+//    each group of >= min_arm_vehicles is a junction, and a join and a leave closer than
+//    junction_merge_m (a two-way arm) are one; a split arm keeps two.
 #include "slamroute/roadgraph/Roundabouts.hpp"
 
 #include <Eigen/Dense>

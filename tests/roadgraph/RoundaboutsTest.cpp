@@ -126,6 +126,8 @@ TEST(Roundabouts, GraphHasTheRingJunctionsLinkedOneWayRoundTheRing) {
   const Traces tr = makeTraces(roundaboutDrives(12.0, arms), 0.3, 5, 1.0, 2);
   const auto r = buildRoadGraph(tr, Config{});
   EXPECT_EQ(r.stats.roundabouts, 1u);
+  ASSERT_EQ(r.roundabouts.size(), 1u);
+  EXPECT_EQ(r.roundabouts[0].junctions.size(), arms.size());
   EXPECT_EQ(r.stats.intersections, 4u);
   std::vector<int> junction(arms.size(), -1);
   for (std::size_t n = 0; n < r.graph.nodes.size(); ++n) {

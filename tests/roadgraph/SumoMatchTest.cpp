@@ -152,6 +152,8 @@ TEST(SumoMatch, BolognaSurveyThroughTheCli) {
   EXPECT_GE(v.at("node_recall").get<double>(), 0.8);
   // Via Andrea Costa's roundabout (radius ~18 m, two-lane ring) is the net's only one.
   EXPECT_EQ(meta.at("stats").at("roundabouts").get<int>(), 1);
+  ASSERT_EQ(meta.at("roundabouts").size(), 1u);
+  EXPECT_NEAR(meta.at("roundabouts")[0].at("radius_m").get<double>(), 18.0, 2.0);
   // The turn table comes from the net: Bologna forbids U-turns on most streets and has divided
   // roads, so some turns at the graph's nodes go, but most stay.
   const auto& sm = meta.at("sumo_mapping");
@@ -168,8 +170,14 @@ TEST(SumoMatch, IngolstadtSurveyReachesTheIssueTarget) {
   if (g.is_null()) GTEST_SKIP() << "net or slamroute CLI not available";
   const auto& meta = g.at("metadata");
   EXPECT_GE(meta.at("validation").at("node_f1").get<double>(), 0.9);  // issue 4; 0.891 before
-  // One small three-arm roundabout with split arms: its six ring junctions are SUMO junctions.
+  // One small three-arm roundabout (ring lane radius ~9 m) with split arms: an entry and an exit
+  // junction per arm, six SUMO junctions on the ring.
   EXPECT_EQ(meta.at("stats").at("roundabouts").get<int>(), 1);
+  const auto& rbs = meta.at("roundabouts");
+  ASSERT_EQ(rbs.size(), 1u);
+  EXPECT_NEAR(rbs[0].at("radius_m").get<double>(), 9.0, 1.5);
+  EXPECT_EQ(rbs[0].at("sense").get<std::string>(), "counter-clockwise");
+  EXPECT_EQ(rbs[0].at("junctions").size(), 6u);
 }
 
 TEST(SumoMatch, PerfectGraphScoresOne) {

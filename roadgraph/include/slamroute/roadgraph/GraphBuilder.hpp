@@ -6,6 +6,7 @@
 
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/roadgraph/Config.hpp"
+#include "slamroute/roadgraph/Roundabouts.hpp"
 #include "slamroute/roadgraph/Traces.hpp"
 
 namespace slamroute::roadgraph {
@@ -26,6 +27,7 @@ struct GraphBuildResult {
   RoadGraph graph;               ///< weights all 1 until assignDepthWeights
   std::vector<char> node_is_end;  ///< per graph node: a dead-end node (not an intersection)
   GraphBuildStats stats;
+  std::vector<Roundabout> roundabouts;  ///< found by detectRoundabouts, junctions among the nodes
 };
 
 /// Whole traces -> graph pipeline. Throws std::invalid_argument naming traces.source on bad
