@@ -5,6 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake pkg-config ccache git python3
+  python3-numpy python3-scipy            # bench/*.py analysis scripts
   sumo sumo-tools                       # SUMO binaries, libsumo (libsumocpp.so + headers), tools
   libeigen3-dev libboost-graph-dev libpcl-dev libopencv-dev libembree-dev liblemon-dev
   libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <numeric>
 #include <stdexcept>
 
 #include "ShortLinks.hpp"
@@ -90,6 +89,7 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
   const EdgeConfig& ec = cfg.edges;
   if (!(ec.clear_radius_m > 0 && ec.cluster_tolerance_m > 0 && ec.polyline_step_m > 0))
     throw std::invalid_argument("roadgraph.edges: radii, tolerance and step must be > 0");
+  if (cfg.roundabouts.enabled) checkRoundaboutConfig(cfg.roundabouts);
   GraphBuildResult out;
   auto& st = out.stats;
   st.trace_points = traces.points.size();
@@ -97,20 +97,14 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
   std::vector<Point3> raw;
   raw.reserve(traces.points.size());
   for (const auto& p : traces.points) raw.push_back(p.pos);
+  const std::vector<std::size_t> order = byVehicleThenTime(traces);
   const std::vector<Vec3> travel =
-      travelDirections(traces, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
+      travelDirections(traces, order, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
   const Downsampled ds = downsample(raw, cfg.nodes.downsample_m, &travel);
   st.voxels = ds.points.size();
   logInfo("build-graph: " + std::to_string(raw.size()) + " trace points -> " +
           std::to_string(ds.points.size()) + " voxels");
 
-  // Trace points by vehicle, then time.
-  std::vector<std::size_t> order(traces.points.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto &pa = traces.points[a], &pb = traces.points[b];
-    return pa.vehicle != pb.vehicle ? pa.vehicle < pb.vehicle : pa.t < pb.t;
-  });
   const double half_h = 0.5 * cfg.nodes.height_m;
 
   // Step 1: nodes (hollow cylinder), and roundabouts, whose junctions replace the nodes there.

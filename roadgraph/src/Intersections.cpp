@@ -53,6 +53,7 @@
 #include <unordered_map>
 
 #include "HollowCylinder.hpp"
+#include "Median.hpp"
 #include "PointGrid.hpp"
 #include "slamroute/core/Log.hpp"
 namespace slamroute::roadgraph {
@@ -86,15 +87,10 @@ namespace {
 
 using detail::branchesAt;
 using detail::crossingFrom;
+using detail::median;
 using detail::PointGrid;
 using detail::Scratch;
 using detail::UnionFind;
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 }  // namespace
 

@@ -23,6 +23,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "Median.hpp"
 #include "PointGrid.hpp"
 
 namespace slamroute::roadgraph {
@@ -30,6 +31,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kSectors = 36;
+using detail::median;
 
 struct Sample {
   Eigen::Vector2d xy;
@@ -164,13 +166,6 @@ std::vector<Candidate> circlingStretches(const std::vector<std::vector<Sample>>&
     }
   }
   return out;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
 }
 
 /// Groups of circling stretches with close centres (densest seed first): ring candidates.
@@ -453,12 +448,7 @@ std::vector<Point3> ringJunctions(const Roundabout& rb, const Traces& tr,
 
 }  // namespace
 
-std::vector<Roundabout> detectRoundabouts(const Traces& traces,
-                                          const std::vector<std::size_t>& order,
-                                          const std::vector<Vec3>& travel,
-                                          const RoundaboutConfig& cfg, double max_gap_s,
-                                          double half_height_m) {
-  if (!cfg.enabled) return {};
+void checkRoundaboutConfig(const RoundaboutConfig& cfg) {
   if (!(cfg.min_radius_m > 0 && cfg.max_radius_m >= cfg.min_radius_m && cfg.resample_m > 0 &&
         cfg.centre_tolerance_m > 0 && cfg.ring_width_m > 0 && cfg.join_width_m > 0 &&
         cfg.arm_gap_m > 0 && cfg.junction_merge_m >= 0 && cfg.absorb_margin_m >= 0))
@@ -466,6 +456,15 @@ std::vector<Roundabout> detectRoundabouts(const Traces& traces,
         "roadgraph.roundabouts: radii, resample_m, centre_tolerance_m, ring_width_m, join_width_m "
         "and arm_gap_m must be > 0, junction_merge_m and absorb_margin_m >= 0 (max_radius_m >= "
         "min_radius_m)");
+}
+
+std::vector<Roundabout> detectRoundabouts(const Traces& traces,
+                                          const std::vector<std::size_t>& order,
+                                          const std::vector<Vec3>& travel,
+                                          const RoundaboutConfig& cfg, double max_gap_s,
+                                          double half_height_m) {
+  if (!cfg.enabled) return {};
+  checkRoundaboutConfig(cfg);
   if (travel.size() != traces.points.size() || order.size() != traces.points.size())
     throw std::invalid_argument("detectRoundabouts: travel / order and trace points differ");
   std::vector<int> run_vehicle;

@@ -49,12 +49,14 @@ Downsampled downsample(const std::vector<Point3>& pts, double voxel_m,
 }
 
 std::vector<Vec3> travelDirections(const Traces& traces, double span_m, double max_gap_s) {
+  return travelDirections(traces, byVehicleThenTime(traces), span_m, max_gap_s);
+}
+
+std::vector<Vec3> travelDirections(const Traces& traces, const std::vector<std::size_t>& order,
+                                   double span_m, double max_gap_s) {
   const auto& P = traces.points;
-  std::vector<std::size_t> order(P.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return P[a].vehicle != P[b].vehicle ? P[a].vehicle < P[b].vehicle : P[a].t < P[b].t;
-  });
+  if (order.size() != P.size())
+    throw std::invalid_argument("travelDirections: order and trace points differ in number");
   auto linked = [&](std::size_t a, std::size_t b) {  // consecutive in order, same run
     return P[a].vehicle == P[b].vehicle && std::abs(P[b].t - P[a].t) <= max_gap_s;
   };

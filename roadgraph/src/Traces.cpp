@@ -3,8 +3,10 @@
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -137,6 +139,16 @@ Traces readTraces(const std::filesystem::path& path) {
   const auto ext = path.extension().string();
   if (gz || ext == ".xml" || first.find('<') != std::string::npos) return readFcdXml(path);
   return readTracesCsv(path);
+}
+
+std::vector<std::size_t> byVehicleThenTime(const Traces& traces) {
+  const auto& P = traces.points;
+  std::vector<std::size_t> order(P.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return P[a].vehicle != P[b].vehicle ? P[a].vehicle < P[b].vehicle : P[a].t < P[b].t;
+  });
+  return order;
 }
 
 void checkTraces(const Traces& tr, const std::string& where) {

@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numeric>
 
 #include "SyntheticTraces.hpp"
 #include "slamroute/roadgraph/GraphBuilder.hpp"
@@ -39,13 +38,8 @@ std::vector<Road> roundaboutDrives(double r, const std::vector<double>& arm_deg)
 }
 
 std::vector<Roundabout> detect(const Traces& tr, const Config& cfg = Config{}) {
-  std::vector<std::size_t> order(tr.points.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto &pa = tr.points[a], &pb = tr.points[b];
-    return pa.vehicle != pb.vehicle ? pa.vehicle < pb.vehicle : pa.t < pb.t;
-  });
-  const auto travel = travelDirections(tr, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
+  const std::vector<std::size_t> order = byVehicleThenTime(tr);
+  const auto travel = travelDirections(tr, order, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
   return detectRoundabouts(tr, order, travel, cfg.roundabouts, cfg.edges.max_gap_s,
                            0.5 * cfg.nodes.height_m);
 }

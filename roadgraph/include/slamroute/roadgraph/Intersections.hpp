@@ -24,6 +24,9 @@ Downsampled downsample(const std::vector<Point3>& pts, double voxel_m,
 /// Direction of travel of every trace point: from the vehicle's position `span_m` behind to
 /// `span_m` ahead along its own trace (breaks at time gaps > max_gap_s); zero when the vehicle
 /// did not move that far. Robust to GPS noise across the road.
+/// `order`: byVehicleThenTime(traces), when the caller has it already.
+std::vector<Vec3> travelDirections(const Traces& traces, const std::vector<std::size_t>& order,
+                                   double span_m, double max_gap_s);
 std::vector<Vec3> travelDirections(const Traces& traces, double span_m, double max_gap_s);
 
 struct IntersectionResult {

@@ -24,7 +24,10 @@ struct Roundabout {
   std::vector<Point3> junctions;
 };
 
-/// Finds roundabouts. `order`: trace point indices by vehicle, then time; `travel`: per trace
+/// Throws std::invalid_argument (one line: the roadgraph.roundabouts keys and their limits).
+void checkRoundaboutConfig(const RoundaboutConfig& cfg);
+
+/// Finds roundabouts (checks cfg first). `order`: trace point indices by vehicle, then time; `travel`: per trace
 /// point its unit direction of travel (zero when unknown, see travelDirections); `max_gap_s`:
 /// a vehicle's trace breaks at larger time gaps; `half_height_m`: points farther in z from the
 /// ring are not on it (an overpass). Deterministic.

@@ -30,6 +30,9 @@ Traces readTracesCsv(const std::filesystem::path& path);
 Traces readFcdXml(const std::filesystem::path& path);
 /// Picks the reader by content (XML or CSV).
 Traces readTraces(const std::filesystem::path& path);
+/// Trace point indices by vehicle, then time (stable: equal times keep file order). The order
+/// every per-vehicle pass over the traces walks in.
+std::vector<std::size_t> byVehicleThenTime(const Traces& traces);
 /// Throws std::invalid_argument naming `where` for empty or one-point traces and NaN/inf values.
 void checkTraces(const Traces& traces, const std::string& where);
 
