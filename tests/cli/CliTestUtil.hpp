@@ -1,5 +1,6 @@
 #pragma once
 // Runs the slamroute binary in a shell and captures its output and exit code.
+#include "TestTmp.hpp"
 #include <sys/wait.h>
 
 #include <array>
@@ -29,7 +30,7 @@ inline CliResult runCli(const std::string& args) {
 }
 
 inline std::filesystem::path cliTempDir(const std::string& name) {
-  const auto dir = std::filesystem::path(SLAMROUTE_TEST_TMP) / ("cli_" + name);
+  const auto dir = slamroute::test::testTmp() / ("cli_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

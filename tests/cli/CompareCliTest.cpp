@@ -1,4 +1,5 @@
 // `slamroute compare`: metrics for two trajectory files, one-line errors on bad input.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -20,7 +21,7 @@ struct CmdRun {
 };
 
 fs::path tmp() {
-  fs::path d = fs::path(SLAMROUTE_TEST_TMP) / "compare_cli";
+  fs::path d = slamroute::test::testTmp() / "compare_cli";
   fs::create_directories(d);
   return d;
 }

@@ -1,4 +1,5 @@
 // Pieces of `run` / `experiment` (cli/Pipeline.hpp) that need no child process.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,7 +12,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Pipeline, ResumeSkipsOnlyStepsWhoseOutputExists) {
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "pipeline_resume";
+  const fs::path dir = slamroute::test::testTmp() / "pipeline_resume";
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "done.json") << "{}\n";

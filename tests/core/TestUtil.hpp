@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the core tests: temp folders and small files.
+#include "TestTmp.hpp"
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -7,7 +8,7 @@
 namespace slamroute::test {
 
 inline std::filesystem::path tempDir(const std::string& name) {
-  const auto dir = std::filesystem::path(SLAMROUTE_TEST_TMP) / name;
+  const auto dir = slamroute::test::testTmp() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

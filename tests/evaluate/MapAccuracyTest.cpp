@@ -1,4 +1,5 @@
 // World mesh (PLY) reading, map-to-surface distances and the PCD writer.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path tmpDir() {
-  fs::path d = fs::path(SLAMROUTE_TEST_TMP) / "evaluate_map";
+  fs::path d = slamroute::test::testTmp() / "evaluate_map";
   fs::create_directories(d);
   return d;
 }

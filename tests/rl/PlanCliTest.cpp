@@ -1,4 +1,5 @@
 // `slamroute plan` end to end (skipped when the CLI is not built): files and one-line errors.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -19,7 +20,7 @@ struct CmdResult {
 };
 
 CmdResult runCli(const std::string& args) {
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "rl_cli";
+  const fs::path dir = slamroute::test::testTmp() / "rl_cli";
   fs::create_directories(dir);
   // One log per test: ctest runs the tests of this file in parallel processes.
   const std::string log =
@@ -35,7 +36,7 @@ class PlanCli : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!fs::exists(SLAMROUTE_BINARY)) GTEST_SKIP() << "slamroute CLI not built";
-    dir_ = fs::path(SLAMROUTE_TEST_TMP) / "rl_cli";
+    dir_ = slamroute::test::testTmp() / "rl_cli";
     fs::create_directories(dir_);
   }
   fs::path dir_;

@@ -1,4 +1,5 @@
 // plan(): bad input and graph preparation (largest legally drivable part).
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,7 +90,7 @@ TEST(Plan, RouteJsonRoundTrip) {
   Config c;
   c.planner = "postman";
   const Route r = plan(test::grid(2, 3), c, 7);
-  const auto path = std::filesystem::path(SLAMROUTE_TEST_TMP) / "rl_plan_roundtrip.json";
+  const auto path = slamroute::test::testTmp() / "rl_plan_roundtrip.json";
   std::filesystem::create_directories(path.parent_path());
   r.writeJson(path);
   const Route back = Route::readJson(path);

@@ -1,5 +1,6 @@
 // `postman`: known lengths on small graphs; 100 % coverage, no illegal turns and near-optimal
 // length on the real nets; SUMO drives the Bologna route without teleports.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -112,7 +113,7 @@ void sumoDrives(const std::filesystem::path& net, const std::string& name,
   Config cfg;
   cfg.planner = planner;
   const Route r = plan(test::netGraph(net), cfg, 1, net.string());
-  const std::filesystem::path dir = std::filesystem::path(SLAMROUTE_TEST_TMP) / ("rl_postman_sumo_" + name);
+  const std::filesystem::path dir = slamroute::test::testTmp() / ("rl_postman_sumo_" + name);
   std::filesystem::create_directories(dir);
   r.writeRouXml(dir / "route.rou.xml");
   const std::string log = (dir / "sumo.log").string();

@@ -1,5 +1,6 @@
 // Depth-image spread score (paper §3.1 step 4, eqs. 3-4): known answers on rendered synthetic
 // depth images, and the fallback for missing / corrupt frames.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -79,7 +80,7 @@ TEST(DepthScore, EmptyImageScoresZeroAndDoesNotThrow) {
 }
 
 TEST(DepthScore, WeightsAreMeanFrameScoresWithFallbackForBadFrames) {
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "roadgraph" / "depth";
+  const fs::path dir = slamroute::test::testTmp() / "roadgraph" / "depth";
   fs::create_directories(dir);
   const auto corner =
       render({{Vec3(0, 1, 0), 1.5}, {Vec3(-1, 0, 0), 3.0}, {Vec3(0, 0, 1), 15.0}});
@@ -115,7 +116,7 @@ TEST(DepthScore, WeightsAreMeanFrameScoresWithFallbackForBadFrames) {
 }
 
 TEST(DepthScore, PngRoundTripAndTruncatedFile) {
-  const fs::path p = fs::path(SLAMROUTE_TEST_TMP) / "roadgraph" / "rt.png";
+  const fs::path p = slamroute::test::testTmp() / "roadgraph" / "rt.png";
   fs::create_directories(p.parent_path());
   DepthImage img;
   img.width = 4;

@@ -1,6 +1,7 @@
 // Validation against SUMO nets and the graph-edge -> SUMO-edge mapping, with traces made from the
 // nets' own lane shapes (every passenger lane driven once, junctions crossed along the
 // connections), so the known answer is the net itself.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -120,7 +121,7 @@ TEST(SumoMatch, BolognaFromLaneTraces) {
 // then `slamroute build-graph --net`; returns graph.json (metadata parsed), or null when skipped.
 nlohmann::json surveyThroughTheCli(const fs::path& net, const std::string& name) {
   if (!fs::exists(net) || !fs::exists(SLAMROUTE_BINARY)) return nullptr;
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / ("roadgraph_" + name + "_survey");
+  const fs::path dir = slamroute::test::testTmp() / ("roadgraph_" + name + "_survey");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string bin = SLAMROUTE_BINARY, log = " >> " + (dir / "log.txt").string() + " 2>&1";

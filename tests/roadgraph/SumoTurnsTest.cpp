@@ -1,6 +1,7 @@
 // Turn permissions of a graph from the net it was matched to (SumoTurns.cpp), on the plus net:
 // a hand-made graph whose edges are the net's own edges, so the known answer is the net's
 // <connection>s.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,7 +28,7 @@ SumoNet plusWithout(const std::vector<std::pair<std::string, std::string>>& cut,
     if (at == std::string::npos) throw std::runtime_error("no connection " + a + " -> " + b);
     xml.erase(at, xml.find('\n', at) - at);
   }
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / ("sumo_turns_" + name);
+  const fs::path dir = slamroute::test::testTmp() / ("sumo_turns_" + name);
   fs::create_directories(dir);
   std::ofstream(dir / "plus.net.xml") << xml;
   return SumoNet::read(dir / "plus.net.xml");

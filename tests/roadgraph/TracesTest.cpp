@@ -1,4 +1,5 @@
 // Trace readers: traces.csv and SUMO FCD XML, and their error messages.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path tmpFile(const std::string& name, const std::string& content) {
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "roadgraph";
+  const fs::path dir = slamroute::test::testTmp() / "roadgraph";
   fs::create_directories(dir);
   std::ofstream(dir / name) << content;
   return dir / name;

@@ -1,3 +1,4 @@
+#include "TestTmp.hpp"
 #include "slamroute/simulate/DepthCamera.hpp"
 
 #include <gtest/gtest.h>
@@ -57,7 +58,7 @@ TEST(DepthCamera, NoReturnBeyondRangeIsZeroAndPngRoundTrips) {
   Pose3 T = DepthCamera::bodyToCamera(0.0);
   T.translation() = Vec3(1, 2, 0.5);
   const DepthImage img = cam.render(w, T);
-  const auto dir = std::filesystem::path(SLAMROUTE_TEST_TMP) / "depth";
+  const auto dir = slamroute::test::testTmp() / "depth";
   std::filesystem::create_directories(dir);
   writeDepthPng(dir / "d.png", img);
   const DepthImage back = readDepthPng(dir / "d.png");

@@ -1,6 +1,7 @@
 // Drive under the default city's overpass with --save-scans: the scans stacked with the ground
 // truth form a crisp map (every point on a world surface), the overpass is a deck above the
-// street, saved scans equal regenerated ones. Writes SLAMROUTE_TEST_TMP/drive_map_overpass.png.
+// street, saved scans equal regenerated ones. Writes build/test_tmp/<this test>/drive_map_overpass.png.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,9 +17,8 @@ namespace fs = std::filesystem;
 using namespace slamroute;
 
 TEST(DriveMap, StackedScansUnderTheOverpassAreCrispAndShowTheDeck) {
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "drive_map";
-  const fs::path route = fs::path(SLAMROUTE_TEST_TMP) / "drive_map_route.json";
-  fs::create_directories(SLAMROUTE_TEST_TMP);
+  const fs::path dir = slamroute::test::testTmp() / "drive_map";
+  const fs::path route = slamroute::test::testTmp() / "drive_map_route.json";
   // Avenue C2 northwards from R1 to R3, under the R2 overpass (networks/README.md).
   std::ofstream(route) << R"({"sumo_edges":["R1C2_R3C2"]})";
   simulate::Config cfg;
@@ -73,7 +73,7 @@ TEST(DriveMap, StackedScansUnderTheOverpassAreCrispAndShowTheDeck) {
   simulate::MapPngOptions mo;
   mo.metres_per_pixel = 0.25;
   mo.stride = 2;
-  const fs::path png = fs::path(SLAMROUTE_TEST_TMP) / "drive_map_overpass.png";
+  const fs::path png = slamroute::test::testTmp() / "drive_map_overpass.png";
   EXPECT_GT(simulate::renderStackedScansPng(saved, sim.groundtruth(), png, mo), 100000u);
   EXPECT_GT(fs::file_size(png), 10000u);
   fs::remove_all(dir / drive_files::kScanDir);  // ~100 MB; keep the rest for a look

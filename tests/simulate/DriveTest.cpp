@@ -1,4 +1,5 @@
 // runDrive on the 3x3 grid: ground truth on the route's lanes, 10 Hz, pose edges in route order.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -28,9 +29,8 @@ double distToPolyline(const Point3& p, const Polyline& pl) {
 }
 
 TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "drive_grid";
-  const fs::path route = fs::path(SLAMROUTE_TEST_TMP) / "drive_grid_route.json";
-  fs::create_directories(SLAMROUTE_TEST_TMP);
+  const fs::path dir = slamroute::test::testTmp() / "drive_grid";
+  const fs::path route = slamroute::test::testTmp() / "drive_grid_route.json";
   const std::vector<std::string> edges = {"g00_g01", "g01_g02", "g02_g12",
                                           "g12_g11", "g11_g10", "g10_g20"};
   std::ofstream(route) << nlohmann::json(edges).dump();
@@ -160,9 +160,8 @@ namespace {
 TEST(Drive, TeleportedMapperIsAnErrorAndNothingIsWritten) {
   // With a 1 s teleport time and dense traffic, SUMO teleports the mapper the first time it
   // waits (at the traffic light of R1C2): the drive must fail instead of recording a jump.
-  const fs::path dir = fs::path(SLAMROUTE_TEST_TMP) / "drive_teleport";
-  const fs::path route = fs::path(SLAMROUTE_TEST_TMP) / "drive_teleport_route.json";
-  fs::create_directories(SLAMROUTE_TEST_TMP);
+  const fs::path dir = slamroute::test::testTmp() / "drive_teleport";
+  const fs::path route = slamroute::test::testTmp() / "drive_teleport_route.json";
   fs::remove_all(dir);
   std::ofstream(route)
       << R"(["R1C1_R1C2","R1C2_R3C2","R3C2_R3C1","R3C1_R3C0","R3C0_R2C0","R2C0_R2C1","R2C1_R2C3"])";

@@ -1,3 +1,4 @@
+#include "TestTmp.hpp"
 #include "slamroute/simulate/SimulatedScanSource.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ struct DriveDir {
 /// A hand-made drive folder on the shipped overpass net: three poses along W_E (y = 498.4).
 DriveDir makeDrive(const std::string& name) {
   DriveDir d;
-  d.dir = fs::path(SLAMROUTE_TEST_TMP) / "simscan" / name;
+  d.dir = slamroute::test::testTmp() / "simscan" / name;
   fs::remove_all(d.dir);
   fs::create_directories(d.dir);
   for (int i = 0; i < 3; ++i) {

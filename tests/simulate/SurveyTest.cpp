@@ -1,4 +1,5 @@
 // runSurvey on the 3x3 grid: traces at 10 Hz, coverage >= 90 %, depth frames with poses.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -29,7 +30,7 @@ std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
 }
 
 TEST(Survey, GridSurveyCoversTheNetWithTracesAndDepthFrames) {
-  const fs::path out = fs::path(SLAMROUTE_TEST_TMP) / "survey_grid";
+  const fs::path out = slamroute::test::testTmp() / "survey_grid";
   fs::remove_all(out);
   simulate::Config cfg;
   cfg.survey.depth_spacing_m = 100.0;
@@ -83,7 +84,7 @@ TEST(Survey, GridSurveyCoversTheNetWithTracesAndDepthFrames) {
 namespace {
 
 TEST(Survey, DefaultCitySurveyVisitsAtLeast90PercentOfDrivableEdges) {
-  const fs::path out = fs::path(SLAMROUTE_TEST_TMP) / "survey_city";
+  const fs::path out = slamroute::test::testTmp() / "survey_city";
   fs::remove_all(out);
   simulate::Config cfg;
   cfg.survey.depth_spacing_m = 150.0;  // the default (50 m) renders ~400 frames: 20 s

@@ -1,3 +1,4 @@
+#include "TestTmp.hpp"
 #include "slamroute/simulate/World.hpp"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path tmpDir(const std::string& name) {
-  const fs::path d = fs::path(SLAMROUTE_TEST_TMP) / "world" / name;
+  const fs::path d = slamroute::test::testTmp() / "world" / name;
   fs::create_directories(d);
   return d;
 }
