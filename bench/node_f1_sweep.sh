@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Node F1 of build-graph over survey seeds and roadgraph.nodes settings on the shared nets
+# (bench/RESULTS.md, "Node F1 over survey seeds", parameter sweep).
+# Usage: bench/node_f1_sweep.sh [BUILD_DIR] [OUT_DIR] [SEEDS]
+# Surveys are made once (--depth-spacing 0: traces only) and reused; each setting then builds the
+# graph from all of them (~30 s per setting on 2 cores). Prints one Markdown row per setting:
+# F1 per seed and the mean, Bologna then Ingolstadt.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+build="${1:-$here/../build}"
+out="${2:-/tmp/slamroute_node_f1}"
+seeds="${3:-42 7 1 2 3}"
+bin="$build/cli/slamroute"
+shared="$here/../../shared/networks"
+declare -A net=([bologna]="$shared/bologna_acosta/acosta_buslanes.net.xml"
+                [ingolstadt]="$shared/ingolstadt21/ingolstadt21.net.xml")
+mkdir -p "$out"
+for n in bologna ingolstadt; do
+  for s in $seeds; do
+    [ -f "$out/$n$s/traces.csv" ] ||
+      "$bin" --log-level warn --seed "$s" survey --net "${net[$n]}" --out "$out/$n$s" --depth-spacing 0
+  done
+done
+
+# name | YAML lines under roadgraph.nodes (';'-separated), empty = defaults
+settings=(
+  "defaults|"
+  "merge_distance_m 12|merge_distance_m: 12"
+  "merge_distance_m 14|merge_distance_m: 14"
+  "merge_distance_m 16|merge_distance_m: 16"
+  "merge_distance_m 20|merge_distance_m: 20"
+  "merge_distance_m 22|merge_distance_m: 22"
+  "merge_distance_m 25|merge_distance_m: 25"
+  "node_radius_m 8|node_radius_m: 8"
+  "node_radius_m 12|node_radius_m: 12"
+  "node_radius_m 14|node_radius_m: 14"
+  "inner_radius_m 8|inner_radius_m: 8"
+  "inner_radius_m 12|inner_radius_m: 12"
+  "outer_radius_m 22|outer_radius_m: 22"
+  "outer_radius_m 28|outer_radius_m: 28"
+  "min_vote_fraction 0.15|min_vote_fraction: 0.15"
+  "min_vote_fraction 0.35|min_vote_fraction: 0.35"
+  "refine_centre true|refine_centre: true"
+  "outer 22, node_radius 12, merge 20|outer_radius_m: 22;node_radius_m: 12;merge_distance_m: 20"
+  "node_radius 12, merge 20, min_vote_fraction 0.35|node_radius_m: 12;merge_distance_m: 20;min_vote_fraction: 0.35"
+)
+[ -n "${SWEEP_ONLY:-}" ] && settings=("${settings[@]:0:$SWEEP_ONLY}")
+
+f1() {  # graph.json -> node F1
+  python3 -c 'import json,sys; print("%.3f" % json.load(open(sys.argv[1]))["metadata"]["validation"]["node_f1"])' "$1"
+}
+echo "| setting | Bologna per seed ($seeds) | mean | Ingolstadt per seed | mean |"
+echo "|---|---|---|---|---|"
+for entry in "${settings[@]}"; do
+  name="${entry%%|*}"; body="${entry#*|}"
+  cfg="$out/sweep.yaml"
+  if [ -z "$body" ]; then echo "{}" > "$cfg"; else
+    { echo "roadgraph:"; echo "  nodes:"; IFS=';' read -ra kv <<< "$body"
+      for l in "${kv[@]}"; do echo "    $l"; done; } > "$cfg"; fi
+  row="| $name"
+  for n in bologna ingolstadt; do
+    vals=()
+    for s in $seeds; do
+      g="$out/graphs/$n$s.json"; mkdir -p "$out/graphs"
+      "$bin" --log-level error --config "$cfg" build-graph --survey "$out/$n$s" --no-depth \
+        --net "${net[$n]}" --out "$g" > /dev/null
+      vals+=("$(f1 "$g")")
+    done
+    mean=$(printf '%s\n' "${vals[@]}" | awk '{s+=$1} END {printf "%.3f", s/NR}')
+    row="$row | $(IFS=' '; echo "${vals[*]}" | sed 's/ / \/ /g') | $mean"
+  done
+  echo "$row |"
+done
