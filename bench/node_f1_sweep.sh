@@ -14,7 +14,7 @@ bin="$build/cli/slamroute"
 shared="$here/../../shared/networks"
 declare -A net=([bologna]="$shared/bologna_acosta/acosta_buslanes.net.xml"
                 [ingolstadt]="$shared/ingolstadt21/ingolstadt21.net.xml")
-mkdir -p "$out"
+mkdir -p "$out/graphs"
 for n in bologna ingolstadt; do
   for s in $seeds; do
     [ -f "$out/$n$s/traces.csv" ] ||
@@ -46,6 +46,7 @@ settings=(
 )
 [ -n "${SWEEP_ONLY:-}" ] && settings=("${settings[@]:0:$SWEEP_ONLY}")
 
+cfg="$out/sweep.yaml"
 f1() {  # graph.json -> node F1
   python3 -c 'import json,sys; print("%.3f" % json.load(open(sys.argv[1]))["metadata"]["validation"]["node_f1"])' "$1"
 }
@@ -53,7 +54,6 @@ echo "| setting | Bologna per seed ($seeds) | mean | Ingolstadt per seed | mean 
 echo "|---|---|---|---|---|"
 for entry in "${settings[@]}"; do
   name="${entry%%|*}"; body="${entry#*|}"
-  cfg="$out/sweep.yaml"
   if [ -z "$body" ]; then echo "{}" > "$cfg"; else
     { echo "roadgraph:"; echo "  nodes:"; IFS=';' read -ra kv <<< "$body"
       for l in "${kv[@]}"; do echo "    $l"; done; } > "$cfg"; fi
@@ -61,7 +61,7 @@ for entry in "${settings[@]}"; do
   for n in bologna ingolstadt; do
     vals=()
     for s in $seeds; do
-      g="$out/graphs/$n$s.json"; mkdir -p "$out/graphs"
+      g="$out/graphs/$n$s.json"
       "$bin" --log-level error --config "$cfg" build-graph --survey "$out/$n$s" --no-depth \
         --net "${net[$n]}" --out "$g" > /dev/null
       vals+=("$(f1 "$g")")

@@ -1,24 +1,16 @@
 // The README's commands: scripts/run_default.sh must call the program scripts/build.sh builds.
 // (It called ./build/slamroute from the first commit on, while CMake builds build/cli/slamroute.)
 #include "CliTestUtil.hpp"
+#include "slamroute/core/AtomicFile.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <string>
 
 namespace fs = std::filesystem;
-
-namespace {
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-}  // namespace
+using slamroute::readFile;
 
 TEST(Scripts, RunDefaultCallsTheBuiltProgram) {
   const fs::path script = fs::path(SLAMROUTE_SOURCE_DIR) / "scripts" / "run_default.sh";
