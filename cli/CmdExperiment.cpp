@@ -97,6 +97,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     int seeds = 5, jobs = 2;
     std::vector<int> sizes{50, 100, 500, 2000};
     bool table3_only = false, resume = false;
+    double status_every = 60.0;
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("experiment", "Reproduce the paper's tables (§4) over several seeds");
@@ -107,6 +108,9 @@ void registerExperiment(CLI::App& app, Context& ctx) {
   sub->add_option("--jobs", o->jobs, "steps run at once")->capture_default_str()->check(CLI::Range(1, 64));
   sub->add_option("--sizes", o->sizes, "graph sizes for Table 3 (comma-separated)")->delimiter(',')->capture_default_str();
   sub->add_flag("--table3-only", o->table3_only, "only the planning-time table (no SUMO, no SLAM)");
+  sub->add_option("--status-every", o->status_every,
+                  "seconds between progress lines of the running steps (0 = only start/finish)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   sub->add_flag("--resume", o->resume,
                 "keep the survey, graph, routes, drives and evaluations already in --out (an "
                 "interrupted run, or new evaluations of the same drives after deleting eval/); "
@@ -132,14 +136,14 @@ void registerExperiment(CLI::App& app, Context& ctx) {
       std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_path, "--out", (out / "survey").string()},
                                      out / "logs" / "survey.log")};
       s1[0].output = out / "survey" / "survey.json";
-      runSteps(todo(s1), 1);
+      runSteps(todo(s1), 1, o->status_every);
       const fs::path graph = out / "graph" / "graph.json";
       std::vector<Step> s2{childStep(ctx, "build-graph",
                                      {"build-graph", "--survey", (out / "survey").string(), "--net", net_path,
                                       "--out", graph.string()},
                                      out / "logs" / "build-graph.log")};
       s2[0].output = fs::path(graph).replace_extension(".png");  // the last of graph.json's siblings
-      runSteps(todo(s2), 1);
+      runSteps(todo(s2), 1, o->status_every);
 
       logInfo("[2/4] planning " + std::to_string(o->seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
       std::vector<Step> plans, random_plans, drives, evals;
@@ -168,16 +172,16 @@ void registerExperiment(CLI::App& app, Context& ctx) {
                                     out / "logs" / ("evaluate-" + id + ".log"), s));
           evals.back().output = out / "eval" / id / "metrics.json";  // written last
         }
-      runSteps(todo(plans), o->jobs);
+      runSteps(todo(plans), o->jobs, o->status_every);
       for (auto& st : random_plans)
         for (auto& a : st.args)
           if (!a.empty() && a[0] == '@') a = std::to_string(routeLength(a.substr(1)));
-      runSteps(todo(random_plans), o->jobs);
+      runSteps(todo(random_plans), o->jobs, o->status_every);
       for (int s = 1; s <= o->seeds; ++s)
         for (const auto& v : kVariants) makeRouteDrivable(net, out / "routes" / (v.name + "_s" + std::to_string(s) + ".json"));
       logInfo("[3/4] driving and LiDAR SLAM");
-      runSteps(todo(drives), o->jobs);
-      runSteps(todo(evals), o->jobs);
+      runSteps(todo(drives), o->jobs, o->status_every);
+      runSteps(todo(evals), o->jobs, o->status_every);
 
       std::map<std::string, std::map<std::string, Stat>> st;
       for (int s = 1; s <= o->seeds; ++s)

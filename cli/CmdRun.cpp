@@ -37,6 +37,7 @@ void registerRun(CLI::App& app, Context& ctx) {
     int jobs = 2;
     int slam_jobs = 0;
     bool save_scans = false;
+    double status_every = 60.0;
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("run", "The whole pipeline on a net (default: the shipped city) + report.md");
@@ -47,9 +48,13 @@ void registerRun(CLI::App& app, Context& ctx) {
       ->capture_default_str()->check(CLI::Range(1, 64));
   sub->add_option("--slam-jobs", o->slam_jobs,
                   "SLAM runs at once (0 = one per planner, sharing the cores: the stage ends when "
-                  "the total work is done, not when the longest route's queue is; ~1.8 GB each)")
+                  "the total work is done, not when the longest route's queue is; ~1.8 GB each on the "
+                  "default city, up to 8 GB for a 75 km drive)")
       ->capture_default_str()->check(CLI::Range(0, 64));
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
+  sub->add_option("--status-every", o->status_every,
+                  "seconds between progress lines of the running steps (0 = only start/finish)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   sub->callback([&ctx, o] {
     ctx.load();
     using Clock = std::chrono::steady_clock;
@@ -71,7 +76,7 @@ void registerRun(CLI::App& app, Context& ctx) {
     logInfo("[1/6] survey of " + net_abs);
     std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_abs, "--out", (out / "survey").string()},
                               out / "logs" / "survey.log")};
-    record(s1, runSteps(s1, 1));
+    record(s1, runSteps(s1, 1, o->status_every));
 
     logInfo("[2/6] road graph from the survey");
     const fs::path graph = out / "graph" / "graph.json";
@@ -79,7 +84,7 @@ void registerRun(CLI::App& app, Context& ctx) {
                               {"build-graph", "--survey", (out / "survey").string(), "--net", net_abs,
                                "--out", graph.string()},
                               out / "logs" / "build-graph.log")};
-    record(s2, runSteps(s2, 1));
+    record(s2, runSteps(s2, 1, o->status_every));
 
     logInfo("[3/6] planning: " + o->planners);
     // The random route gets the Q-learning route's length as its budget (paper Table 1 compares
@@ -95,11 +100,11 @@ void registerRun(CLI::App& app, Context& ctx) {
     std::vector<Step> s3;
     for (const auto& p : planners)
       if (!(budgeted_random && p == "random")) s3.push_back(planStep(p, {}));
-    record(s3, runSteps(s3, o->jobs));
+    record(s3, runSteps(s3, o->jobs, o->status_every));
     if (budgeted_random) {
       const double budget = routeLength(out / "routes" / "qlearning.json");
       std::vector<Step> s3b{planStep("random", {"--max-length", std::to_string(budget)})};
-      record(s3b, runSteps(s3b, 1));
+      record(s3b, runSteps(s3b, 1, o->status_every));
     }
     for (const auto& p : planners) makeRouteDrivable(net, out / "routes" / (p + ".json"));
 
@@ -111,7 +116,7 @@ void registerRun(CLI::App& app, Context& ctx) {
       if (o->save_scans) a.push_back("--save-scans");
       s4.push_back(childStep(ctx, "drive " + p, a, out / "logs" / ("drive-" + p + ".log")));
     }
-    record(s4, runSteps(s4, o->jobs));
+    record(s4, runSteps(s4, o->jobs, o->status_every));
 
     logInfo("[5/6] LiDAR SLAM on each drive");
     // Longest route first: with two evaluations at a time the last one to start is then the
@@ -126,7 +131,7 @@ void registerRun(CLI::App& app, Context& ctx) {
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));
     const int slam_jobs = o->slam_jobs > 0 ? o->slam_jobs : std::max(o->jobs, static_cast<int>(s5.size()));
-    record(s5, runSteps(s5, slam_jobs));
+    record(s5, runSteps(s5, slam_jobs, o->status_every));
 
     logInfo("[6/6] report");
     ReportInputs in;

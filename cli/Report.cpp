@@ -217,14 +217,18 @@ void writeReport(const ReportInputs& in) {
   md << "## Routes and SLAM results (paper §3.2, §3.3)\n\n"
      << "| planner | route length [km] | edge coverage [%] | node coverage [%] | predicted loop "
         "closures | predicted final log-det cov | planning [s] | ATE RMSE [m] | ATE mean [m] | RPE "
-        "[%] | loop closures found | map error mean / p95 [m] |\n"
+        "[%] | loop closures found | map points: median distance to the world [m] / share farther "
+        "than the clamp [%] |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : in.planners) {
     const json r = readJsonOr(in.out / "routes" / (p + ".json"));
     const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
     std::string map_err = "–";
-    if (m.contains("map_mean_dist_m"))
-      map_err = num(m, "map_mean_dist_m", 3) + " / " + num(m, "map_p95_dist_m", 3);
+    // The median and the share beyond the clamp (map_accuracy_max_m, 2 m): a mean or a p95 of
+    // clamped distances says more about the clamp than about the map.
+    if (m.contains("map_median_dist_m") && m.contains("map_far_share"))
+      map_err = num(m, "map_median_dist_m", 2) + " / " + num(m, "map_far_share", 1, 100.0) +
+                (m.contains("map_accuracy_max_m") ? " (> " + num(m, "map_accuracy_max_m", 1) + " m)" : "");
     md << "| " << p << " | " << num(r, "length_m", 2, 1e-3) << " | " << num(r, "edge_coverage_pct", 1)
        << " | " << num(r, "node_coverage_pct", 1) << " | " << num(r, "loop_closures", 0) << " | "
        << num(r, "final_logdet_cov", 2) << " | " << num(r, "planning_seconds", 3) << " | "

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -19,18 +20,6 @@ extern char** environ;
 
 namespace slamroute::cli {
 namespace {
-
-std::string lastLine(const std::filesystem::path& log) {
-  std::ifstream in(log);
-  std::string line, last;
-  while (std::getline(in, line)) {
-    // Progress lines use '\r'; keep the text after the last one.
-    const auto r = line.find_last_of('\r');
-    if (r != std::string::npos) line = line.substr(r + 1);
-    if (line.find_first_not_of(" \t") != std::string::npos) last = line;
-  }
-  return last;
-}
 
 pid_t spawnStep(const Step& s) {
   std::filesystem::create_directories(s.log.parent_path());
@@ -57,6 +46,27 @@ pid_t spawnStep(const Step& s) {
 
 }  // namespace
 
+std::string lastLogLine(const std::filesystem::path& log, std::size_t max_bytes) {
+  std::ifstream in(log, std::ios::binary | std::ios::ate);
+  if (!in) return {};
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = std::max<std::streamoff>(0, size - static_cast<std::streamoff>(max_bytes));
+  in.seekg(from);
+  std::string line, last;
+  bool first = from > 0;  // a line cut by the window is not quoted
+  while (std::getline(in, line)) {
+    if (first) {
+      first = false;
+      continue;
+    }
+    // Progress lines use '\r'; keep the text after the last one.
+    const auto r = line.find_last_of('\r');
+    if (r != std::string::npos) line = line.substr(r + 1);
+    if (line.find_first_not_of(" \t") != std::string::npos) last = line;
+  }
+  return last;
+}
+
 std::string selfExe() {
   char buf[4096];
   const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
@@ -65,8 +75,9 @@ std::string selfExe() {
   return buf;
 }
 
-std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs) {
+std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s) {
   using Clock = std::chrono::steady_clock;
+  auto last_status = Clock::now();
   std::vector<StepResult> results(steps.size());
   std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
   std::size_t next = 0;
@@ -79,8 +90,23 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs) {
     }
     if (running.empty()) break;
     int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, 0);
+    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
     if (pid < 0) throw std::runtime_error("waiting for pipeline steps failed");
+    if (pid == 0) {  // none finished: quote the running steps' progress now and then
+      const auto now = Clock::now();
+      if (status_every_s > 0.0 && std::chrono::duration<double>(now - last_status).count() >= status_every_s) {
+        last_status = now;
+        for (const auto& [p, run] : running) {
+          const std::string line = lastLogLine(steps[run.first].log);
+          char buf[64];
+          std::snprintf(buf, sizeof buf, " [%.0f s]",
+                        std::chrono::duration<double>(now - run.second).count());
+          logInfo("  running  " + steps[run.first].label + buf + (line.empty() ? "" : ": " + line));
+        }
+      }
+      ::usleep(100000);
+      continue;
+    }
     auto it = running.find(pid);
     if (it == running.end()) continue;
     const auto [idx, start] = it->second;
@@ -93,7 +119,7 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs) {
     if (r.exit_code == 0) {
       logInfo("  finished " + steps[idx].label + buf);
     } else if (failure.empty()) {
-      failure = steps[idx].label + " failed: " + lastLine(steps[idx].log) + " (log: " +
+      failure = steps[idx].label + " failed: " + lastLogLine(steps[idx].log) + " (log: " +
                 steps[idx].log.string() + ")";
     }
     if (!failure.empty()) next = steps.size();  // start nothing new; wait for the rest

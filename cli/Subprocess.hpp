@@ -25,8 +25,14 @@ struct StepResult {
 /// Path of the running slamroute binary (/proc/self/exe).
 std::string selfExe();
 
-/// Runs `steps` with at most `jobs` at once, prints one line per start/finish. Throws
-/// std::runtime_error naming the first failed step and quoting the last line of its log.
-std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs);
+/// Runs `steps` with at most `jobs` at once, prints one line per start/finish and, every
+/// `status_every_s` seconds (0 = never), one line per running step quoting the last line of its
+/// log (its progress: a SLAM run on a city takes an hour). Throws std::runtime_error naming the
+/// first failed step and quoting the last line of its log.
+std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s = 60.0);
+
+/// The last non-blank line of a log (text after the last '\r' of a progress line), reading at
+/// most its last `max_bytes`; empty when the file is missing or blank.
+std::string lastLogLine(const std::filesystem::path& log, std::size_t max_bytes = 4096);
 
 }  // namespace slamroute::cli

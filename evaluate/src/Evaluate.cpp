@@ -280,6 +280,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
     j["map_median_dist_m"] = acc.median_m;
     j["map_p95_dist_m"] = acc.p95_m;
     j["map_far_share"] = acc.clamped_share;
+    j["map_accuracy_max_m"] = cfg.map_accuracy_max_m;  // distances are clamped here
   }
 
   const StageTimes& t = slam.times;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
@@ -18,8 +19,12 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
   const auto r = test::runCli("--config " + (dir / "fast.yaml").string() + " run --net " +
                               std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
-                              (dir / "out").string());
+                              (dir / "out").string() + " --status-every 0.2");
   ASSERT_EQ(r.code, 0) << r.out;
+  // While steps run, their progress is quoted from their logs now and then (here every 0.2 s):
+  // "  running  evaluate postman [3 s]: evaluate: SLAM  40.0% ...".
+  EXPECT_NE(r.out.find("  running  "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("s]: "), std::string::npos) << r.out;
   const auto out = dir / "out";
   for (const std::string p : {"qlearning", "random", "postman"}) {
     EXPECT_TRUE(std::filesystem::exists(out / "routes" / (p + ".rou.xml"))) << p;
@@ -45,6 +50,13 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
                         "| forbidden_turns |"})
     EXPECT_NE(report.find(s), std::string::npos) << s;
   EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
+  // Map accuracy: the median distance and the share beyond the 2 m clamp, from metrics.json (a
+  // p95 of clamped distances was always the clamp).
+  const auto mq = nlohmann::json::parse(readFile(out / "eval" / "qlearning" / "metrics.json"));
+  char cell[96];
+  std::snprintf(cell, sizeof cell, "| %.2f / %.1f (> 2.0 m) |", mq["map_median_dist_m"].get<double>(),
+                100.0 * mq["map_far_share"].get<double>());
+  EXPECT_NE(report.find(cell), std::string::npos) << cell << "\n" << report;
 }
 
 TEST(RunCli, BadNetIsAOneLineErrorAndWritesNothing) {
