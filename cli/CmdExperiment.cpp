@@ -4,6 +4,7 @@
 //   Table 3: planning time vs number of nodes for qlearning, tsp and postman.
 // Tables 1-2 run the real pipeline (one survey + graph, then per seed: plan, drive with traffic
 // seeded by that seed, LiDAR SLAM); Table 3 plans on synthetic city graphs in-process.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -147,6 +148,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
 
       logInfo("[2/4] planning " + std::to_string(o->seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
       std::vector<Step> plans, random_plans, drives, evals;
+      std::vector<std::string> eval_ids;  // route ids of `evals`
       for (int s = 1; s <= o->seeds; ++s)
         for (const auto& v : kVariants) {
           const std::string id = v.name + "_s" + std::to_string(s);
@@ -166,6 +168,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
                                       "--out", (out / "drives" / id).string()},
                                      out / "logs" / ("drive-" + id + ".log"), s));
           drives.back().output = out / "drives" / id / "drive.json";  // the folder appears complete
+          eval_ids.push_back(id);
           evals.push_back(childStep(ctx, "evaluate " + id,
                                     {"evaluate", "--drive", (out / "drives" / id).string(), "--out",
                                      (out / "eval" / id).string()},
@@ -181,7 +184,17 @@ void registerExperiment(CLI::App& app, Context& ctx) {
         for (const auto& v : kVariants) makeRouteDrivable(net, out / "routes" / (v.name + "_s" + std::to_string(s) + ".json"));
       logInfo("[3/4] driving and LiDAR SLAM");
       runSteps(todo(drives), o->jobs, o->status_every);
-      runSteps(todo(evals), o->jobs, o->status_every);
+      {
+        // As many SLAM runs at once as the memory holds (slamMemoryGb per route length).
+        std::vector<double> need;
+        for (const auto& id : eval_ids)
+          need.push_back(slamMemoryGb(routeLength(out / "routes" / (id + ".json")) / 1000.0));
+        const auto left = todo(evals);
+        const int fit = slamJobsForMemory(need, 0.9 * availableMemoryGb(), o->jobs);
+        if (fit < std::min<int>(o->jobs, static_cast<int>(left.size())))
+          logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory");
+        runSteps(left, fit, o->status_every);
+      }
 
       std::map<std::string, std::map<std::string, Stat>> st;
       for (int s = 1; s <= o->seeds; ++s)

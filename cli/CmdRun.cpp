@@ -4,6 +4,7 @@
 // (libsumo: one simulation per process), two at a time on this 2-core target.
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -49,7 +50,7 @@ void registerRun(CLI::App& app, Context& ctx) {
   sub->add_option("--slam-jobs", o->slam_jobs,
                   "SLAM runs at once (0 = one per planner, sharing the cores: the stage ends when "
                   "the total work is done, not when the longest route's queue is; ~1.8 GB each on the "
-                  "default city, up to 8 GB for a 75 km drive)")
+                  "default city, 8.2 GB for a 75 km drive; fewer run at once when the memory is short)")
       ->capture_default_str()->check(CLI::Range(0, 64));
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->add_option("--status-every", o->status_every,
@@ -130,7 +131,22 @@ void registerRun(CLI::App& app, Context& ctx) {
       s5.push_back(childStep(ctx, "evaluate " + p,
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));
-    const int slam_jobs = o->slam_jobs > 0 ? o->slam_jobs : std::max(o->jobs, static_cast<int>(s5.size()));
+    // One SLAM run per planner by default, as many as the memory holds (a 75 km drive's SLAM
+    // peaks at 8.2 GB): the longest routes may run together only if their estimates fit.
+    std::vector<double> need;
+    for (const auto& [neg_len, p] : by_length) need.push_back(slamMemoryGb(-neg_len / 1000.0));
+    const double avail = availableMemoryGb();
+    const int fit = slamJobsForMemory(need, 0.9 * avail, static_cast<int>(need.size()));
+    int slam_jobs = std::max(o->jobs, static_cast<int>(s5.size()));
+    char mem[160];
+    std::snprintf(mem, sizeof mem, "largest SLAM estimated at %.1f GB, %.1f GB available", need.front(), avail);
+    if (o->slam_jobs > 0) {
+      slam_jobs = o->slam_jobs;
+      if (slam_jobs > fit) logWarn("--slam-jobs " + std::to_string(slam_jobs) + " may exceed the memory (" + mem + ")");
+    } else if (fit < std::min(slam_jobs, static_cast<int>(s5.size()))) {
+      slam_jobs = fit;
+      logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory (" + mem + ")");
+    }
     record(s5, runSteps(s5, slam_jobs, o->status_every));
 
     logInfo("[6/6] report");

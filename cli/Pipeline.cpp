@@ -1,5 +1,8 @@
 #include "Pipeline.hpp"
 
+#include <algorithm>
+#include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "slamroute/core/Log.hpp"
@@ -34,6 +37,29 @@ std::vector<Step> stepsNotDone(std::vector<Step> steps) {
 }
 
 double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }
+
+double slamMemoryGb(double route_km) { return 0.3 + 0.11 * std::max(0.0, route_km); }
+
+double availableMemoryGb() {
+  std::ifstream in("/proc/meminfo");
+  std::string key, unit;
+  double kb = 0.0;
+  while (in >> key >> kb) {
+    std::getline(in, unit);
+    if (key == "MemAvailable:") return kb * 1024.0 / 1e9;  // the kernel's kB are KiB
+  }
+  return 0.0;
+}
+
+int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_jobs) {
+  const int cap = std::max(1, std::min(max_jobs, static_cast<int>(need_gb.size())));
+  if (!(budget_gb > 0.0)) return cap;
+  std::sort(need_gb.begin(), need_gb.end(), std::greater<>());
+  double sum = 0.0;
+  int k = 0;
+  while (k < cap && sum + need_gb[static_cast<std::size_t>(k)] <= budget_gb) sum += need_gb[static_cast<std::size_t>(k++)];
+  return std::max(1, k);
+}
 
 void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {
   Route r = Route::readJson(route_json);

@@ -26,6 +26,21 @@ std::vector<Step> stepsNotDone(std::vector<Step> steps);
 /// Length of a planned route [m] (route.json's length_m).
 double routeLength(const std::filesystem::path& route_json);
 
+/// Peak memory of one SLAM run (`evaluate`) of a drive of `route_km` [GB]. Keyframes every metre
+/// keep their 0.2 m voxel clouds for the map and the loop closures, so it grows with the length:
+/// measured peaks 1.73 GB for 19 km (default city) and 8.24 GB for 74.5 km (Ingolstadt); the
+/// estimate 0.3 GB + 0.11 GB/km lies above both.
+double slamMemoryGb(double route_km);
+
+/// Memory new processes can have now [GB = 10^9 bytes] (MemAvailable in /proc/meminfo); 0 when
+/// unknown.
+double availableMemoryGb();
+
+/// SLAM runs to start at once: at most `max_jobs`, and no more than the largest k whose k biggest
+/// needs (`need_gb`, one per run) fit in `budget_gb`; at least 1. A budget <= 0 (unknown) limits
+/// nothing.
+int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_jobs);
+
 /// Routes planned on a trace-built graph know its turns only loosely: joins consecutive SUMO
 /// edges with the shortest legal detour where SUMO forbids the turn (noted in the route), and
 /// writes ROUTE.rou.xml beside it. Throws when the route has no SUMO edges.

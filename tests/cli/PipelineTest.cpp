@@ -29,5 +29,31 @@ TEST(Pipeline, ResumeSkipsOnlyStepsWhoseOutputExists) {
   fs::remove_all(dir);
 }
 
+TEST(Pipeline, SlamMemoryEstimateLiesAboveTheMeasuredPeaks) {
+  EXPECT_GT(slamMemoryGb(19.3), 1.73);  // default city, postman: peak 1.73 GB
+  EXPECT_GT(slamMemoryGb(74.5), 8.24);  // Ingolstadt, postman: peak 8,043,916 kB
+  EXPECT_LT(slamMemoryGb(74.5), 10.0);  // not so far above that it wastes the machine
+  EXPECT_NEAR(slamMemoryGb(0.0), 0.3, 1e-12);
+}
+
+TEST(Pipeline, SlamJobsStartOnlyAsManyRunsAsTheMemoryHolds) {
+  // Three runs of 8, 5 and 4 GB: all fit in 20 GB; in 16 GB only the two largest (13 GB) do; in
+  // 12 GB one at a time; never fewer than one, even when the largest alone does not fit.
+  EXPECT_EQ(slamJobsForMemory({5.0, 8.0, 4.0}, 20.0, 3), 3);
+  EXPECT_EQ(slamJobsForMemory({5.0, 8.0, 4.0}, 16.0, 3), 2);
+  EXPECT_EQ(slamJobsForMemory({5.0, 8.0, 4.0}, 12.0, 3), 1);
+  EXPECT_EQ(slamJobsForMemory({5.0, 8.0, 4.0}, 6.0, 3), 1);
+  // max_jobs and the number of runs bound it; an unknown budget (0) limits nothing else.
+  EXPECT_EQ(slamJobsForMemory({1.0, 1.0, 1.0}, 100.0, 2), 2);
+  EXPECT_EQ(slamJobsForMemory({1.0}, 100.0, 4), 1);
+  EXPECT_EQ(slamJobsForMemory({5.0, 8.0, 4.0}, 0.0, 3), 3);
+}
+
+TEST(Pipeline, AvailableMemoryIsReadFromTheSystem) {
+  const double gb = availableMemoryGb();
+  EXPECT_GT(gb, 0.1);     // this machine has memory available
+  EXPECT_LT(gb, 4096.0);  // in GB, not kB
+}
+
 }  // namespace
 }  // namespace slamroute::cli
