@@ -49,8 +49,8 @@ void registerRun(CLI::App& app, Context& ctx) {
       ->capture_default_str()->check(CLI::Range(1, 64));
   sub->add_option("--slam-jobs", o->slam_jobs,
                   "SLAM runs at once (0 = one per planner, sharing the cores: the stage ends when "
-                  "the total work is done, not when the longest route's queue is; ~1.8 GB each on the "
-                  "default city, 8.2 GB for a 75 km drive; fewer run at once when the memory is short)")
+                  "the total work is done, not when the longest route's queue is; a run peaks at ~1.2 GB for "
+                  "a 15 km drive, 5.6 GB for 75 km; fewer run at once when the memory is short)")
       ->capture_default_str()->check(CLI::Range(0, 64));
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->add_option("--status-every", o->status_every,
@@ -132,7 +132,7 @@ void registerRun(CLI::App& app, Context& ctx) {
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));
     // One SLAM run per planner by default, as many as the memory holds (a 75 km drive's SLAM
-    // peaks at 8.2 GB): the longest routes may run together only if their estimates fit.
+    // peaks at 5.6 GB): the longest routes may run together only if their estimates fit.
     std::vector<double> need;
     for (const auto& [neg_len, p] : by_length) need.push_back(slamMemoryGb(-neg_len / 1000.0));
     const double avail = availableMemoryGb();

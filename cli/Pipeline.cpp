@@ -38,7 +38,7 @@ std::vector<Step> stepsNotDone(std::vector<Step> steps) {
 
 double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }
 
-double slamMemoryGb(double route_km) { return 0.3 + 0.11 * std::max(0.0, route_km); }
+double slamMemoryGb(double route_km) { return 0.3 + 0.075 * std::max(0.0, route_km); }
 
 double availableMemoryGb() {
   std::ifstream in("/proc/meminfo");

@@ -28,8 +28,9 @@ double routeLength(const std::filesystem::path& route_json);
 
 /// Peak memory of one SLAM run (`evaluate`) of a drive of `route_km` [GB]. Keyframes every metre
 /// keep their 0.2 m voxel clouds for the map and the loop closures, so it grows with the length:
-/// measured peaks 1.73 GB for 19 km (default city) and 8.24 GB for 74.5 km (Ingolstadt); the
-/// estimate 0.3 GB + 0.11 GB/km lies above both.
+/// measured peaks 1.16 GB for 14.9 km (default city, qlearning) and 5.55 GB for 74.5 km
+/// (Ingolstadt, postman), bench/RESULTS.md "Memory of a SLAM run"; the estimate 0.3 GB +
+/// 0.075 GB/km lies above both.
 double slamMemoryGb(double route_km);
 
 /// Memory new processes can have now [GB = 10^9 bytes] (MemAvailable in /proc/meminfo); 0 when

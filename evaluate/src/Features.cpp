@@ -124,20 +124,30 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg) {
   return out;
 }
 
-Cloud voxelFilter(const Cloud& in, double voxel_m) {
-  if (voxel_m <= 0.0 || in.empty()) return in;
-  const float inv = static_cast<float>(1.0 / voxel_m);
+namespace {
+
+/// The voxel of a point: 21 bits per axis (+-2^20 voxels around the origin).
+std::uint64_t voxelKey(const Eigen::Vector3f& p, float inv) {
+  const auto q = [&](float v) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv)) + (1 << 20)) & 0x1FFFFF;
+  };
+  return (q(p.x()) << 42) | (q(p.y()) << 21) | q(p.z());
+}
+
+/// (voxel, index) of every point, sorted: each voxel's points in input order.
+std::vector<std::pair<std::uint64_t, std::uint32_t>> sortedKeys(const Cloud& in, float inv) {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
   keys.reserve(in.size());
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    const auto q = [&](float v) {
-      return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv)) + (1 << 20)) &
-             0x1FFFFF;
-    };
-    const std::uint64_t key = (q(in[i].x()) << 42) | (q(in[i].y()) << 21) | q(in[i].z());
-    keys.emplace_back(key, static_cast<std::uint32_t>(i));
-  }
+  for (std::size_t i = 0; i < in.size(); ++i) keys.emplace_back(voxelKey(in[i], inv), static_cast<std::uint32_t>(i));
   std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+}  // namespace
+
+Cloud voxelFilter(const Cloud& in, double voxel_m) {
+  if (voxel_m <= 0.0 || in.empty()) return in;
+  const auto keys = sortedKeys(in, static_cast<float>(1.0 / voxel_m));
   Cloud out;
   for (std::size_t a = 0; a < keys.size();) {
     std::size_t b = a;
@@ -146,6 +156,49 @@ Cloud voxelFilter(const Cloud& in, double voxel_m) {
     out.push_back(sum / static_cast<float>(b - a));
     a = b;
   }
+  return out;
+}
+
+VoxelMerger::VoxelMerger(double voxel_m, std::size_t chunk_points)
+    : voxel_m_(voxel_m), chunk_(std::max<std::size_t>(chunk_points, 1)) {}
+
+void VoxelMerger::add(const Cloud& c) {
+  buf_.insert(buf_.end(), c.begin(), c.end());
+  if (voxel_m_ > 0.0 && buf_.size() >= chunk_) flush();
+}
+
+// Merges the buffer into the sorted cells: a voxel's sum goes on from where the earlier chunks
+// left it, adding this chunk's points in input order, so every sum is formed exactly as
+// voxelFilter forms it over the whole concatenation.
+void VoxelMerger::flush() {
+  if (buf_.empty()) return;
+  const auto keys = sortedKeys(buf_, static_cast<float>(1.0 / voxel_m_));
+  std::vector<Cell> merged;
+  merged.reserve(cells_.size() + keys.size() / 2);
+  std::size_t c = 0;
+  for (std::size_t a = 0; a < keys.size();) {
+    const std::uint64_t key = keys[a].first;
+    while (c < cells_.size() && cells_[c].key < key) merged.push_back(cells_[c++]);
+    Cell cell{key, Eigen::Vector3f::Zero(), 0};
+    if (c < cells_.size() && cells_[c].key == key) cell = cells_[c++];
+    for (; a < keys.size() && keys[a].first == key; ++a) {
+      cell.sum += buf_[keys[a].second];
+      ++cell.n;
+    }
+    merged.push_back(cell);
+  }
+  merged.insert(merged.end(), cells_.begin() + static_cast<std::ptrdiff_t>(c), cells_.end());
+  cells_.swap(merged);
+  Cloud().swap(buf_);
+}
+
+Cloud VoxelMerger::finish() {
+  if (voxel_m_ <= 0.0) return std::move(buf_);
+  flush();
+  Cloud out;
+  out.reserve(cells_.size());
+  for (const Cell& cell : cells_) out.push_back(cell.sum / static_cast<float>(cell.n));
+  std::vector<Cell>().swap(cells_);
   return out;
 }
 

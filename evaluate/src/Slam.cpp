@@ -548,12 +548,14 @@ struct LidarSlam::Impl {
       out.status.push_back(r.status);
       out.min_eig.push_back(r.min_eig);
     }
-    Cloud all;
-    for (const auto& kf : kfs) {
-      const Cloud c = transformed(kf.cloud, kf.T_world);
-      all.insert(all.end(), c.begin(), c.end());
+    // The map: every keyframe's cloud at its optimised pose, voxel-filtered as the clouds come
+    // (each keyframe's cloud is freed once merged; the run is over).
+    VoxelMerger map(cfg.map_voxel_m);
+    for (auto& kf : kfs) {
+      map.add(transformed(kf.cloud, kf.T_world));
+      Cloud().swap(kf.cloud);
     }
-    out.map = voxelFilter(all, cfg.map_voxel_m);
+    out.map = map.finish();
     out.loops = loops;
     out.loop_candidates = loop_candidates;
     out.loops_rejected = loops_rejected;

@@ -73,6 +73,8 @@ class LidarSlam {
   /// cfg.dense_after_failure_s of a failed or relocalised scan: the caller should then feed every
   /// scan instead of every cfg.scan_stride-th.
   bool wantsEveryScan() const;
+  /// Ends the run and returns its results (trajectory, map, loops); call once: the keyframes'
+  /// clouds are released as they are merged into the map.
   SlamResult finish();
 
  private:
