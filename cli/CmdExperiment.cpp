@@ -186,13 +186,13 @@ void registerExperiment(CLI::App& app, Context& ctx) {
       runSteps(todo(drives), o->jobs, o->status_every);
       {
         // As many SLAM runs at once as the memory holds (slamMemoryGb per route length).
-        std::vector<double> need;
-        for (const auto& id : eval_ids)
-          need.push_back(slamMemoryGb(routeLength(out / "routes" / (id + ".json")) / 1000.0));
+        std::vector<double> lengths;
+        for (const auto& id : eval_ids) lengths.push_back(routeLength(out / "routes" / (id + ".json")));
         const auto left = todo(evals);
-        const int fit = slamJobsForMemory(need, 0.9 * availableMemoryGb(), o->jobs);
+        std::string mem;
+        const int fit = slamJobsThatFit(lengths, o->jobs, &mem);
         if (fit < std::min<int>(o->jobs, static_cast<int>(left.size())))
-          logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory");
+          logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory (" + mem + ")");
         runSteps(left, fit, o->status_every);
       }
 

@@ -4,7 +4,6 @@
 // (libsumo: one simulation per process), two at a time on this 2-core target.
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -133,21 +132,15 @@ void registerRun(CLI::App& app, Context& ctx) {
                         out / "logs" / ("evaluate-" + p + ".log")));
     // One SLAM run per planner by default, as many as the memory holds (a 75 km drive's SLAM
     // peaks at 5.6 GB): the longest routes may run together only if their estimates fit.
-    std::vector<double> need;
-    for (const auto& [neg_len, p] : by_length) need.push_back(slamMemoryGb(-neg_len / 1000.0));
-    const double avail = availableMemoryGb();
-    const int fit = slamJobsForMemory(need, 0.9 * avail, static_cast<int>(need.size()));
-    int slam_jobs = std::max(o->jobs, static_cast<int>(s5.size()));
-    char mem[160];
-    std::snprintf(mem, sizeof mem, "largest SLAM estimated at %.1f GB, %.1f GB available", need.front(), avail);
-    if (o->slam_jobs > 0) {
-      slam_jobs = o->slam_jobs;
-      if (slam_jobs > fit) logWarn("--slam-jobs " + std::to_string(slam_jobs) + " may exceed the memory (" + mem + ")");
-    } else if (fit < std::min(slam_jobs, static_cast<int>(s5.size()))) {
-      slam_jobs = fit;
+    std::vector<double> lengths;
+    for (const auto& [neg_len, p] : by_length) lengths.push_back(-neg_len);
+    std::string mem;
+    const int fit = slamJobsThatFit(lengths, static_cast<int>(s5.size()), &mem);
+    if (o->slam_jobs > fit)
+      logWarn("--slam-jobs " + std::to_string(o->slam_jobs) + " may exceed the memory (" + mem + ")");
+    else if (o->slam_jobs == 0 && fit < static_cast<int>(s5.size()))
       logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory (" + mem + ")");
-    }
-    record(s5, runSteps(s5, slam_jobs, o->status_every));
+    record(s5, runSteps(s5, o->slam_jobs > 0 ? o->slam_jobs : fit, o->status_every));
 
     logInfo("[6/6] report");
     ReportInputs in;

@@ -1,6 +1,7 @@
 #include "Pipeline.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -59,6 +60,19 @@ int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_job
   int k = 0;
   while (k < cap && sum + need_gb[static_cast<std::size_t>(k)] <= budget_gb) sum += need_gb[static_cast<std::size_t>(k++)];
   return std::max(1, k);
+}
+
+int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, std::string* why) {
+  std::vector<double> need;
+  for (double m : route_m) need.push_back(slamMemoryGb(m / 1000.0));
+  const double avail = availableMemoryGb();
+  if (why && !need.empty()) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "largest SLAM estimated at %.1f GB, %.1f GB available",
+                  *std::max_element(need.begin(), need.end()), avail);
+    *why = buf;
+  }
+  return slamJobsForMemory(std::move(need), 0.9 * avail, max_jobs);
 }
 
 void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {

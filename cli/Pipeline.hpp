@@ -42,6 +42,11 @@ double availableMemoryGb();
 /// nothing.
 int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_jobs);
 
+/// SLAM runs of drives of `route_m` [m] to start at once (at most `max_jobs`): slamJobsForMemory
+/// with each run's slamMemoryGb against 90 % of availableMemoryGb(). `why` (optional) receives
+/// "largest SLAM estimated at X GB, Y GB available".
+int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, std::string* why = nullptr);
+
 /// Routes planned on a trace-built graph know its turns only loosely: joins consecutive SUMO
 /// edges with the shortest legal detour where SUMO forbids the turn (noted in the route), and
 /// writes ROUTE.rou.xml beside it. Throws when the route has no SUMO edges.
