@@ -111,7 +111,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
   sub->add_flag("--table3-only", o->table3_only, "only the planning-time table (no SUMO, no SLAM)");
   sub->add_option("--status-every", o->status_every,
                   "seconds between progress lines of the running steps (0 = only start/finish)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
   sub->add_flag("--resume", o->resume,
                 "keep the survey, graph, routes, drives and evaluations already in --out (an "
                 "interrupted run, or new evaluations of the same drives after deleting eval/); "

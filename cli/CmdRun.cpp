@@ -54,7 +54,7 @@ void registerRun(CLI::App& app, Context& ctx) {
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->add_option("--status-every", o->status_every,
                   "seconds between progress lines of the running steps (0 = only start/finish)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
   sub->callback([&ctx, o] {
     ctx.load();
     using Clock = std::chrono::steady_clock;
