@@ -16,6 +16,7 @@
 
 #include "Commands.hpp"
 #include "Pipeline.hpp"
+#include "Resume.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -113,16 +114,16 @@ void registerExperiment(CLI::App& app, Context& ctx) {
                   "seconds between progress lines of the running steps (0 = only start/finish)")
       ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
   sub->add_flag("--resume", o->resume,
-                "keep the survey, graph, routes, drives and evaluations already in --out (an "
-                "interrupted run, or new evaluations of the same drives after deleting eval/); "
-                "they must come from the same settings");
+                "keep the survey, graph, routes, drives and evaluations already in --out that "
+                "were made from the same seed, config, net and inputs (an interrupted run, or new "
+                "evaluations of the same drives after deleting eval/); the rest runs again");
   sub->callback([&ctx, o] {
     ctx.load();
     const auto t0 = std::chrono::steady_clock::now();
-    const fs::path out = fs::absolute(o->out);
+    const fs::path out = fs::weakly_canonical(fs::absolute(o->out));
     fs::create_directories(out / "logs");
-    // With --resume, steps whose output exists are kept instead of run again.
-    auto todo = [&o](std::vector<Step> steps) { return o->resume ? stepsNotDone(std::move(steps)) : steps; };
+    // Every step is stamped; with --resume, steps done before from the same inputs are kept.
+    auto todo = [&o](std::vector<Step> steps) { return stepsToRun(std::move(steps), o->resume); };
     std::ostringstream md;
     md << "# The paper's tables, reproduced\n\nCommand: `slamroute --seed " << ctx.cfg.seed
        << " experiment paper --out " << o->out
@@ -130,7 +131,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
        << (o->resume ? " --resume" : "") << "`\n\n";
 
     if (!o->table3_only) {
-      const std::string net_path = fs::absolute(o->net.empty() ? defaultNetPath() : o->net).string();
+      const std::string net_path = fs::weakly_canonical(fs::absolute(o->net.empty() ? defaultNetPath() : o->net)).string();
       const SumoNet net = SumoNet::read(net_path);
       md << "Net: `" << net_path << "`\n\n";
       logInfo("[1/4] survey and road graph");

@@ -1,15 +1,18 @@
 // `slamroute run`: the whole pipeline on a net (default: the shipped city) and report.md.
 // survey -> build-graph (validated against the net) -> plan with each planner -> make each route
 // legal for SUMO -> drive each -> evaluate each -> report. SUMO steps run as child processes
-// (libsumo: one simulation per process), two at a time on this 2-core target.
+// (libsumo: one simulation per process), two at a time on this 2-core target. Each step is
+// stamped with what it was run from; --resume keeps the steps done before (Resume.hpp).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
 #include "Commands.hpp"
 #include "Pipeline.hpp"
 #include "Report.hpp"
+#include "Resume.hpp"
 #include "Subprocess.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/Route.hpp"
@@ -36,7 +39,7 @@ void registerRun(CLI::App& app, Context& ctx) {
     std::string net, out, planners = "qlearning,random,postman";
     int jobs = 2;
     int slam_jobs = 0;
-    bool save_scans = false;
+    bool save_scans = false, resume = false;
     double status_every = 60.0;
   };
   auto o = std::make_shared<Opts>();
@@ -55,6 +58,9 @@ void registerRun(CLI::App& app, Context& ctx) {
   sub->add_option("--status-every", o->status_every,
                   "seconds between progress lines of the running steps (0 = only start/finish)")
       ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
+  sub->add_flag("--resume", o->resume,
+                "keep the steps already done in --out from the same seed, config, net and inputs "
+                "(an interrupted run; or delete eval/ to redo only the SLAM); the rest runs again");
   sub->callback([&ctx, o] {
     ctx.load();
     using Clock = std::chrono::steady_clock;
@@ -63,20 +69,29 @@ void registerRun(CLI::App& app, Context& ctx) {
     const SumoNet net = SumoNet::read(net_path);  // fail early, one line, on a bad net
     std::string stem = fs::path(net_path).filename().string();
     stem = stem.substr(0, stem.find('.'));
-    const fs::path out = fs::absolute(o->out.empty() ? fs::path("out") / stem : fs::path(o->out));
+    const fs::path out = fs::weakly_canonical(fs::absolute(o->out.empty() ? fs::path("out") / stem : fs::path(o->out)));
     const auto planners = splitList(o->planners);
     if (planners.empty()) throw std::invalid_argument("run: --planners is empty");
     fs::create_directories(out / "logs");
-    const std::string net_abs = fs::absolute(net_path).string();
-    std::vector<std::pair<std::string, double>> times;
-    auto record = [&](const std::vector<Step>& steps, const std::vector<StepResult>& res) {
-      for (std::size_t i = 0; i < steps.size(); ++i) times.emplace_back(steps[i].label, res[i].seconds);
+    const std::string net_abs = fs::weakly_canonical(fs::absolute(net_path)).string();  // one spelling per file, for --resume
+    std::vector<std::pair<std::string, double>> times;  // NaN: kept from an earlier run
+    // Runs a stage: every step is stamped; with --resume, those done before are kept.
+    auto stage = [&](const std::vector<Step>& steps, int jobs) {
+      const std::vector<Step> todo = stepsToRun(steps, o->resume);
+      const std::vector<StepResult> res = runSteps(todo, jobs, o->status_every);
+      for (const auto& st : steps) {
+        double sec = std::nan("");
+        for (std::size_t i = 0; i < todo.size(); ++i)
+          if (todo[i].label == st.label) sec = res[i].seconds;
+        times.emplace_back(st.label, sec);
+      }
     };
 
     logInfo("[1/6] survey of " + net_abs);
     std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_abs, "--out", (out / "survey").string()},
                               out / "logs" / "survey.log")};
-    record(s1, runSteps(s1, 1, o->status_every));
+    s1[0].output = out / "survey" / "survey.json";  // the folder appears complete
+    stage(s1, 1);
 
     logInfo("[2/6] road graph from the survey");
     const fs::path graph = out / "graph" / "graph.json";
@@ -84,7 +99,8 @@ void registerRun(CLI::App& app, Context& ctx) {
                               {"build-graph", "--survey", (out / "survey").string(), "--net", net_abs,
                                "--out", graph.string()},
                               out / "logs" / "build-graph.log")};
-    record(s2, runSteps(s2, 1, o->status_every));
+    s2[0].output = fs::path(graph).replace_extension(".png");  // the last of graph.json's siblings
+    stage(s2, 1);
 
     logInfo("[3/6] planning: " + o->planners);
     // The random route gets the Q-learning route's length as its budget (paper Table 1 compares
@@ -93,18 +109,19 @@ void registerRun(CLI::App& app, Context& ctx) {
       std::vector<std::string> a{"plan", "--graph", graph.string(), "--planner", p, "--out",
                                  (out / "routes" / (p + ".json")).string()};
       a.insert(a.end(), extra.begin(), extra.end());
-      return childStep(ctx, "plan " + p, a, out / "logs" / ("plan-" + p + ".log"));
+      Step st = childStep(ctx, "plan " + p, a, out / "logs" / ("plan-" + p + ".log"));
+      st.output = out / "routes" / (p + ".json");
+      return st;
     };
     const bool budgeted_random =
         std::count(planners.begin(), planners.end(), "random") && std::count(planners.begin(), planners.end(), "qlearning");
     std::vector<Step> s3;
     for (const auto& p : planners)
       if (!(budgeted_random && p == "random")) s3.push_back(planStep(p, {}));
-    record(s3, runSteps(s3, o->jobs, o->status_every));
+    stage(s3, o->jobs);
     if (budgeted_random) {
       const double budget = routeLength(out / "routes" / "qlearning.json");
-      std::vector<Step> s3b{planStep("random", {"--max-length", std::to_string(budget)})};
-      record(s3b, runSteps(s3b, 1, o->status_every));
+      stage({planStep("random", {"--max-length", std::to_string(budget)})}, 1);
     }
     for (const auto& p : planners) makeRouteDrivable(net, out / "routes" / (p + ".json"));
 
@@ -115,8 +132,9 @@ void registerRun(CLI::App& app, Context& ctx) {
                                  "--out", (out / "drives" / p).string()};
       if (o->save_scans) a.push_back("--save-scans");
       s4.push_back(childStep(ctx, "drive " + p, a, out / "logs" / ("drive-" + p + ".log")));
+      s4.back().output = out / "drives" / p / "drive.json";  // the folder appears complete
     }
-    record(s4, runSteps(s4, o->jobs, o->status_every));
+    stage(s4, o->jobs);
 
     logInfo("[5/6] LiDAR SLAM on each drive");
     // Longest route first: with two evaluations at a time the last one to start is then the
@@ -126,10 +144,12 @@ void registerRun(CLI::App& app, Context& ctx) {
       by_length.emplace_back(-Route::readJson(out / "routes" / (p + ".json")).length_m, p);
     std::stable_sort(by_length.begin(), by_length.end());
     std::vector<Step> s5;
-    for (const auto& [neg_len, p] : by_length)
+    for (const auto& [neg_len, p] : by_length) {
       s5.push_back(childStep(ctx, "evaluate " + p,
                         {"evaluate", "--drive", (out / "drives" / p).string(), "--out", (out / "eval" / p).string()},
                         out / "logs" / ("evaluate-" + p + ".log")));
+      s5.back().output = out / "eval" / p / "metrics.json";  // written last
+    }
     // One SLAM run per planner by default, as many as the memory holds (a 75 km drive's SLAM
     // peaks at 5.6 GB): the longest routes may run together only if their estimates fit.
     std::vector<double> lengths;
@@ -140,7 +160,7 @@ void registerRun(CLI::App& app, Context& ctx) {
       logWarn("--slam-jobs " + std::to_string(o->slam_jobs) + " may exceed the memory (" + mem + ")");
     else if (o->slam_jobs == 0 && fit < static_cast<int>(s5.size()))
       logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory (" + mem + ")");
-    record(s5, runSteps(s5, o->slam_jobs > 0 ? o->slam_jobs : fit, o->status_every));
+    stage(s5, o->slam_jobs > 0 ? o->slam_jobs : fit);
 
     logInfo("[6/6] report");
     ReportInputs in;
@@ -150,7 +170,7 @@ void registerRun(CLI::App& app, Context& ctx) {
     in.graph_json = graph;
     in.planners = planners;
     in.command = "slamroute run --net " + net_abs + " --out " + out.string() + " --planners " + o->planners +
-                 " --seed " + std::to_string(ctx.cfg.seed);
+                 " --seed " + std::to_string(ctx.cfg.seed) + (o->resume ? " --resume" : "");
     in.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     in.step_seconds = times;
     writeReport(in);

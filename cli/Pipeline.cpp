@@ -20,21 +20,10 @@ Step childStep(const Context& ctx, const std::string& label, std::vector<std::st
                                 "--log-level", ctx.log_level == "debug" ? "debug" : "info"};
   if (!ctx.config_file.empty()) {
     full.push_back("--config");
-    full.push_back(fs::absolute(ctx.config_file).string());
+    full.push_back(fs::weakly_canonical(fs::absolute(ctx.config_file)).string());
   }
   full.insert(full.end(), args.begin(), args.end());
   return {label, full, log};
-}
-
-std::vector<Step> stepsNotDone(std::vector<Step> steps) {
-  std::vector<Step> left;
-  for (auto& st : steps) {
-    if (!st.output.empty() && fs::exists(st.output))
-      logInfo("  kept     " + st.label + " (" + st.output.string() + ")");
-    else
-      left.push_back(std::move(st));
-  }
-  return left;
 }
 
 double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }

@@ -19,10 +19,6 @@ namespace slamroute::cli {
 Step childStep(const Context& ctx, const std::string& label, std::vector<std::string> args,
                const std::filesystem::path& log, long long seed = -1);
 
-/// The steps still to run when resuming: those without an output, or whose output does not exist
-/// yet; each step kept from an earlier run is logged.
-std::vector<Step> stepsNotDone(std::vector<Step> steps);
-
 /// Length of a planned route [m] (route.json's length_m).
 double routeLength(const std::filesystem::path& route_json);
 

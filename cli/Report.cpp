@@ -285,7 +285,8 @@ void writeReport(const ReportInputs& in) {
   if (world) md << driftByStreetKind(*world, drift);
 
   md << "## Step times\n\n| step | seconds |\n|---|---|\n";
-  for (const auto& [name, s] : in.step_seconds) md << "| " << name << " | " << fmt(s, 1) << " |\n";
+  for (const auto& [name, s] : in.step_seconds)
+    md << "| " << name << " | " << (std::isnan(s) ? std::string("kept from an earlier run") : fmt(s, 1)) << " |\n";
   writeFileAtomic(in.out / "report.md", md.str());
 }
 

@@ -15,7 +15,7 @@ struct ReportInputs {
   /// routes/<p>.json, drives/<p>/, eval/<p>/ under `out`.
   std::string command;                    ///< the command line that made the run
   double total_seconds = 0.0;
-  std::vector<std::pair<std::string, double>> step_seconds;
+  std::vector<std::pair<std::string, double>> step_seconds;  ///< NaN: kept from an earlier run (--resume)
 };
 
 /// Spearman rank correlation of two equally long samples (ties get mean ranks). NaN when n < 3

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 
 extern char** environ;
@@ -67,6 +68,11 @@ std::string lastLogLine(const std::filesystem::path& log, std::size_t max_bytes)
   return last;
 }
 
+std::filesystem::path stampPath(const Step& s) {
+  std::filesystem::path p = s.log;
+  return p.replace_extension(".done");
+}
+
 std::string selfExe() {
   char buf[4096];
   const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
@@ -85,6 +91,8 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
   while (next < steps.size() || !running.empty()) {
     while (failure.empty() && next < steps.size() && static_cast<int>(running.size()) < std::max(1, jobs)) {
       logInfo("  started  " + steps[next].label);
+      std::error_code ec;
+      std::filesystem::remove(stampPath(steps[next]), ec);  // stale until the step succeeds again
       running[spawnStep(steps[next])] = {next, Clock::now()};
       ++next;
     }
@@ -117,6 +125,7 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
     char buf[64];
     std::snprintf(buf, sizeof buf, " (%.1f s)", r.seconds);
     if (r.exit_code == 0) {
+      if (!steps[idx].stamp.empty()) writeFileAtomic(stampPath(steps[idx]), steps[idx].stamp);
       logInfo("  finished " + steps[idx].label + buf);
     } else if (failure.empty()) {
       failure = steps[idx].label + " failed: " + lastLogLine(steps[idx].log) + " (log: " +

@@ -12,10 +12,16 @@ struct Step {
   std::string label;               ///< shown in progress lines
   std::vector<std::string> args;   ///< arguments after the program name
   std::filesystem::path log;       ///< child's stdout+stderr go here
-  /// The file the step writes last (atomically); `experiment --resume` skips a step whose output
-  /// exists. Empty: always run.
+  /// The file the step writes last (atomically); `--resume` may keep a step whose output exists.
+  /// Empty: always run.
   std::filesystem::path output{};
+  /// What the step is run from (Resume.hpp's stepStamp); runSteps writes it to stampPath() when
+  /// the step succeeds and removes an older one when it starts. Empty: no stamp.
+  std::string stamp{};
 };
+
+/// Where a step's stamp lives: beside its log, LOG with the extension .done.
+std::filesystem::path stampPath(const Step& s);
 
 struct StepResult {
   int exit_code = -1;
@@ -27,7 +33,8 @@ std::string selfExe();
 
 /// Runs `steps` with at most `jobs` at once, prints one line per start/finish and, every
 /// `status_every_s` seconds (0 = never), one line per running step quoting the last line of its
-/// log (its progress: a SLAM run on a city takes an hour). Throws std::runtime_error naming the
+/// log (its progress: a SLAM run on a city takes an hour). A step that succeeds gets its stamp
+/// written (Step::stamp). Throws std::runtime_error naming the
 /// first failed step and quoting the last line of its log.
 std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s = 60.0);
 

@@ -17,9 +17,10 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   const auto dir = test::cliTempDir("run_plus");
   // A gyro twice as noisy as the default: evaluate must take its figures from odometry.yaml.
   std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
-  const auto r = test::runCli("--config " + (dir / "fast.yaml").string() + " run --net " +
-                              std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
-                              (dir / "out").string() + " --status-every 0.2");
+  const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
+                          std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
+                          (dir / "out").string() + " --status-every 0.2";
+  const auto r = test::runCli(cmd);
   ASSERT_EQ(r.code, 0) << r.out;
   // While steps run, their progress is quoted from their logs now and then (here every 0.2 s):
   // "  running  evaluate postman [3 s]: evaluate: SLAM  40.0% ...".
@@ -57,6 +58,32 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   std::snprintf(cell, sizeof cell, "| %.2f / %.1f (> 2.0 m) |", mq["map_median_dist_m"].get<double>(),
                 100.0 * mq["map_far_share"].get<double>());
   EXPECT_NE(report.find(cell), std::string::npos) << cell << "\n" << report;
+
+  // --resume: every step left its stamp, so a second run keeps all eleven (survey, graph, three
+  // plans, drives and SLAM runs) and only writes the report again.
+  for (const std::string step : {"survey", "build-graph", "plan-random", "drive-postman", "evaluate-qlearning"})
+    EXPECT_TRUE(std::filesystem::exists(out / "logs" / (step + ".done"))) << step;
+  const std::string metrics_q = readFile(out / "eval" / "qlearning" / "metrics.json");
+  const auto again = test::runCli(cmd + " --resume");
+  ASSERT_EQ(again.code, 0) << again.out;
+  auto count = [](const std::string& text, const std::string& what) {
+    int n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count(again.out, "  kept     "), 11) << again.out;
+  EXPECT_EQ(count(again.out, "  started  "), 0) << again.out;
+  EXPECT_EQ(readFile(out / "eval" / "qlearning" / "metrics.json"), metrics_q);
+  const std::string report2 = readFile(out / "report.md");
+  EXPECT_NE(report2.find("| evaluate postman | kept from an earlier run |"), std::string::npos) << report2;
+  EXPECT_NE(report2.find("--resume"), std::string::npos);
+  // Without one SLAM run's output, only that run is done again.
+  std::filesystem::remove_all(out / "eval" / "postman");
+  const auto redo = test::runCli(cmd + " --resume");
+  ASSERT_EQ(redo.code, 0) << redo.out;
+  EXPECT_EQ(count(redo.out, "  started  "), 1) << redo.out;
+  EXPECT_NE(redo.out.find("  started  evaluate postman"), std::string::npos) << redo.out;
+  EXPECT_TRUE(std::filesystem::exists(out / "eval" / "postman" / "metrics.json"));
 }
 
 TEST(RunCli, BadNetIsAOneLineErrorAndWritesNothing) {
