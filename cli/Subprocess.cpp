@@ -1,11 +1,13 @@
 #include "Subprocess.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -44,6 +46,32 @@ pid_t spawnStep(const Step& s) {
     throw std::runtime_error("cannot start '" + s.label + "' (" + exe + "): " + std::strerror(rc));
   return pid;
 }
+
+volatile sig_atomic_t g_stop_signal = 0;
+
+void onStopSignal(int sig) { g_stop_signal = sig; }
+
+/// Catches SIGINT / SIGTERM / SIGHUP while steps run (restoring the previous handlers after), so
+/// the steps can be stopped with the run instead of going on as orphans.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = onStopSignal;
+    sigemptyset(&sa.sa_mask);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) ::sigaction(kSignals[i], &sa, &old_[i]);
+  }
+  ~StopSignals() {
+    for (std::size_t i = 0; i < kSignals.size(); ++i) ::sigaction(kSignals[i], &old_[i], nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+  std::array<struct sigaction, 3> old_{};
+};
 
 }  // namespace
 
@@ -88,7 +116,19 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
   std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
   std::size_t next = 0;
   std::string failure;
+  const StopSignals stop_signals;
   while (next < steps.size() || !running.empty()) {
+    if (const int sig = g_stop_signal) {
+      std::string stopped;
+      for (const auto& [p, run] : running) {
+        ::kill(p, sig);
+        stopped += (stopped.empty() ? "" : ", ") + steps[run.first].label;
+      }
+      for (const auto& [p, run] : running) ::waitpid(p, nullptr, 0);
+      throw Interrupted(sig, std::string("interrupted by ") + strsignal(sig) +
+                                 (stopped.empty() ? "" : "; stopped " + stopped) +
+                                 " (--resume continues from the steps that finished)");
+    }
     while (failure.empty() && next < steps.size() && static_cast<int>(running.size()) < std::max(1, jobs)) {
       logInfo("  started  " + steps[next].label);
       std::error_code ec;

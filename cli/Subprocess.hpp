@@ -3,6 +3,7 @@
 // process, so the pipeline runs every SUMO step (survey, each drive) in its own process; this
 // also lets independent steps use both cores.
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,13 +29,21 @@ struct StepResult {
   double seconds = 0.0;
 };
 
+/// runSteps was stopped by SIGINT, SIGTERM or SIGHUP: the running steps were stopped too.
+struct Interrupted : std::runtime_error {
+  Interrupted(int sig, const std::string& what) : std::runtime_error(what), signal(sig) {}
+  int signal;  ///< the signal that stopped the run; the program exits with 128 + it
+};
+
 /// Path of the running slamroute binary (/proc/self/exe).
 std::string selfExe();
 
 /// Runs `steps` with at most `jobs` at once, prints one line per start/finish and, every
 /// `status_every_s` seconds (0 = never), one line per running step quoting the last line of its
 /// log (its progress: a SLAM run on a city takes an hour). A step that succeeds gets its stamp
-/// written (Step::stamp). Throws std::runtime_error naming the
+/// written (Step::stamp). SIGINT, SIGTERM or SIGHUP while steps run (a job scheduler stopping
+/// the run, a closed terminal) are passed on to the running steps, which are waited for; then
+/// Interrupted is thrown. Throws std::runtime_error naming the
 /// first failed step and quoting the last line of its log.
 std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s = 60.0);
 

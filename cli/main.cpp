@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "Commands.hpp"
+#include "Subprocess.hpp"
 #include "slamroute/core/Log.hpp"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const cli::Interrupted& e) {
+    std::cerr << "slamroute: " << e.what() << "\n";
+    return 128 + e.signal;
   } catch (const cli::NotImplemented& e) {
     std::cerr << "slamroute: " << e.what() << "\n";
     return 2;

@@ -1,6 +1,10 @@
 #include "DriveStaging.hpp"
 
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
 
 #include <stdexcept>
 
@@ -18,6 +22,22 @@ void checkReplaceable(const fs::path& target, const std::string& marker) {
                            marker + "; refusing to overwrite it");
 }
 
+/// Removes `.NAME.tmp.PID` folders beside `target` left by a process that is gone (killed by a
+/// signal or the OOM killer, it could not remove its own): they are never moved into place.
+void removeStaleStaging(const fs::path& target) {
+  const std::string prefix = "." + target.filename().string() + ".tmp.";
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(target.parent_path(), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) != 0 || !e.is_directory(ec)) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::strtol(digits.c_str(), nullptr, 10);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH) fs::remove_all(e.path(), ec);
+  }
+}
+
 }  // namespace
 
 StagingDir::StagingDir(fs::path target, const std::string& marker)
@@ -31,6 +51,7 @@ StagingDir::StagingDir(fs::path target, const std::string& marker)
   if (ec)
     throw std::runtime_error(target_.parent_path().string() + ": cannot create folder (" +
                              ec.message() + ")");
+  removeStaleStaging(target_);
   tmp_ = target_.parent_path() /
          ("." + target_.filename().string() + ".tmp." + std::to_string(::getpid()));
   fs::remove_all(tmp_, ec);

@@ -2,8 +2,15 @@
 // x3 -> LiDAR SLAM x3 -> report). Every 5th scan keeps it to ~20 s.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +19,34 @@
 
 namespace slamroute {
 namespace {
+
+/// Starts `slamroute ARGS` in the background, its output going to `log`; returns its pid.
+pid_t spawnCli(const std::string& args, const std::filesystem::path& log) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const std::string cmd = "exec " + std::string(SLAMROUTE_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+std::string readText(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Whether a running process has `text` in its command line.
+bool processMentions(const std::string& text) {
+  for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::string cmdline = readText(e.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    if (std::to_string(::getpid()) != name && cmdline.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
 
 TEST(RunCli, WholePipelineOnThePlusNet) {
   const auto dir = test::cliTempDir("run_plus");
@@ -77,13 +112,36 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   const std::string report2 = readFile(out / "report.md");
   EXPECT_NE(report2.find("| evaluate postman | kept from an earlier run |"), std::string::npos) << report2;
   EXPECT_NE(report2.find("--resume"), std::string::npos);
-  // Without one SLAM run's output, only that run is done again.
-  std::filesystem::remove_all(out / "eval" / "postman");
+  // Without the SLAM outputs, a resumed run does only the SLAM. Stopped by SIGTERM (a job
+  // scheduler) while the SLAM runs, it stops them too, exits with 128 + 15 and leaves no
+  // process behind; the next --resume does the SLAM runs that did not finish.
+  const std::string estimate_q = readFile(out / "eval" / "qlearning" / "estimate.tum");
+  std::filesystem::remove_all(out / "eval");
+  const auto log = dir / "interrupted.log";
+  const pid_t pid = spawnCli(cmd + " --resume", log);
+  ASSERT_GT(pid, 0);
+  for (int i = 0; i < 3000 && readText(log).find("  started  evaluate") == std::string::npos; ++i) ::usleep(10000);
+  ::usleep(200000);  // the SLAM runs are under way
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  const std::string stopped = readText(log);
+  ASSERT_TRUE(WIFEXITED(status)) << stopped;
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << stopped;
+  EXPECT_NE(stopped.find("slamroute: interrupted by "), std::string::npos) << stopped;
+  EXPECT_NE(stopped.find("; stopped evaluate "), std::string::npos) << stopped;
+  EXPECT_EQ(count(stopped, "  started  "), 3) << stopped;  // the SLAM runs only
+  EXPECT_FALSE(processMentions(out.string())) << "a step outlived the stopped run";
+  int finished = 0;
+  for (const std::string p : {"qlearning", "random", "postman"})
+    finished += std::filesystem::exists(out / "logs" / ("evaluate-" + p + ".done"));
+  EXPECT_LT(finished, 3);
   const auto redo = test::runCli(cmd + " --resume");
   ASSERT_EQ(redo.code, 0) << redo.out;
-  EXPECT_EQ(count(redo.out, "  started  "), 1) << redo.out;
-  EXPECT_NE(redo.out.find("  started  evaluate postman"), std::string::npos) << redo.out;
-  EXPECT_TRUE(std::filesystem::exists(out / "eval" / "postman" / "metrics.json"));
+  EXPECT_EQ(count(redo.out, "  started  "), 3 - finished) << redo.out;
+  for (const std::string p : {"qlearning", "random", "postman"})
+    EXPECT_TRUE(std::filesystem::exists(out / "eval" / p / "metrics.json")) << p;
+  EXPECT_EQ(readFile(out / "eval" / "qlearning" / "estimate.tum"), estimate_q);  // same seed, same output
 }
 
 TEST(RunCli, BadNetIsAOneLineErrorAndWritesNothing) {

@@ -3,6 +3,8 @@
 // giving a one-line error naming the file, a non-zero exit and nothing written.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -119,6 +121,26 @@ TEST(SurveyDriveCli, DriveAndSurveyRejectAnUnknownNet) {
   expectCleanFailure(
       "survey --net " + (dir / "nowhere.net.xml").string() + " --out " + (dir / "out").string(),
       "nowhere.net.xml", dir, 1);
+}
+
+TEST(SurveyDriveCli, DriveRemovesTheStagingFolderOfAKilledDrive) {
+  // A drive killed by a signal leaves its hidden .out.tmp.PID folder; the next drive to the same
+  // folder removes it once that process is gone, and leaves a live process's one alone.
+  const auto dir = test::cliTempDir("drive_stale");
+  long pid_max = 4194304;
+  std::ifstream("/proc/sys/kernel/pid_max") >> pid_max;
+  const fs::path dead = dir / (".out.tmp." + std::to_string(pid_max + 1));  // no such process
+  const fs::path live = dir / (".out.tmp." + std::to_string(::getpid()));   // this test
+  fs::create_directories(dead);
+  fs::create_directories(live);
+  std::ofstream(dead / "groundtruth.tum") << "0 0 0 0 0 0 0 1\n";
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01"])");
+  const auto r = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
+                              (dir / "out").string() + " --no-mesh --log-level warn");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(dir / "out" / "drive.json"));
 }
 
 TEST(SurveyDriveCli, DriveRefusesToOverwriteAForeignFolder) {
