@@ -170,7 +170,11 @@ void writeReport(const ReportInputs& in) {
   std::ostringstream md;
   md << "# slamroute report\n\n"
      << "Net: `" << in.net << "`  \nCommand: `" << in.command << "`  \nTotal time: "
-     << fmt(in.total_seconds, 1) << " s\n\n";
+     << fmt(in.total_seconds, 1) << " s";
+  const auto kept = std::count_if(in.step_seconds.begin(), in.step_seconds.end(),
+                                  [](const auto& st) { return std::isnan(st.second); });
+  if (kept > 0) md << " (this run; " << kept << " of " << in.step_seconds.size() << " steps kept from an earlier one)";
+  md << "\n\n";
 
   // --- survey and graph
   md << "## Road graph (paper §3.1)\n\n";

@@ -112,6 +112,7 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   const std::string report2 = readFile(out / "report.md");
   EXPECT_NE(report2.find("| evaluate postman | kept from an earlier run |"), std::string::npos) << report2;
   EXPECT_NE(report2.find("--resume"), std::string::npos);
+  EXPECT_NE(report2.find("s (this run; 11 of 11 steps kept from an earlier one)"), std::string::npos) << report2;
   // Without the SLAM outputs, a resumed run does only the SLAM. Stopped by SIGTERM (a job
   // scheduler) while the SLAM runs, it stops them too, exits with 128 + 15 and leaves no
   // process behind; the next --resume does the SLAM runs that did not finish.
