@@ -2,23 +2,26 @@
 # Memory of one SLAM run (bench/RESULTS.md "Memory of a SLAM run"): runs `slamroute evaluate` on a
 # drive folder, samples its resident memory every INTERVAL seconds with the SLAM progress at that
 # moment, and ends with the maximum resident set and the wall time from /usr/bin/time -v.
-# Usage: bench/slam_memory.sh BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S=5]
+# Usage: bench/slam_memory.sh BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S=5] [CONFIG.yaml]
 # Example: bench/slam_memory.sh build out/default_city/drives/qlearning /tmp/slam_mem
+# (CONFIG with `evaluate: {keyframe_clouds_on_disk: false}` measures the clouds kept in memory.)
 set -euo pipefail
 if [ $# -lt 3 ]; then
-  echo "usage: $0 BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S]" >&2
+  echo "usage: $0 BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S] [CONFIG.yaml]" >&2
   exit 2
 fi
 bin="$1/cli/slamroute"
 drive="$2"
 out="$3"
 every="${4:-5}"
+config=()
+[ $# -ge 5 ] && config=(--config "$5")
 [ -x "$bin" ] || { echo "$0: $bin: not built" >&2; exit 1; }
 [ -d "$drive" ] || { echo "$0: $drive: no such drive folder" >&2; exit 1; }
 [ -x /usr/bin/time ] || { echo "$0: /usr/bin/time missing (Debian package 'time')" >&2; exit 1; }
 mkdir -p "$out"
 log="$out/evaluate.log"
-/usr/bin/time -v "$bin" evaluate --drive "$drive" --out "$out/eval" > "$log" 2>&1 &
+/usr/bin/time -v "$bin" "${config[@]}" evaluate --drive "$drive" --out "$out/eval" > "$log" 2>&1 &
 timer=$!
 echo "| elapsed [s] | resident [kB] | SLAM progress |"
 echo "|---|---|---|"

@@ -227,7 +227,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   fs::create_directories(out);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
-                            odometry.empty() ? nullptr : &odometry);
+                            odometry.empty() ? nullptr : &odometry,
+                            slam_cfg.keyframe_clouds_on_disk ? out : fs::path{});
   progress.finish();
   writeTum(out / "estimate.tum", slam.trajectory);
   writePcd(out / "map.pcd", slam.map);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/CloudStore.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/PoseGraph.hpp"
 #include "slamroute/evaluate/RangeImage.hpp"
@@ -51,7 +52,7 @@ struct Keyframe {
   int frame = 0;
   Pose3 T_world = Pose3::Identity();
   Cloud edges, planes;  ///< body frame, voxel-filtered (scan-to-map source / local map)
-  Cloud cloud;          ///< body frame, segmented points at cfg.map_voxel_m (map + ICP)
+  int cloud = -1;       ///< in Impl::clouds: body frame, segmented points at cfg.map_voxel_m (map + ICP)
 };
 
 struct FrameRecord {
@@ -82,6 +83,7 @@ struct LidarSlam::Impl {
   Pose3 T_world_first;
   std::vector<FrameRecord> frames;
   std::vector<Keyframe> kfs;
+  std::unique_ptr<CloudStore> clouds = std::make_unique<CloudStore>();  ///< the keyframes' clouds
   std::vector<PoseGraphEdge> odom_edges, loop_edges;
   std::vector<LoopClosure> loops;
   int loop_candidates = 0;
@@ -194,11 +196,11 @@ struct LidarSlam::Impl {
          k <= std::min(n - 2, best + cfg.loop_submap_keyframes); ++k) {
       const Keyframe& kf = kfs[static_cast<std::size_t>(k)];
       if (cur.t - kf.t < cfg.loop_min_time_gap_s) continue;
-      const Cloud c = transformed(kf.cloud, kf.T_world);
+      const Cloud c = transformed(clouds->get(kf.cloud), kf.T_world);
       target.insert(target.end(), c.begin(), c.end());
     }
     const IcpTarget icp_target(voxelFilter(target, cfg.loop_voxel_m));
-    const Cloud source = voxelFilter(cur.cloud, cfg.loop_voxel_m);
+    const Cloud source = voxelFilter(clouds->get(cur.cloud), cfg.loop_voxel_m);
     const IcpResult icp = icp_target.align(source, cur.T_world, cfg.loop_icp_iterations, cfg.loop_icp_max_corr_m);
     logDebug("loop candidate kf " + std::to_string(best) + " -> " + std::to_string(n - 1) +
              ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
@@ -252,7 +254,7 @@ struct LidarSlam::Impl {
     kf.T_world = T_world;
     kf.edges = edges;
     kf.planes = planes;
-    kf.cloud = voxelFilter(segmented, cfg.map_voxel_m);
+    kf.cloud = clouds->add(voxelFilter(segmented, cfg.map_voxel_m));
     if (!kfs.empty()) {
       driven_since_loop += (T_world.translation() - kfs.back().T_world.translation()).norm();
       PoseGraphEdge e;
@@ -552,8 +554,8 @@ struct LidarSlam::Impl {
     // (each keyframe's cloud is freed once merged; the run is over).
     VoxelMerger map(cfg.map_voxel_m);
     for (auto& kf : kfs) {
-      map.add(transformed(kf.cloud, kf.T_world));
-      Cloud().swap(kf.cloud);
+      map.add(transformed(clouds->get(kf.cloud), kf.T_world));
+      clouds->release(kf.cloud);
     }
     out.map = map.finish();
     out.loops = loops;
@@ -565,6 +567,11 @@ struct LidarSlam::Impl {
     return out;
   }
 };
+
+void LidarSlam::keepCloudsOnDisk(const std::filesystem::path& dir) {
+  if (!impl_->kfs.empty()) throw std::logic_error("LidarSlam::keepCloudsOnDisk: call it before the first scan");
+  impl_->clouds = std::make_unique<CloudStore>(dir);
+}
 
 LidarSlam::LidarSlam(const Config& cfg, const LidarSpec& spec, const Pose3& T_world_first)
     : impl_(std::make_unique<Impl>()) {
@@ -600,8 +607,10 @@ SlamResult LidarSlam::finish() { return impl_->finish(); }
 
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress,
-                   const std::optional<Pose3>& T_first_second, const WheelOdometry* odometry) {
+                   const std::optional<Pose3>& T_first_second, const WheelOdometry* odometry,
+                   const std::filesystem::path& cloud_dir) {
   LidarSlam slam(cfg, source.spec(), T_world_first);
+  if (!cloud_dir.empty()) slam.keepCloudsOnDisk(cloud_dir);
   if (odometry && cfg.use_odometry) slam.setOdometry(*odometry);
   if (T_first_second && source.size() > 1)
     slam.setInitialMotion(*T_first_second, source.time(1) - source.time(0));

@@ -1,7 +1,9 @@
 // Loop closure on a synthetic loop around a city block: it fires and lowers the ATE.
+#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "SyntheticScene.hpp"
 #include "slamroute/evaluate/Metrics.hpp"
@@ -63,6 +65,32 @@ TEST(LoopClosure, FiresOnALoopAndLowersAte) {
   const double ate_closed = compareTrajectories(closed.trajectory, gt, {}).ate.rmse_m;
   std::printf("ATE rmse without loop closure %.4f m, with %.4f m\n", ate_open, ate_closed);
   EXPECT_LT(ate_closed, ate_open);
+}
+
+TEST(LoopClosure, KeyframeCloudsOnDiskGiveTheSameRunBitForBit) {
+  // The loop closure reads old keyframes' clouds back and the map merges them all: with the
+  // clouds in a file (evaluate's default) both must be exactly what they are in memory.
+  const LoopSource src;
+  Config cfg;
+  cfg.scan_stride = 1;
+  cfg.loop_min_time_gap_s = 10.0;
+  cfg.max_step_change_deg = 15.0;
+  cfg.max_lateral_accel_mps2 = 0;
+  const SlamResult memory = runSlam(src, cfg, src.pose(0));
+  const auto dir = slamroute::test::testTmp();
+  const SlamResult disk = runSlam(src, cfg, src.pose(0), {}, std::nullopt, nullptr, dir);
+  ASSERT_GE(memory.loops.size(), 1u);
+  ASSERT_EQ(disk.loops.size(), memory.loops.size());
+  for (std::size_t k = 0; k < memory.loops.size(); ++k) {
+    EXPECT_EQ(disk.loops[k].from_keyframe, memory.loops[k].from_keyframe);
+    EXPECT_EQ(disk.loops[k].fitness_m2, memory.loops[k].fitness_m2);
+  }
+  ASSERT_EQ(disk.trajectory.size(), memory.trajectory.size());
+  for (std::size_t i = 0; i < memory.trajectory.size(); ++i)
+    EXPECT_TRUE(disk.trajectory[i].T_world_body.matrix() == memory.trajectory[i].T_world_body.matrix()) << i;
+  ASSERT_EQ(disk.map.size(), memory.map.size());
+  EXPECT_TRUE(std::equal(disk.map.begin(), disk.map.end(), memory.map.begin()));
+  EXPECT_TRUE(std::filesystem::is_empty(dir));  // the clouds' file had no name
 }
 
 TEST(PoseGraph, LoopEdgeDistributesDrift) {

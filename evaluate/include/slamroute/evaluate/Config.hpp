@@ -169,6 +169,10 @@ struct Config {
   double graph_loop_sigma_rad = 0.01;   ///< loop edge sigma (rotation) [rad]
   // --- map output + accuracy ---
   double map_voxel_m = 0.2;          ///< voxel of map.pcd [m]
+  /// Keyframe clouds in an unnamed file in the output folder instead of memory: same results,
+  /// resident memory no longer grows by ~36 kB per keyframe (bench/RESULTS.md "Memory of a SLAM
+  /// run"); the file takes that much disk until the run ends.
+  bool keyframe_clouds_on_disk = true;
   double map_accuracy_max_m = 2.0;   ///< distances are clamped here (points off the world) [m]
   // --- metrics ---
   double assoc_max_dt_s = 0.02;      ///< timestamp association tolerance [s]
@@ -289,6 +293,7 @@ void visitFields(V& v, Config& c) {
   v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");
   v.field("graph_loop_sigma_rad", c.graph_loop_sigma_rad, "loop edge sigma [rad]");
   v.field("map_voxel_m", c.map_voxel_m, "map.pcd voxel [m]");
+  v.field("keyframe_clouds_on_disk", c.keyframe_clouds_on_disk, "keyframe clouds in a temporary file, not memory");
   v.field("map_accuracy_max_m", c.map_accuracy_max_m, "map distance clamp [m]");
   v.field("assoc_max_dt_s", c.assoc_max_dt_s, "timestamp association tolerance [s]");
   v.field("rpe_lengths_m", c.rpe_lengths_m, "KITTI RPE segment lengths [m]");

@@ -3,6 +3,7 @@
 // features -> scan-to-scan odometry -> scan-to-map refinement; keyframes, ICP loop closure and a
 // Ceres pose graph. The estimate starts at a given pose (the first ground-truth pose), so it is
 // expressed in the world frame.
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <memory>
@@ -60,6 +61,9 @@ class LidarSlam {
   /// instead of the constant-velocity model, which carries the estimate through featureless
   /// stretches (open fields) and turns in them.
   void setOdometry(WheelOdometry odometry);
+  /// Keeps the keyframes' clouds in an unnamed file in `dir` instead of memory (CloudStore.hpp);
+  /// the results are the same bit for bit. Call before the first scan.
+  void keepCloudsOnDisk(const std::filesystem::path& dir);
   /// Processes one scan; returns its status. Never throws on bad scan content.
   FrameStatus addScan(const Scan& scan);
   /// Records a scan that could not be read (constant-velocity prediction).
@@ -85,10 +89,11 @@ class LidarSlam {
 /// Runs the pipeline over a scan source: every cfg.scan_stride-th scan, and every scan while the
 /// vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the motion from the
 /// source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when cfg.use_odometry). `progress(done, total)` is called after each scan.
-/// A scan the source cannot produce is recorded as Missing and the run continues.
+/// A scan the source cannot produce is recorded as Missing and the run continues. `cloud_dir`:
+/// where the keyframe clouds go (LidarSlam::keepCloudsOnDisk; empty: memory).
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress = {},
                    const std::optional<Pose3>& T_first_second = std::nullopt,
-                   const WheelOdometry* odometry = nullptr);
+                   const WheelOdometry* odometry = nullptr, const std::filesystem::path& cloud_dir = {});
 
 }  // namespace slamroute::evaluate
