@@ -51,8 +51,8 @@ void registerRun(CLI::App& app, Context& ctx) {
       ->capture_default_str()->check(CLI::Range(1, 64));
   sub->add_option("--slam-jobs", o->slam_jobs,
                   "SLAM runs at once (0 = one per planner, sharing the cores: the stage ends when "
-                  "the total work is done, not when the longest route's queue is; a run peaks at ~1.2 GB for "
-                  "a 15 km drive, 5.6 GB for 75 km; fewer run at once when the memory is short)")
+                  "the total work is done, not when the longest route's queue is; a run peaks at ~0.7 GB for "
+                  "a 15 km drive, 2.8 GB for 75 km; fewer run at once when the memory is short)")
       ->capture_default_str()->check(CLI::Range(0, 64));
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->add_option("--status-every", o->status_every,
@@ -151,11 +151,11 @@ void registerRun(CLI::App& app, Context& ctx) {
       s5.back().output = out / "eval" / p / "metrics.json";  // written last
     }
     // One SLAM run per planner by default, as many as the memory holds (a 75 km drive's SLAM
-    // peaks at 5.6 GB): the longest routes may run together only if their estimates fit.
+    // peaks at 2.8 GB): the longest routes may run together only if their estimates fit.
     std::vector<double> lengths;
     for (const auto& [neg_len, p] : by_length) lengths.push_back(-neg_len);
     std::string mem;
-    const int fit = slamJobsThatFit(lengths, static_cast<int>(s5.size()), &mem);
+    const int fit = slamJobsThatFit(lengths, static_cast<int>(s5.size()), ctx.cfg.evaluate.keyframe_clouds_on_disk, &mem);
     if (o->slam_jobs > fit)
       logWarn("--slam-jobs " + std::to_string(o->slam_jobs) + " may exceed the memory (" + mem + ")");
     else if (o->slam_jobs == 0 && fit < static_cast<int>(s5.size()))

@@ -28,7 +28,9 @@ Step childStep(const Context& ctx, const std::string& label, std::vector<std::st
 
 double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }
 
-double slamMemoryGb(double route_km) { return 0.3 + 0.075 * std::max(0.0, route_km); }
+double slamMemoryGb(double route_km, bool clouds_on_disk) {
+  return 0.3 + (clouds_on_disk ? 0.04 : 0.075) * std::max(0.0, route_km);
+}
 
 double availableMemoryGb() {
   std::ifstream in("/proc/meminfo");
@@ -51,9 +53,9 @@ int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_job
   return std::max(1, k);
 }
 
-int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, std::string* why) {
+int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, bool clouds_on_disk, std::string* why) {
   std::vector<double> need;
-  for (double m : route_m) need.push_back(slamMemoryGb(m / 1000.0));
+  for (double m : route_m) need.push_back(slamMemoryGb(m / 1000.0, clouds_on_disk));
   const double avail = availableMemoryGb();
   if (why && !need.empty()) {
     char buf[128];

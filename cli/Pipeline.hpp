@@ -22,12 +22,13 @@ Step childStep(const Context& ctx, const std::string& label, std::vector<std::st
 /// Length of a planned route [m] (route.json's length_m).
 double routeLength(const std::filesystem::path& route_json);
 
-/// Peak memory of one SLAM run (`evaluate`) of a drive of `route_km` [GB]. Keyframes every metre
-/// keep their 0.2 m voxel clouds for the map and the loop closures, so it grows with the length:
-/// measured peaks 1.16 GB for 14.9 km (default city, qlearning) and 5.55 GB for 74.5 km
-/// (Ingolstadt, postman), bench/RESULTS.md "Memory of a SLAM run"; the estimate 0.3 GB +
-/// 0.075 GB/km lies above both.
-double slamMemoryGb(double route_km);
+/// Peak memory of one SLAM run (`evaluate`) of a drive of `route_km` [GB]; it grows with the
+/// length (bench/RESULTS.md "Memory of a SLAM run"). With the keyframe clouds on disk (the
+/// default, evaluate.keyframe_clouds_on_disk) the peak is the map's merge at the end: measured
+/// 725,140 kB for 14.9 km (default city, qlearning) and 2,762,904 kB for 74.5 km (Ingolstadt,
+/// postman), estimated as 0.3 GB + 0.04 GB/km. With the clouds in memory: 989,740-1,136,460 kB
+/// and 5,424,600 kB, estimated as 0.3 GB + 0.075 GB/km. Both lie above the measured peaks.
+double slamMemoryGb(double route_km, bool clouds_on_disk = true);
 
 /// Memory new processes can have now [GB = 10^9 bytes] (MemAvailable in /proc/meminfo); 0 when
 /// unknown.
@@ -41,7 +42,8 @@ int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_job
 /// SLAM runs of drives of `route_m` [m] to start at once (at most `max_jobs`): slamJobsForMemory
 /// with each run's slamMemoryGb against 90 % of availableMemoryGb(). `why` (optional) receives
 /// "largest SLAM estimated at X GB, Y GB available".
-int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, std::string* why = nullptr);
+int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, bool clouds_on_disk,
+                    std::string* why = nullptr);
 
 /// Routes planned on a trace-built graph know its turns only loosely: joins consecutive SUMO
 /// edges with the shortest legal detour where SUMO forbids the turn (noted in the route), and

@@ -558,6 +558,9 @@ struct LidarSlam::Impl {
       clouds->release(kf.cloud);
     }
     out.map = map.finish();
+    if (clouds->onDisk())
+      logInfo("SLAM: the keyframes' clouds took " + std::to_string(clouds->bytesOnDisk() / 1000000) +
+              " MB in a temporary file (" + std::to_string(kfs.size()) + " keyframes)");
     out.loops = loops;
     out.loop_candidates = loop_candidates;
     out.loops_rejected = loops_rejected;

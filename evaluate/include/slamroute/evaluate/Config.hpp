@@ -170,7 +170,7 @@ struct Config {
   // --- map output + accuracy ---
   double map_voxel_m = 0.2;          ///< voxel of map.pcd [m]
   /// Keyframe clouds in an unnamed file in the output folder instead of memory: same results,
-  /// resident memory no longer grows by ~36 kB per keyframe (bench/RESULTS.md "Memory of a SLAM
+  /// resident memory no longer grows by ~47 kB per keyframe (bench/RESULTS.md "Memory of a SLAM
   /// run"); the file takes that much disk until the run ends.
   bool keyframe_clouds_on_disk = true;
   double map_accuracy_max_m = 2.0;   ///< distances are clamped here (points off the world) [m]
