@@ -125,10 +125,14 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     // Every step is stamped; with --resume, steps done before from the same inputs are kept.
     auto todo = [&o](std::vector<Step> steps) { return stepsToRun(std::move(steps), o->resume); };
     std::ostringstream md;
+    // The command that reproduces these tables, with every setting that shapes them.
+    std::string sizes;
+    for (int n : o->sizes) sizes += (sizes.empty() ? "" : ",") + std::to_string(n);
     md << "# The paper's tables, reproduced\n\nCommand: `slamroute --seed " << ctx.cfg.seed
-       << " experiment paper --out " << o->out
+       << (ctx.config_file.empty() ? std::string() : " --config " + ctx.config_file) << " experiment paper"
+       << (o->net.empty() || o->table3_only ? std::string() : " --net " + o->net) << " --out " << o->out
        << (o->table3_only ? std::string(" --table3-only") : " --seeds " + std::to_string(o->seeds))
-       << (o->resume ? " --resume" : "") << "`\n\n";
+       << " --sizes " << sizes << (o->resume ? " --resume" : "") << "`\n\n";
 
     if (!o->table3_only) {
       const std::string net_path = fs::weakly_canonical(fs::absolute(o->net.empty() ? defaultNetPath() : o->net)).string();
@@ -229,7 +233,8 @@ void registerExperiment(CLI::App& app, Context& ctx) {
       const std::string head =
           "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | street coverage [%] | node coverage [%] |\n"
           "|---|---|---|---|---|---|---|---|\n";
-      md << "## Table 1: Q-learning vs random route (mean ± std over " << o->seeds << " seeds)\n\n"
+      md << "## Table 1: Q-learning vs random route (mean ± std over " << o->seeds << (o->seeds == 1 ? " seed" : " seeds")
+         << ")\n\n"
          << "Paper: proposed 0.4006 m vs random 0.5745 m average trajectory error (−30 %). Here the "
             "random walk drives as far as the same seed's Q-learning route (equal budget).\n\n"
          << head << row("qlearning") << row("random") << "\n";
