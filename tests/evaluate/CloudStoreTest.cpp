@@ -1,4 +1,5 @@
-// Keyframe clouds in memory or in an unnamed file (evaluate/CloudStore.hpp).
+// Keyframe clouds in memory or in an unnamed file (evaluate/CloudStore.hpp), and the disk an
+// evaluation needs for them and map.pcd.
 #include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
@@ -7,6 +8,7 @@
 #include <random>
 
 #include "slamroute/evaluate/CloudStore.hpp"
+#include "slamroute/evaluate/Evaluate.hpp"
 
 namespace slamroute::evaluate {
 namespace {
@@ -60,6 +62,19 @@ TEST(CloudStore, AFolderThatDoesNotExistIsAnErrorNamingIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
   }
+}
+
+TEST(EvaluationDisk, EstimateCoversTheMeasuredFiles) {
+  Config cfg;  // keyframe clouds on disk
+  // Default city, qlearning, 14.9 km: clouds 275 MB (evaluate's own figure) + map.pcd 86,468,300 B.
+  EXPECT_GT(evaluationDiskGb(14.9, cfg), 0.275 + 0.0865);
+  // Ingolstadt, postman, 74.5 km: 36,479 keyframes of ~47.4 kB + map.pcd 488,214,226 B.
+  EXPECT_GT(evaluationDiskGb(74.5, cfg), 36479 * 47.4e-6 + 0.488);
+  EXPECT_LT(evaluationDiskGb(74.5, cfg), 3.0);
+  cfg.keyframe_clouds_on_disk = false;  // map.pcd only
+  EXPECT_GT(evaluationDiskGb(74.5, cfg), 0.488);
+  EXPECT_LT(evaluationDiskGb(74.5, cfg), 0.7);
+  EXPECT_EQ(evaluationDiskGb(-1.0, cfg), 0.0);
 }
 
 }  // namespace

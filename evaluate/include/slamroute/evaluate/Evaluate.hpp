@@ -25,6 +25,12 @@ nlohmann::json trajectoryJson(const TrajectoryMetrics& m);
 /// Reliability summary: per-reason counts and merged stretches of non-Ok frames.
 nlohmann::json reliabilityJson(const SlamResult& r);
 
+/// Disk an evaluation of a drive of `route_km` needs in its output folder [GB = 10^9 bytes]:
+/// map.pcd (~6.6 MB/km) and, with cfg.keyframe_clouds_on_disk, the keyframe clouds' file while
+/// the SLAM runs (~23 MB/km; bench/RESULTS.md "Memory of a SLAM run"). evaluateDrive warns when
+/// the folder has less free.
+double evaluationDiskGb(double route_km, const Config& cfg);
+
 /// Runs the whole evaluation of a drive folder and writes the outputs into `out`.
 /// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
 /// still computed after SE(3) alignment. Returns the metrics.json content.
