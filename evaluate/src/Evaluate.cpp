@@ -231,8 +231,19 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
               (drive / drive_files::kOdometrySpec).string());
   }
 
-  // Only now that every input file has been read: a bad one leaves no output folder behind.
+  // Only now that every input file has been read: a bad one leaves no output folder behind. A
+  // folder made here is removed again if the evaluation fails before metrics.json (a full disk,
+  // a killed scan source): no half set of outputs.
+  const bool made_out = !fs::exists(out);
   fs::create_directories(out);
+  struct RemoveUnlessDone {
+    fs::path dir;
+    bool done = false;
+    ~RemoveUnlessDone() {
+      std::error_code ec;
+      if (!done && !dir.empty()) fs::remove_all(dir, ec);
+    }
+  } cleanup{made_out ? out : fs::path{}};
   {
     double km = 0.0;
     for (std::size_t i = 1; i < gt.size(); ++i)
@@ -319,6 +330,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   plotTopView(out / "trajectory_top.png", m, cfg.plot_size_px);
   plotErrorAlongDistance(out / "error_along_distance.png", m, cfg.plot_size_px);
   writeFileAtomic(out / "metrics.json", j.dump(2) + "\n");
+  cleanup.done = true;
   return j;
 }
 

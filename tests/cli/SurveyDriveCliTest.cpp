@@ -72,6 +72,28 @@ TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "eval"));
 }
 
+TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
+  // pose_edges.csv is read after the SLAM, once estimate.tum and map.pcd are written: a bad one
+  // fails the evaluation, and the output folder it made goes again (no outputs without
+  // metrics.json), while a folder that was there before stays.
+  const auto dir = test::cliTempDir("evaluate_late_failure");
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11"])");
+  const auto d = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
+                              (dir / "drive").string() + " --no-mesh --log-level warn");
+  ASSERT_EQ(d.code, 0) << d.out;
+  std::ofstream(dir / "drive/pose_edges.csv") << "t,edge\nnot a time,g00_g01\n";
+  const auto r = test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
+                              " --out " + (dir / "eval").string());
+  EXPECT_NE(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("pose_edges.csv"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "eval"));
+  fs::create_directories(dir / "mine");
+  const auto r2 = test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
+                               " --out " + (dir / "mine").string());
+  EXPECT_NE(r2.code, 0) << r2.out;
+  EXPECT_TRUE(fs::exists(dir / "mine"));
+}
+
 TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {
   const auto dir = test::cliTempDir("drive_missing_edge");
   const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_gXX"])");
