@@ -13,6 +13,7 @@
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/OdometrySpec.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
@@ -231,26 +232,19 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
               (drive / drive_files::kOdometrySpec).string());
   }
 
-  // Only now that every input file has been read: a bad one leaves no output folder behind. A
-  // folder made here is removed again if the evaluation fails before metrics.json (a full disk,
-  // a killed scan source): no half set of outputs.
-  const bool made_out = !fs::exists(out);
-  fs::create_directories(out);
-  struct RemoveUnlessDone {
-    fs::path dir;
-    bool done = false;
-    ~RemoveUnlessDone() {
-      std::error_code ec;
-      if (!done && !dir.empty()) fs::remove_all(dir, ec);
-    }
-  } cleanup{made_out ? out : fs::path{}};
+  // Only now that every input file has been read: a bad one leaves no output folder behind. The
+  // outputs are made in a staging folder beside `out` and replace it at the end, so a failed
+  // evaluation (a bad pose_edges.csv read after the SLAM, a full disk) leaves no half set and
+  // keeps an earlier evaluation's whole; a folder without metrics.json is not overwritten.
+  StagingDir staging(out, "metrics.json");
+  const fs::path dir = staging.path();
   {
     double km = 0.0;
     for (std::size_t i = 1; i < gt.size(); ++i)
       km += (gt[i].T_world_body.translation() - gt[i - 1].T_world_body.translation()).norm() / 1000.0;
     const double need = evaluationDiskGb(km, slam_cfg);
     std::error_code ec;
-    const fs::space_info sp = fs::space(out, ec);
+    const fs::space_info sp = fs::space(dir, ec);
     if (!ec && static_cast<double>(sp.available) < need * 1e9) {
       char buf[200];
       std::snprintf(buf, sizeof buf, "evaluate: %s has %.2f GB free; a %.1f km drive needs ~%.2f GB there", out.c_str(),
@@ -261,10 +255,10 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry,
-                            slam_cfg.keyframe_clouds_on_disk ? out : fs::path{});
+                            slam_cfg.keyframe_clouds_on_disk ? dir : fs::path{});
   progress.finish();
-  writeTum(out / "estimate.tum", slam.trajectory);
-  writePcd(out / "map.pcd", slam.map);
+  writeTum(dir / "estimate.tum", slam.trajectory);
+  writePcd(dir / "map.pcd", slam.map);
 
   const TrajectoryMetrics m = compareTrajectories(slam.trajectory, gt, metricsOptions(cfg));
   nlohmann::json j = trajectoryJson(m);
@@ -298,7 +292,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   if (fs::exists(pe_path)) {
     pose_edges = readPoseEdges(pe_path);
     const std::vector<EdgeError> per_edge = perEdgeErrors(m, pose_edges, cfg.assoc_max_dt_s);
-    writePerEdgeCsv(out / "per_edge.csv", per_edge);
+    writePerEdgeCsv(dir / "per_edge.csv", per_edge);
     if (!edge_labels.empty()) j["drift_by_label"] = driftByLabel(per_edge, edge_labels);
   }
   addCoverage(drive, pose_edges, j);
@@ -327,10 +321,10 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   j["scans_per_s"] = t.total > 0 ? n / t.total : 0.0;
   j["reliability"] = reliabilityJson(slam);
 
-  plotTopView(out / "trajectory_top.png", m, cfg.plot_size_px);
-  plotErrorAlongDistance(out / "error_along_distance.png", m, cfg.plot_size_px);
-  writeFileAtomic(out / "metrics.json", j.dump(2) + "\n");
-  cleanup.done = true;
+  plotTopView(dir / "trajectory_top.png", m, cfg.plot_size_px);
+  plotErrorAlongDistance(dir / "error_along_distance.png", m, cfg.plot_size_px);
+  writeFileAtomic(dir / "metrics.json", j.dump(2) + "\n");
+  staging.commit();
   return j;
 }
 

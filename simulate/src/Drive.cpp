@@ -11,10 +11,10 @@
 #include <unordered_map>
 
 #include "DriveInternal.hpp"
-#include "DriveStaging.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/Route.hpp"
+#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/SumoSession.hpp"
 

@@ -13,9 +13,9 @@
 #include <set>
 #include <sstream>
 
-#include "DriveStaging.hpp"
 #include "SurveyInternal.hpp"
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"

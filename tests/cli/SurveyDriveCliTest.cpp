@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliTestUtil.hpp"
+#include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/OdometrySpec.hpp"
 
 namespace slamroute {
@@ -73,25 +74,40 @@ TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
 }
 
 TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
-  // pose_edges.csv is read after the SLAM, once estimate.tum and map.pcd are written: a bad one
-  // fails the evaluation, and the output folder it made goes again (no outputs without
-  // metrics.json), while a folder that was there before stays.
+  // pose_edges.csv is read after the SLAM, once estimate.tum and map.pcd are made: a bad one
+  // fails the evaluation, which then leaves no output folder, keeps an earlier evaluation in the
+  // same folder whole, and never writes into a folder that holds something else.
   const auto dir = test::cliTempDir("evaluate_late_failure");
   const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11"])");
   const auto d = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
                               (dir / "drive").string() + " --no-mesh --log-level warn");
   ASSERT_EQ(d.code, 0) << d.out;
+  auto evaluate = [&](const std::string& out) {
+    return test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
+                        " --out " + (dir / out).string());
+  };
+  const auto good = evaluate("eval");
+  ASSERT_EQ(good.code, 0) << good.out;
+  const std::string estimate = readFile(dir / "eval" / "estimate.tum");
+  const std::string metrics = readFile(dir / "eval" / "metrics.json");
   std::ofstream(dir / "drive/pose_edges.csv") << "t,edge\nnot a time,g00_g01\n";
-  const auto r = test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
-                              " --out " + (dir / "eval").string());
+  const auto r = evaluate("fresh");
   EXPECT_NE(r.code, 0) << r.out;
+  EXPECT_EQ(test::countLines(r.out), 1) << r.out;
   EXPECT_NE(r.out.find("pose_edges.csv"), std::string::npos) << r.out;
-  EXPECT_FALSE(fs::exists(dir / "eval"));
-  fs::create_directories(dir / "mine");
-  const auto r2 = test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
-                               " --out " + (dir / "mine").string());
-  EXPECT_NE(r2.code, 0) << r2.out;
-  EXPECT_TRUE(fs::exists(dir / "mine"));
+  EXPECT_FALSE(fs::exists(dir / "fresh"));
+  EXPECT_NE(evaluate("eval").code, 0);
+  EXPECT_EQ(readFile(dir / "eval" / "estimate.tum"), estimate);
+  EXPECT_EQ(readFile(dir / "eval" / "metrics.json"), metrics);
+  for (const auto& e : fs::directory_iterator(dir))  // no staging folder left
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+  fs::create_directories(dir / "foreign");
+  std::ofstream(dir / "foreign" / "notes.txt") << "keep me";
+  std::ofstream(dir / "drive/pose_edges.csv") << "";  // (any content: refused before reading)
+  const auto f = evaluate("foreign");
+  EXPECT_NE(f.code, 0) << f.out;
+  EXPECT_NE(f.out.find("refusing to overwrite"), std::string::npos) << f.out;
+  EXPECT_EQ(readFile(dir / "foreign" / "notes.txt"), "keep me");
 }
 
 TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {

@@ -1,4 +1,4 @@
-#include "DriveStaging.hpp"
+#include "slamroute/core/StagingDir.hpp"
 
 #include <signal.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 
 #include <stdexcept>
 
-namespace slamroute::simulate {
+namespace slamroute {
 namespace fs = std::filesystem;
 namespace {
 
@@ -77,4 +77,4 @@ void StagingDir::commit() {
   committed_ = true;
 }
 
-}  // namespace slamroute::simulate
+}  // namespace slamroute

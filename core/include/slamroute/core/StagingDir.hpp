@@ -1,12 +1,13 @@
 #pragma once
 // A result folder built in a hidden temporary folder beside its target and moved into place by
-// commit(); destroyed without commit(), the temporary folder is removed. Used by drive and survey
-// so that a failed run leaves nothing half-written. A temporary folder of a process that was
-// killed (it cannot remove its own) is removed by the next StagingDir for the same target.
+// commit(); destroyed without commit(), the temporary folder is removed. Used by drive, survey
+// and evaluate so that a failed run leaves nothing half-written. A temporary folder of a process
+// that was killed (it cannot remove its own) is removed by the next StagingDir for the same
+// target.
 #include <filesystem>
 #include <string>
 
-namespace slamroute::simulate {
+namespace slamroute {
 
 class StagingDir {
  public:
@@ -28,4 +29,4 @@ class StagingDir {
   bool committed_ = false;
 };
 
-}  // namespace slamroute::simulate
+}  // namespace slamroute
