@@ -70,7 +70,9 @@ std::uint64_t folderHash(const fs::path& dir) {
 }
 
 std::string stepStamp(const Step& s) {
-  std::string out = std::string("slamroute ") + SLAMROUTE_VERSION + "\n";
+  // The running program's own bytes: a rebuilt or upgraded slamroute may make other results.
+  static const std::string program = hex(fileHash("/proc/self/exe"));
+  std::string out = std::string("slamroute ") + SLAMROUTE_VERSION + "\nprogram " + program + "\n";
   for (std::size_t i = 0; i < s.args.size(); ++i) {
     const std::string& a = s.args[i];
     if ((a == "--log-level" || a == "--out") && i + 1 < s.args.size()) {

@@ -21,7 +21,8 @@ std::uint64_t fileHash(const std::filesystem::path& file);
 /// Hash of a folder: every regular file under it, by relative path, size and content.
 std::uint64_t folderHash(const std::filesystem::path& dir);
 
-/// What a step is run from, as text: slamroute's version and its arguments, where an existing
+/// What a step is run from, as text: slamroute's version, a hash of the running program (a
+/// rebuilt or upgraded binary runs every step again) and its arguments, where an existing
 /// file or folder given by its absolute path stands as the hash of its content, and the values
 /// of --out (the step's own output) and --log-level are left out.
 std::string stepStamp(const Step& s);

@@ -2,6 +2,7 @@
 #include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -71,6 +72,10 @@ TEST(Resume, StampChangesWithArgumentsAndInputsButNotWithTheOutputOrLogLevel) {
   put(dir / "eval" / "metrics.json", "{}");
   const std::string s0 = stepStamp(evaluateStep(dir, "42", "info"));
   EXPECT_NE(s0.find("slamroute "), std::string::npos);
+  char program[40];  // the running program's content hash: another binary would run it again
+  std::snprintf(program, sizeof program, "\nprogram %016llx\n",
+                static_cast<unsigned long long>(fileHash("/proc/self/exe")));
+  EXPECT_NE(s0.find(program), std::string::npos) << s0;
   EXPECT_EQ(s0, stepStamp(evaluateStep(dir, "42", "debug")));
   put(dir / "eval" / "metrics.json", "{\"ate_rmse_m\": 1}");  // the step's own output
   EXPECT_EQ(s0, stepStamp(evaluateStep(dir, "42", "info")));
