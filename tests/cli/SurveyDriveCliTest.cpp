@@ -24,6 +24,15 @@ fs::path writeRoute(const fs::path& dir, const std::string& name, const std::str
   return p;
 }
 
+/// Drives two streets of the 3x3 grid into DIR/drive (no mesh); false when the drive fails.
+bool shortDrive(const fs::path& dir) {
+  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11"])");
+  const auto d = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
+                              (dir / "drive").string() + " --no-mesh --log-level warn");
+  EXPECT_EQ(d.code, 0) << d.out;
+  return d.code == 0;
+}
+
 /// The command fails with one line naming `fragment`, and `dir` holds nothing but `keep`.
 void expectCleanFailure(const std::string& args, const std::string& fragment, const fs::path& dir,
                         std::size_t keep) {
@@ -60,10 +69,7 @@ TEST(SurveyDriveCli, DriveWritesTheDriveFolder) {
 
 TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
   const auto dir = test::cliTempDir("evaluate_bad_spec");
-  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11"])");
-  const auto d = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
-                              (dir / "drive").string() + " --no-mesh --log-level warn");
-  ASSERT_EQ(d.code, 0) << d.out;
+  ASSERT_TRUE(shortDrive(dir));
   std::ofstream(dir / "drive/odometry.yaml") << "gyro_noise_deg_s: -0.1\n";
   const auto r = test::runCli("--log-level warn evaluate --drive " + (dir / "drive").string() + " --out " +
                               (dir / "eval").string());
@@ -78,10 +84,7 @@ TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
   // fails the evaluation, which then leaves no output folder, keeps an earlier evaluation in the
   // same folder whole, and never writes into a folder that holds something else.
   const auto dir = test::cliTempDir("evaluate_late_failure");
-  const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11"])");
-  const auto d = test::runCli("drive --net " + kGrid + " --route " + route.string() + " --out " +
-                              (dir / "drive").string() + " --no-mesh --log-level warn");
-  ASSERT_EQ(d.code, 0) << d.out;
+  ASSERT_TRUE(shortDrive(dir));
   auto evaluate = [&](const std::string& out) {
     return test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
                         " --out " + (dir / out).string());
