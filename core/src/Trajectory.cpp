@@ -47,6 +47,13 @@ std::vector<std::vector<double>> readRows(const std::filesystem::path& path) {
 
 }  // namespace
 
+double pathLength(const Trajectory& traj) {
+  double m = 0.0;
+  for (std::size_t i = 1; i < traj.size(); ++i)
+    m += (traj[i].T_world_body.translation() - traj[i - 1].T_world_body.translation()).norm();
+  return m;
+}
+
 Trajectory readTum(const std::filesystem::path& path) {
   Trajectory traj;
   for (const auto& r : readRows(path)) {

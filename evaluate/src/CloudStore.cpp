@@ -25,6 +25,27 @@ int openUnnamed(const std::filesystem::path& dir) {
   return fd;
 }
 
+/// pwrite (`write`) or pread of `bytes` at `offset`, retried until all are through. Throws
+/// std::runtime_error naming `dir` on an error or a short file.
+void transfer(int fd, void* data, std::size_t bytes, std::uint64_t offset, bool write,
+              const std::filesystem::path& dir) {
+  char* p = static_cast<char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = write ? ::pwrite(fd, p, bytes, static_cast<off_t>(offset))
+                            : ::pread(fd, p, bytes, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = n < 0 ? std::strerror(errno) : write ? std::strerror(ENOSPC) : "file too short";
+      throw std::runtime_error(dir.string() +
+                               (write ? ": cannot write the keyframe clouds (" : ": cannot read the keyframe clouds back (") +
+                               why + ")");
+    }
+    p += n;
+    offset += static_cast<std::uint64_t>(n);
+    bytes -= static_cast<std::size_t>(n);
+  }
+}
+
 }  // namespace
 
 CloudStore::CloudStore(const std::filesystem::path& dir) : dir_(dir) {
@@ -45,20 +66,9 @@ int CloudStore::add(const Cloud& c) {
   if (fd_ < 0) {
     memory_.push_back(c);
   } else {
-    const char* p = reinterpret_cast<const char*>(c.data());
-    std::size_t left = c.size() * sizeof(Eigen::Vector3f);
-    std::uint64_t at = end_;
-    while (left > 0) {
-      const ssize_t n = ::pwrite(fd_, p, left, static_cast<off_t>(at));
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0)
-        throw std::runtime_error(dir_.string() + ": cannot write the keyframe clouds (" +
-                                 std::strerror(n < 0 ? errno : ENOSPC) + ")");
-      p += n;
-      at += static_cast<std::uint64_t>(n);
-      left -= static_cast<std::size_t>(n);
-    }
-    end_ = at;
+    // pwrite does not change the cloud; transfer takes one pointer type for both directions.
+    transfer(fd_, const_cast<Eigen::Vector3f*>(c.data()), c.size() * sizeof(Eigen::Vector3f), end_, true, dir_);
+    end_ += c.size() * sizeof(Eigen::Vector3f);
   }
   index_.push_back(e);
   return static_cast<int>(index_.size()) - 1;
@@ -69,19 +79,7 @@ Cloud CloudStore::get(int id) const {
   if (id < 0 || k >= index_.size()) throw std::out_of_range("CloudStore: no cloud " + std::to_string(id));
   if (fd_ < 0) return memory_[k];
   Cloud c(index_[k].points);
-  char* p = reinterpret_cast<char*>(c.data());
-  std::size_t left = c.size() * sizeof(Eigen::Vector3f);
-  std::uint64_t at = index_[k].offset;
-  while (left > 0) {
-    const ssize_t n = ::pread(fd_, p, left, static_cast<off_t>(at));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0)
-      throw std::runtime_error(dir_.string() + ": cannot read the keyframe clouds back (" +
-                               (n < 0 ? std::strerror(errno) : "file too short") + ")");
-    p += n;
-    at += static_cast<std::uint64_t>(n);
-    left -= static_cast<std::size_t>(n);
-  }
+  transfer(fd_, c.data(), c.size() * sizeof(Eigen::Vector3f), index_[k].offset, false, dir_);
   return c;
 }
 

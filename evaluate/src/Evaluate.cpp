@@ -186,6 +186,22 @@ double evaluationDiskGb(double route_km, const Config& cfg) {
   return std::max(0.0, route_km) * (0.0066 + (cfg.keyframe_clouds_on_disk ? 0.023 : 0.0)) * 1.1;
 }
 
+namespace {
+
+/// Warns when `dir` (the staging folder of `out`) has less free disk than evaluationDiskGb.
+void warnIfShortOfDisk(const fs::path& dir, const fs::path& out, double km, const Config& cfg) {
+  const double need = evaluationDiskGb(km, cfg);
+  std::error_code ec;
+  const fs::space_info sp = fs::space(dir, ec);
+  if (ec || static_cast<double>(sp.available) >= need * 1e9) return;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "evaluate: %s has %.2f GB free; a %.1f km drive needs ~%.2f GB there", out.c_str(),
+                static_cast<double>(sp.available) / 1e9, km, need);
+  logWarn(std::string(buf) + " (map.pcd" + (cfg.keyframe_clouds_on_disk ? ", the keyframe clouds while the SLAM runs)" : ")"));
+}
+
+}  // namespace
+
 nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans, const fs::path& out,
                              const Config& cfg, const std::map<std::string, std::string>& edge_labels) {
   // The window here; the stride (with denser sampling in turns) inside runSlam.
@@ -238,20 +254,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   // keeps an earlier evaluation's whole; a folder without metrics.json is not overwritten.
   StagingDir staging(out, "metrics.json");
   const fs::path dir = staging.path();
-  {
-    double km = 0.0;
-    for (std::size_t i = 1; i < gt.size(); ++i)
-      km += (gt[i].T_world_body.translation() - gt[i - 1].T_world_body.translation()).norm() / 1000.0;
-    const double need = evaluationDiskGb(km, slam_cfg);
-    std::error_code ec;
-    const fs::space_info sp = fs::space(dir, ec);
-    if (!ec && static_cast<double>(sp.available) < need * 1e9) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "evaluate: %s has %.2f GB free; a %.1f km drive needs ~%.2f GB there", out.c_str(),
-                    static_cast<double>(sp.available) / 1e9, km, need);
-      logWarn(std::string(buf) + " (map.pcd" + (slam_cfg.keyframe_clouds_on_disk ? ", the keyframe clouds while the SLAM runs)" : ")"));
-    }
-  }
+  warnIfShortOfDisk(dir, out, pathLength(gt) / 1000.0, slam_cfg);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry,

@@ -124,9 +124,7 @@ TrajectoryMetrics compareTrajectories(const Trajectory& est, const Trajectory& g
     m.ate.max_m = std::max(m.ate.max_m, e);
   }
   // route length from the whole ground truth, not only the associated part
-  m.route_length_m = 0;
-  for (std::size_t i = 1; i < gt.size(); ++i)
-    m.route_length_m += (gt[i].T_world_body.translation() - gt[i - 1].T_world_body.translation()).norm();
+  m.route_length_m = pathLength(gt);
   const double n = static_cast<double>(m.pairs.size());
   m.ate.rmse_m = std::sqrt(sq / n);
   m.ate.mean_m = sum / n;

@@ -30,13 +30,6 @@ std::string poseEdgesCsv(const DriveRecord& rec) {
   return os.str();
 }
 
-double pathLength(const Trajectory& traj) {
-  double len = 0.0;
-  for (std::size_t i = 1; i < traj.size(); ++i)
-    len += (traj[i].T_world_body.translation() - traj[i - 1].T_world_body.translation()).norm();
-  return len;
-}
-
 }  // namespace
 
 DriveWorldFile readDriveWorldFile(const fs::path& drive_dir) {

@@ -13,6 +13,9 @@ struct StampedPose {
 };
 using Trajectory = std::vector<StampedPose>;
 
+/// Length of the path through the trajectory's positions [m].
+double pathLength(const Trajectory& traj);
+
 /// TUM: "t tx ty tz qx qy qz qw" per line, '#' comments. Throws naming file and line.
 Trajectory readTum(const std::filesystem::path& path);
 void writeTum(const std::filesystem::path& path, const Trajectory& traj);
