@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace slamroute::evaluate {
 namespace {
@@ -28,7 +29,7 @@ int openUnnamed(const std::filesystem::path& dir) {
 /// pwrite (`write`) or pread of `bytes` at `offset`, retried until all are through. Throws
 /// std::runtime_error naming `dir` on an error or a short file.
 void transfer(int fd, void* data, std::size_t bytes, std::uint64_t offset, bool write,
-              const std::filesystem::path& dir) {
+              const std::filesystem::path& dir, const std::string& what) {
   char* p = static_cast<char*>(data);
   while (bytes > 0) {
     const ssize_t n = write ? ::pwrite(fd, p, bytes, static_cast<off_t>(offset))
@@ -36,8 +37,7 @@ void transfer(int fd, void* data, std::size_t bytes, std::uint64_t offset, bool 
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       const std::string why = n < 0 ? std::strerror(errno) : write ? std::strerror(ENOSPC) : "file too short";
-      throw std::runtime_error(dir.string() +
-                               (write ? ": cannot write the keyframe clouds (" : ": cannot read the keyframe clouds back (") +
+      throw std::runtime_error(dir.string() + (write ? ": cannot write " : ": cannot read back ") + what + " (" +
                                why + ")");
     }
     p += n;
@@ -48,11 +48,10 @@ void transfer(int fd, void* data, std::size_t bytes, std::uint64_t offset, bool 
 
 }  // namespace
 
-CloudStore::CloudStore(const std::filesystem::path& dir) : dir_(dir) {
+CloudStore::CloudStore(const std::filesystem::path& dir, std::string what) : dir_(dir), what_(std::move(what)) {
   fd_ = openUnnamed(dir);
   if (fd_ < 0)
-    throw std::runtime_error(dir.string() + ": cannot make a file for the keyframe clouds (" +
-                             std::strerror(errno) + ")");
+    throw std::runtime_error(dir.string() + ": cannot make a file for " + what_ + " (" + std::strerror(errno) + ")");
 }
 
 CloudStore::~CloudStore() {
@@ -63,23 +62,31 @@ int CloudStore::add(const Cloud& c) {
   Entry e;
   e.offset = end_;
   e.points = static_cast<std::uint32_t>(c.size());
+  for (const auto& p : c) e.box.extend(p);
   if (fd_ < 0) {
     memory_.push_back(c);
   } else {
     // pwrite does not change the cloud; transfer takes one pointer type for both directions.
-    transfer(fd_, const_cast<Eigen::Vector3f*>(c.data()), c.size() * sizeof(Eigen::Vector3f), end_, true, dir_);
+    transfer(fd_, const_cast<Eigen::Vector3f*>(c.data()), c.size() * sizeof(Eigen::Vector3f), end_, true, dir_, what_);
     end_ += c.size() * sizeof(Eigen::Vector3f);
   }
   index_.push_back(e);
   return static_cast<int>(index_.size()) - 1;
 }
 
-Cloud CloudStore::get(int id) const {
+const CloudStore::Entry& CloudStore::entry(int id) const {
   const auto k = static_cast<std::size_t>(id);
   if (id < 0 || k >= index_.size()) throw std::out_of_range("CloudStore: no cloud " + std::to_string(id));
-  if (fd_ < 0) return memory_[k];
-  Cloud c(index_[k].points);
-  transfer(fd_, c.data(), c.size() * sizeof(Eigen::Vector3f), index_[k].offset, false, dir_);
+  return index_[k];
+}
+
+const Eigen::AlignedBox3f& CloudStore::box(int id) const { return entry(id).box; }
+
+Cloud CloudStore::get(int id) const {
+  const Entry& e = entry(id);
+  if (fd_ < 0) return memory_[static_cast<std::size_t>(id)];
+  Cloud c(e.points);
+  transfer(fd_, c.data(), c.size() * sizeof(Eigen::Vector3f), e.offset, false, dir_, what_);
   return c;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "slamroute/core/AtomicFile.hpp"
@@ -17,6 +18,7 @@
 #include "slamroute/core/OdometrySpec.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
+#include "slamroute/evaluate/MapTiles.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/StridedScanSource.hpp"
@@ -35,6 +37,30 @@ struct LenientLoader {
 };
 
 double nanToNull(double v) { return v; }  // nlohmann writes NaN as null
+
+/// The SLAM's map as it comes, tile by tile: into map.pcd and, with a world mesh, into the map
+/// accuracy, so the whole map is never held in memory (MapTiles.hpp).
+class MapOutput : public MapSink {
+ public:
+  MapOutput(const fs::path& pcd, const Mesh* mesh, double max_m) : pcd_(pcd), mesh_(mesh), max_m_(max_m) {}
+  void begin(const Eigen::AlignedBox3f& bounds) override {
+    if (mesh_) meter_.emplace(*mesh_, max_m_, bounds);
+  }
+  void add(const Cloud& part) override {
+    pcd_.add(part);
+    if (meter_) meter_->add(part);
+  }
+  /// Writes map.pcd.
+  void commit() { pcd_.commit(); }
+  /// The map's accuracy (none without a mesh).
+  std::optional<MapAccuracy> accuracy() { return meter_ ? std::optional(meter_->result()) : std::nullopt; }
+
+ private:
+  PcdWriter pcd_;
+  const Mesh* mesh_;
+  double max_m_;
+  std::optional<MapAccuracyMeter> meter_;
+};
 
 /// coverage_edge_pct: visited passenger edges / passenger edges of the net named in world.yaml.
 void addCoverage(const fs::path& drive, const std::vector<PoseEdge>& pose_edges, nlohmann::json& j) {
@@ -182,8 +208,11 @@ nlohmann::json reliabilityJson(const SlamResult& r) {
 
 double evaluationDiskGb(double route_km, const Config& cfg) {
   // Measured: Ingolstadt postman 74.5 km, map.pcd 488 MB and ~1.7 GB of clouds (36,479
-  // keyframes); default city 14.9 km, 275 MB of clouds.
-  return std::max(0.0, route_km) * (0.0066 + (cfg.keyframe_clouds_on_disk ? 0.023 : 0.0)) * 1.1;
+  // keyframes); default city 14.9 km, 275 MB of clouds. The map's tiles wait in a file of
+  // map.pcd's size until map.pcd is written (PcdWriter), by when the clouds' file is gone: the
+  // peak is the clouds + the map, or twice the map with the clouds in memory.
+  const double map = 0.0066, clouds = 0.023;
+  return std::max(0.0, route_km) * (cfg.keyframe_clouds_on_disk ? clouds + map : 2 * map) * 1.1;
 }
 
 namespace {
@@ -248,6 +277,12 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
               (drive / drive_files::kOdometrySpec).string());
   }
 
+  // The world mesh (map accuracy), read before the SLAM so that a bad one fails at once.
+  const fs::path mesh_path = drive / drive_files::kWorldMesh;
+  std::optional<Mesh> mesh;
+  if (fs::exists(mesh_path)) mesh = readPly(mesh_path);
+  if (!(cfg.map_tile_m > 0)) throw std::invalid_argument("evaluate.map_tile_m must be positive");
+
   // Only now that every input file has been read: a bad one leaves no output folder behind. The
   // outputs are made in a staging folder beside `out` and replace it at the end, so a failed
   // evaluation (a bad pose_edges.csv read after the SLAM, a full disk) leaves no half set and
@@ -255,13 +290,14 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   StagingDir staging(out, "metrics.json");
   const fs::path dir = staging.path();
   warnIfShortOfDisk(dir, out, pathLength(gt) / 1000.0, slam_cfg);
+  MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, cfg.map_accuracy_max_m);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry,
-                            slam_cfg.keyframe_clouds_on_disk ? dir : fs::path{});
+                            slam_cfg.keyframe_clouds_on_disk ? dir : fs::path{}, &map);
   progress.finish();
   writeTum(dir / "estimate.tum", slam.trajectory);
-  writePcd(dir / "map.pcd", slam.map);
+  map.commit();
 
   const TrajectoryMetrics m = compareTrajectories(slam.trajectory, gt, metricsOptions(cfg));
   nlohmann::json j = trajectoryJson(m);
@@ -301,12 +337,11 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   addCoverage(drive, pose_edges, j);
 
   // map accuracy against the world mesh
-  const fs::path mesh_path = drive / drive_files::kWorldMesh;
-  j["map_points"] = slam.map.size();
+  j["map_points"] = slam.map_points;
   j["map_mean_dist_m"] = nullptr;
   j["map_p95_dist_m"] = nullptr;
-  if (fs::exists(mesh_path)) {
-    const MapAccuracy acc = mapAccuracy(slam.map, readPly(mesh_path), cfg.map_accuracy_max_m);
+  if (const std::optional<MapAccuracy> accuracy = map.accuracy()) {
+    const MapAccuracy& acc = *accuracy;
     j["map_mean_dist_m"] = acc.mean_m;
     j["map_median_dist_m"] = acc.median_m;
     j["map_p95_dist_m"] = acc.p95_m;

@@ -129,7 +129,7 @@ namespace {
 /// The voxel of a point: 21 bits per axis (+-2^20 voxels around the origin).
 std::uint64_t voxelKey(const Eigen::Vector3f& p, float inv) {
   const auto q = [&](float v) {
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv)) + (1 << 20)) & 0x1FFFFF;
+    return static_cast<std::uint64_t>(voxelIndex(v, inv) + (1 << 20)) & 0x1FFFFF;
   };
   return (q(p.x()) << 42) | (q(p.y()) << 21) | q(p.z());
 }
@@ -144,6 +144,15 @@ std::vector<std::pair<std::uint64_t, std::uint32_t>> sortedKeys(const Cloud& in,
 }
 
 }  // namespace
+
+Cloud transformed(const Cloud& c, const Pose3& T) {
+  const Eigen::Matrix3f R = T.rotation().cast<float>();
+  const Eigen::Vector3f t = T.translation().cast<float>();
+  Cloud out;
+  out.reserve(c.size());
+  for (const auto& p : c) out.push_back(R * p + t);
+  return out;
+}
 
 Cloud voxelFilter(const Cloud& in, double voxel_m) {
   if (voxel_m <= 0.0 || in.empty()) return in;

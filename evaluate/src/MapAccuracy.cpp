@@ -160,70 +160,101 @@ Mesh readPly(const std::filesystem::path& path) {
   return mesh;
 }
 
-MapAccuracy mapAccuracy(const Cloud& map, const Mesh& mesh, double max_m) {
-  MapAccuracy out;
-  out.points = static_cast<int>(map.size());
-  if (map.empty()) return out;
-  if (max_m <= 0) throw std::invalid_argument("mapAccuracy: max distance must be positive");
-  // Grid over the map's xy bounding box (+ one cell); triangles are binned by their xy bbox.
-  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
-  for (const auto& p : map) {
-    lo = lo.cwiseMin(p.head<2>().cast<double>());
-    hi = hi.cwiseMax(p.head<2>().cast<double>());
-  }
+MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::AlignedBox3f& bounds)
+    : mesh_(mesh), max_m_(max_m) {
+  if (!(max_m > 0)) throw std::invalid_argument("mapAccuracy: max distance must be positive");
+  if (bounds.isEmpty()) return;
+  // Grid over the bounds' xy (+ one cell); triangles are binned by their xy bbox (counted, then
+  // placed: one index array, not a list per cell).
   const double cell = max_m;
-  lo.array() -= cell;
-  hi.array() += cell;
-  const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / cell)) + 1;
-  const int ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / cell)) + 1;
-  if (static_cast<double>(nx) * ny > 5e7) throw std::invalid_argument("mapAccuracy: map too large for the grid");
-  std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    Eigen::Vector2d a(1e300, 1e300), b(-1e300, -1e300);
-    for (int k : mesh.faces[f]) {
-      a = a.cwiseMin(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
-      b = b.cwiseMax(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+  lo_ = bounds.min().head<2>().cast<double>().array() - cell;
+  const Eigen::Vector2d hi = bounds.max().head<2>().cast<double>().array() + cell;
+  nx_ = static_cast<int>(std::ceil((hi.x() - lo_.x()) / cell)) + 1;
+  ny_ = static_cast<int>(std::ceil((hi.y() - lo_.y()) / cell)) + 1;
+  if (static_cast<double>(nx_) * ny_ > 5e7) throw std::invalid_argument("mapAccuracy: map too large for the grid");
+  const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  cell_start_.assign(cells + 1, 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1) {
+      for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+      cell_faces_.resize(cell_start_[cells]);
+      fill.assign(cell_start_.begin(), cell_start_.end() - 1);
     }
-    const int x0 = std::max(0, static_cast<int>(std::floor((a.x() - lo.x()) / cell)));
-    const int y0 = std::max(0, static_cast<int>(std::floor((a.y() - lo.y()) / cell)));
-    const int x1 = std::min(nx - 1, static_cast<int>(std::floor((b.x() - lo.x()) / cell)));
-    const int y1 = std::min(ny - 1, static_cast<int>(std::floor((b.y() - lo.y()) / cell)));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) grid[static_cast<std::size_t>(y) * nx + x].push_back(static_cast<int>(f));
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+      Eigen::Vector2d a(1e300, 1e300), b(-1e300, -1e300);
+      for (int k : mesh.faces[f]) {
+        a = a.cwiseMin(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+        b = b.cwiseMax(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+      }
+      const int x0 = std::max(0, static_cast<int>(std::floor((a.x() - lo_.x()) / cell)));
+      const int y0 = std::max(0, static_cast<int>(std::floor((a.y() - lo_.y()) / cell)));
+      const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((b.x() - lo_.x()) / cell)));
+      const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((b.y() - lo_.y()) / cell)));
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
+          if (pass == 0) ++cell_start_[c + 1];
+          else cell_faces_[fill[c]++] = static_cast<std::uint32_t>(f);
+        }
+    }
   }
-  std::vector<double> d;
-  d.reserve(map.size());
-  std::vector<int> seen_stamp(mesh.faces.size(), -1);
-  int clamped = 0;
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    const Eigen::Vector3d p = map[i].cast<double>();
-    const int cx = static_cast<int>(std::floor((p.x() - lo.x()) / cell));
-    const int cy = static_cast<int>(std::floor((p.y() - lo.y()) / cell));
-    double best2 = max_m * max_m;
-    for (int y = std::max(0, cy - 1); y <= std::min(ny - 1, cy + 1); ++y)
-      for (int x = std::max(0, cx - 1); x <= std::min(nx - 1, cx + 1); ++x)
-        for (int f : grid[static_cast<std::size_t>(y) * nx + x]) {
-          if (seen_stamp[static_cast<std::size_t>(f)] == static_cast<int>(i)) continue;
-          seen_stamp[static_cast<std::size_t>(f)] = static_cast<int>(i);
-          const auto& tri = mesh.faces[static_cast<std::size_t>(f)];
+  seen_.assign(mesh.faces.size(), 0);
+}
+
+void MapAccuracyMeter::add(const Cloud& part) {
+  const double cell = max_m_;
+  for (const auto& pf : part) {
+    const std::uint64_t stamp = ++counter_;
+    const Eigen::Vector3d p = pf.cast<double>();
+    const int cx = static_cast<int>(std::floor((p.x() - lo_.x()) / cell));
+    const int cy = static_cast<int>(std::floor((p.y() - lo_.y()) / cell));
+    double best2 = max_m_ * max_m_;
+    for (int y = std::max(0, cy - 1); y <= std::min(ny_ - 1, cy + 1); ++y)
+      for (int x = std::max(0, cx - 1); x <= std::min(nx_ - 1, cx + 1); ++x) {
+        const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
+        for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+          const std::uint32_t f = cell_faces_[k];
+          if (seen_[f] == stamp) continue;
+          seen_[f] = stamp;
+          const auto& tri = mesh_.faces[f];
           const Eigen::Vector3d q = closestOnTriangle(
-              p, mesh.vertices[static_cast<std::size_t>(tri[0])].cast<double>(),
-              mesh.vertices[static_cast<std::size_t>(tri[1])].cast<double>(),
-              mesh.vertices[static_cast<std::size_t>(tri[2])].cast<double>());
+              p, mesh_.vertices[static_cast<std::size_t>(tri[0])].cast<double>(),
+              mesh_.vertices[static_cast<std::size_t>(tri[1])].cast<double>(),
+              mesh_.vertices[static_cast<std::size_t>(tri[2])].cast<double>());
           best2 = std::min(best2, (q - p).squaredNorm());
         }
+      }
     const double dist = std::sqrt(best2);
-    if (dist >= max_m) ++clamped;
-    d.push_back(dist);
+    if (dist >= max_m_) ++clamped_;
+    sum_ += dist;
+    dist_.push_back(static_cast<float>(dist));
   }
-  double sum = 0;
-  for (double v : d) sum += v;
-  out.mean_m = sum / static_cast<double>(d.size());
-  std::sort(d.begin(), d.end());
-  out.median_m = d[d.size() / 2];
-  out.p95_m = d[std::min(d.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(d.size())))];
-  out.clamped_share = static_cast<double>(clamped) / static_cast<double>(d.size());
+}
+
+MapAccuracy MapAccuracyMeter::result() {
+  MapAccuracy out;
+  out.points = static_cast<int>(dist_.size());
+  if (dist_.empty()) return out;
+  const std::size_t n = dist_.size();
+  out.mean_m = sum_ / static_cast<double>(n);
+  std::vector<float>& d = dist_;  // reordered in place: any order gives the same answer
+  const std::size_t mid = n / 2, p95 = std::min(n - 1, static_cast<std::size_t>(0.95 * static_cast<double>(n)));
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(mid), d.end());
+  out.median_m = d[mid];
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(p95), d.end());
+  out.p95_m = d[p95];
+  out.clamped_share = static_cast<double>(clamped_) / static_cast<double>(n);
   return out;
+}
+
+MapAccuracy mapAccuracy(const Cloud& map, const Mesh& mesh, double max_m) {
+  if (map.empty()) return {};
+  Eigen::AlignedBox3f bounds;
+  for (const auto& p : map) bounds.extend(p);
+  MapAccuracyMeter meter(mesh, max_m, bounds);
+  meter.add(map);
+  return meter.result();
 }
 
 }  // namespace slamroute::evaluate

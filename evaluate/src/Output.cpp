@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "slamroute/core/AtomicFile.hpp"
 
@@ -29,19 +30,52 @@ std::string fmt(double v, int prec = 2) {
 
 }  // namespace
 
-void writePcd(const std::filesystem::path& path, const Cloud& cloud) {
+namespace {
+
+std::string pcdHeader(std::size_t points) {
   std::ostringstream os;
   os << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\n"
-     << "TYPE F F F\nCOUNT 1 1 1\nWIDTH " << cloud.size() << "\nHEIGHT 1\n"
-     << "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << cloud.size() << "\nDATA binary\n";
-  std::string s = os.str();
-  const std::size_t off = s.size();
-  s.resize(off + cloud.size() * 12);
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const float v[3] = {cloud[i].x(), cloud[i].y(), cloud[i].z()};
-    std::memcpy(s.data() + off + i * 12, v, 12);
+     << "TYPE F F F\nCOUNT 1 1 1\nWIDTH " << points << "\nHEIGHT 1\n"
+     << "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << points << "\nDATA binary\n";
+  return os.str();
+}
+
+static_assert(sizeof(Eigen::Vector3f) == 12, "PCD points are written as packed xyz floats");
+
+void writePoints(std::ofstream& out, const Cloud& c) {
+  out.write(reinterpret_cast<const char*>(c.data()), static_cast<std::streamsize>(c.size() * sizeof(Eigen::Vector3f)));
+}
+
+std::filesystem::path folderOf(const std::filesystem::path& path) {
+  return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+}
+
+}  // namespace
+
+void writePcd(const std::filesystem::path& path, const Cloud& cloud) {
+  AtomicOutput out(path, true);
+  out.stream() << pcdHeader(cloud.size());
+  writePoints(out.stream(), cloud);
+  out.commit();
+}
+
+PcdWriter::PcdWriter(std::filesystem::path path)
+    : path_(std::move(path)), parts_(folderOf(path_), "the map's points for " + path_.filename().string()) {}
+
+void PcdWriter::add(const Cloud& part) {
+  if (part.empty()) return;
+  parts_.add(part);
+  points_ += part.size();
+}
+
+void PcdWriter::commit() {
+  AtomicOutput out(path_, true);
+  out.stream() << pcdHeader(points_);
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    writePoints(out.stream(), parts_.get(static_cast<int>(i)));
+    parts_.release(static_cast<int>(i));
   }
-  writeFileAtomic(path, s);
+  out.commit();
 }
 
 void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, int size_px) {

@@ -4,10 +4,12 @@
 #include <ctime>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
 #include "slamroute/evaluate/CloudStore.hpp"
+#include "slamroute/evaluate/MapTiles.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/PoseGraph.hpp"
 #include "slamroute/evaluate/RangeImage.hpp"
@@ -26,15 +28,6 @@ struct Clock {
   }
 };
 double since(double t0) { return Clock::now() - t0; }
-
-Cloud transformed(const Cloud& c, const Pose3& T) {
-  const Eigen::Matrix3f R = T.rotation().cast<float>();
-  const Eigen::Vector3f t = T.translation().cast<float>();
-  Cloud out;
-  out.reserve(c.size());
-  for (const auto& p : c) out.push_back(R * p + t);
-  return out;
-}
 
 /// Keeps at most `max_n` points, evenly strided (the input is voxel-sorted, so this thins space
 /// uniformly).
@@ -84,6 +77,7 @@ struct LidarSlam::Impl {
   std::vector<FrameRecord> frames;
   std::vector<Keyframe> kfs;
   std::unique_ptr<CloudStore> clouds = std::make_unique<CloudStore>();  ///< the keyframes' clouds
+  MapSink* map_sink = nullptr;  ///< where finish() puts the map (none: SlamResult::map)
   std::vector<PoseGraphEdge> odom_edges, loop_edges;
   std::vector<LoopClosure> loops;
   int loop_candidates = 0;
@@ -550,14 +544,21 @@ struct LidarSlam::Impl {
       out.status.push_back(r.status);
       out.min_eig.push_back(r.min_eig);
     }
-    // The map: every keyframe's cloud at its optimised pose, voxel-filtered as the clouds come
-    // (each keyframe's cloud is freed once merged; the run is over).
-    VoxelMerger map(cfg.map_voxel_m);
-    for (auto& kf : kfs) {
-      map.add(transformed(clouds->get(kf.cloud), kf.T_world));
-      clouds->release(kf.cloud);
-    }
-    out.map = map.finish();
+    // The map: every keyframe's cloud at its optimised pose, voxel-filtered tile by tile into the
+    // sink (each keyframe's cloud is freed after its last tile; the run is over).
+    std::vector<MapKeyframe> map_kfs;
+    map_kfs.reserve(kfs.size());
+    for (const auto& kf : kfs) map_kfs.push_back({kf.cloud, kf.T_world});
+    CollectedMap collected;
+    MapSink& sink = map_sink ? *map_sink : collected;
+    std::optional<Progress> progress;  // the tiles are counted inside
+    out.map_points = buildMapByTiles(*clouds, map_kfs, cfg.map_voxel_m, cfg.map_tile_m, sink,
+                                     [&](std::size_t done, std::size_t total) {
+                                       if (!progress) progress.emplace("SLAM: map tiles", total);
+                                       progress->update(done);
+                                     });
+    if (progress) progress->finish();
+    out.map = std::move(collected.map);
     if (clouds->onDisk())
       logInfo("SLAM: the keyframes' clouds took " + std::to_string(clouds->bytesOnDisk() / 1000000) +
               " MB in a temporary file (" + std::to_string(kfs.size()) + " keyframes)");
@@ -570,6 +571,8 @@ struct LidarSlam::Impl {
     return out;
   }
 };
+
+void LidarSlam::setMapSink(MapSink& sink) { impl_->map_sink = &sink; }
 
 void LidarSlam::keepCloudsOnDisk(const std::filesystem::path& dir) {
   if (!impl_->kfs.empty()) throw std::logic_error("LidarSlam::keepCloudsOnDisk: call it before the first scan");
@@ -611,9 +614,10 @@ SlamResult LidarSlam::finish() { return impl_->finish(); }
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress,
                    const std::optional<Pose3>& T_first_second, const WheelOdometry* odometry,
-                   const std::filesystem::path& cloud_dir) {
+                   const std::filesystem::path& cloud_dir, MapSink* map_sink) {
   LidarSlam slam(cfg, source.spec(), T_world_first);
   if (!cloud_dir.empty()) slam.keepCloudsOnDisk(cloud_dir);
+  if (map_sink) slam.setMapSink(*map_sink);
   if (odometry && cfg.use_odometry) slam.setOdometry(*odometry);
   if (T_first_second && source.size() > 1)
     slam.setInitialMotion(*T_first_second, source.time(1) - source.time(0));

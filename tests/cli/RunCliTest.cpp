@@ -75,6 +75,14 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
         << p;
     const auto route = nlohmann::json::parse(readFile(out / "routes" / (p + ".json")));
     EXPECT_GT(route["length_m"].get<double>(), 100.0) << p;
+    // map.pcd, written tile by tile, holds the map_points that metrics.json counts, and the map
+    // accuracy measured them all.
+    const std::string pcd = readFile(out / "eval" / p / "map.pcd");
+    const auto n = m["map_points"].get<std::size_t>();
+    EXPECT_GT(n, 1000u) << p;
+    EXPECT_NE(pcd.find("\nPOINTS " + std::to_string(n) + "\nDATA binary\n"), std::string::npos) << p;
+    EXPECT_EQ(pcd.size(), pcd.find("DATA binary\n") + 12 + 12 * n) << p;
+    EXPECT_TRUE(m["map_median_dist_m"].is_number()) << p;
   }
   // The random walk is given the Q-learning route's length as its budget.
   const auto q = nlohmann::json::parse(readFile(out / "routes" / "qlearning.json"));

@@ -51,6 +51,72 @@ TEST(MapAccuracy, DistancesToAPlane) {
   EXPECT_NEAR(b.clamped_share, 0.5, 1e-12);
 }
 
+TEST(MapAccuracy, PartByPartGivesTheSameAsTheWholeMap) {
+  const fs::path p = tmpDir() / "square_parts.ply";
+  writeSquarePly(p);
+  const Mesh mesh = readPly(p);
+  Cloud map;
+  for (int i = 0; i < 300; ++i)
+    map.push_back({-12.0f + 0.08f * static_cast<float>(i), 0.05f * static_cast<float>(i % 40) - 1.0f,
+                   0.01f * static_cast<float>(i % 37) - 0.1f});
+  const MapAccuracy whole = mapAccuracy(map, mesh, 2.0);
+  Eigen::AlignedBox3f bounds;
+  for (const auto& q : map) bounds.extend(q);
+  MapAccuracyMeter meter(mesh, 2.0, bounds);
+  for (std::size_t a = 0; a < map.size(); a += 70)
+    meter.add(Cloud(map.begin() + static_cast<std::ptrdiff_t>(a),
+                    map.begin() + static_cast<std::ptrdiff_t>(std::min(map.size(), a + 70))));
+  const MapAccuracy parts = meter.result();
+  EXPECT_EQ(parts.points, 300);
+  EXPECT_NEAR(parts.mean_m, whole.mean_m, 1e-12);
+  EXPECT_EQ(parts.median_m, whole.median_m);
+  EXPECT_EQ(parts.p95_m, whole.p95_m);
+  EXPECT_EQ(parts.clamped_share, whole.clamped_share);
+  EXPECT_GT(whole.clamped_share, 0.0);  // points beyond x = 12 m are off the square
+  // A point outside the bounds the meter was made for counts as far (clamped).
+  MapAccuracyMeter small(mesh, 2.0, Eigen::AlignedBox3f(Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1)));
+  small.add({{0.0f, 0.0f, 0.5f}, {8.0f, 8.0f, 0.0f}});
+  const MapAccuracy s = small.result();
+  EXPECT_NEAR(s.mean_m, (0.5 + 2.0) / 2.0, 1e-6);
+  EXPECT_NEAR(s.clamped_share, 0.5, 1e-12);
+}
+
+TEST(Output, PcdWriterGivesTheFileWritePcdGives) {
+  const Cloud a{{1.0f, 2.0f, 3.0f}, {4.0f, 5.0f, 6.0f}}, b{{-7.5f, 8.25f, 9.0f}};
+  Cloud ab = a;
+  ab.insert(ab.end(), b.begin(), b.end());
+  const fs::path dir = tmpDir() / "pcd_writer";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  writePcd(dir / "whole.pcd", ab);
+  {
+    PcdWriter w(dir / "parts.pcd");
+    w.add(a);
+    w.add({});
+    w.add(b);
+    EXPECT_EQ(w.points(), 3u);
+    EXPECT_FALSE(fs::exists(dir / "parts.pcd"));  // only at commit
+    w.commit();
+  }
+  EXPECT_EQ(readFile(dir / "parts.pcd"), readFile(dir / "whole.pcd"));
+  {
+    PcdWriter w(dir / "empty.pcd");
+    w.commit();
+  }
+  EXPECT_NE(readFile(dir / "empty.pcd").find("POINTS 0\nDATA binary\n"), std::string::npos);
+  {
+    PcdWriter abandoned(dir / "abandoned.pcd");
+    abandoned.add(a);
+  }
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    ++files;
+    EXPECT_NE(e.path().filename(), "abandoned.pcd");
+  }
+  EXPECT_EQ(files, 3);  // whole, parts, empty: nothing half-written left
+  EXPECT_THROW(PcdWriter(dir / "no" / "such" / "folder.pcd"), std::runtime_error);
+}
+
 TEST(MapAccuracy, AsciiPlyAndBadFiles) {
   const fs::path p = tmpDir() / "tri.ply";
   std::ofstream(p) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

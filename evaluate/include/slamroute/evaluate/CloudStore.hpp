@@ -6,7 +6,9 @@
 // disappears with the process, even when it is killed).
 #include <cstddef>
 #include <cstdint>
+#include <Eigen/Geometry>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "slamroute/evaluate/Features.hpp"
@@ -18,8 +20,8 @@ class CloudStore {
   /// Clouds in memory.
   CloudStore() = default;
   /// Clouds in an unnamed file in `dir` (which must exist). Throws std::runtime_error naming the
-  /// folder when no file can be made there.
-  explicit CloudStore(const std::filesystem::path& dir);
+  /// folder when no file can be made there; `what` names the clouds in error messages.
+  explicit CloudStore(const std::filesystem::path& dir, std::string what = "the keyframe clouds");
   ~CloudStore();
   CloudStore(const CloudStore&) = delete;
   CloudStore& operator=(const CloudStore&) = delete;
@@ -29,6 +31,9 @@ class CloudStore {
   int add(const Cloud& c);
   /// The cloud stored as number `id`, bit for bit.
   Cloud get(int id) const;
+  /// The axis-aligned box around cloud `id`'s points (kept in memory: 24 bytes a cloud; an empty
+  /// cloud has an empty box), so a cloud's extent is known without reading it back.
+  const Eigen::AlignedBox3f& box(int id) const;
   /// Frees the memory of cloud `id` (in memory, get(id) is then empty; a no-op on disk).
   void release(int id);
   std::size_t size() const { return index_.size(); }
@@ -40,8 +45,11 @@ class CloudStore {
   struct Entry {
     std::uint64_t offset = 0;
     std::uint32_t points = 0;
+    Eigen::AlignedBox3f box;  ///< empty by default
   };
+  const Entry& entry(int id) const;
   std::filesystem::path dir_;
+  std::string what_ = "the keyframe clouds";
   int fd_ = -1;
   std::uint64_t end_ = 0;
   std::vector<Entry> index_;

@@ -169,6 +169,10 @@ struct Config {
   double graph_loop_sigma_rad = 0.01;   ///< loop edge sigma (rotation) [rad]
   // --- map output + accuracy ---
   double map_voxel_m = 0.2;          ///< voxel of map.pcd [m]
+  /// The map is merged and written in square tiles of this size (MapTiles.hpp), so the merge
+  /// holds one tile's voxels, not the whole map's; a keyframe's cloud (100 m range) is read once
+  /// per tile it overlaps. Same map points for any size [m].
+  double map_tile_m = 400.0;
   /// Keyframe clouds in an unnamed file in the output folder instead of memory: same results,
   /// resident memory no longer grows by ~47 kB per keyframe (bench/RESULTS.md "Memory of a SLAM
   /// run"); the file takes that much disk until the run ends.
@@ -293,6 +297,7 @@ void visitFields(V& v, Config& c) {
   v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");
   v.field("graph_loop_sigma_rad", c.graph_loop_sigma_rad, "loop edge sigma [rad]");
   v.field("map_voxel_m", c.map_voxel_m, "map.pcd voxel [m]");
+  v.field("map_tile_m", c.map_tile_m, "map merged in tiles of this size [m]");
   v.field("keyframe_clouds_on_disk", c.keyframe_clouds_on_disk, "keyframe clouds in a temporary file, not memory");
   v.field("map_accuracy_max_m", c.map_accuracy_max_m, "map distance clamp [m]");
   v.field("assoc_max_dt_s", c.assoc_max_dt_s, "timestamp association tolerance [s]");

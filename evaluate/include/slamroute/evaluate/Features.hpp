@@ -1,10 +1,12 @@
 #pragma once
 // LeGO-LOAM stage 2: edge and planar features by range curvature per ring, in sectors.
 #include <Eigen/Core>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "slamroute/core/Types.hpp"
 #include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/RangeImage.hpp"
 
@@ -24,6 +26,11 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg);
 
 /// Voxel-grid filter (centroid of each occupied voxel); voxel <= 0 returns the input.
 Cloud voxelFilter(const Cloud& in, double voxel_m);
+/// The voxel index along one axis of a coordinate `v`, `inv` = 1 / voxel size, exactly as
+/// voxelFilter and VoxelMerger bin points.
+inline std::int64_t voxelIndex(float v, float inv) { return static_cast<std::int64_t>(std::floor(v * inv)); }
+/// `c` moved by `T` (single precision, as the SLAM's clouds).
+Cloud transformed(const Cloud& c, const Pose3& T);
 
 /// voxelFilter of clouds given one at a time: finish() returns, bit for bit, voxelFilter of their
 /// concatenation, while holding only a buffer of chunk_points input points and one cell (24 bytes)

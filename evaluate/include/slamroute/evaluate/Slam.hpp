@@ -18,6 +18,8 @@
 
 namespace slamroute::evaluate {
 
+class MapSink;  // MapTiles.hpp
+
 /// Why a frame's pose is (or is not) trustworthy.
 enum class FrameStatus { Ok, Empty, Invalid, Missing, FewFeatures, Degenerate };
 const char* toString(FrameStatus s);
@@ -45,7 +47,8 @@ struct SlamResult {
   int loops_ambiguous = 0;              ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
   StageTimes times;
-  Cloud map;                            ///< world frame, voxel-filtered (cfg.map_voxel_m)
+  Cloud map;                            ///< world frame, voxel-filtered (cfg.map_voxel_m); empty when a MapSink took it
+  std::size_t map_points = 0;           ///< points of the map (also when a MapSink took it)
 };
 
 class LidarSlam {
@@ -64,6 +67,9 @@ class LidarSlam {
   /// Keeps the keyframes' clouds in an unnamed file in `dir` instead of memory (CloudStore.hpp);
   /// the results are the same bit for bit. Call before the first scan.
   void keepCloudsOnDisk(const std::filesystem::path& dir);
+  /// finish() gives the map to `sink` tile by tile (MapTiles.hpp) instead of keeping it whole in
+  /// SlamResult::map. `sink` must outlive finish().
+  void setMapSink(MapSink& sink);
   /// Processes one scan; returns its status. Never throws on bad scan content.
   FrameStatus addScan(const Scan& scan);
   /// Records a scan that could not be read (constant-velocity prediction).
@@ -90,10 +96,12 @@ class LidarSlam {
 /// vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the motion from the
 /// source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when cfg.use_odometry). `progress(done, total)` is called after each scan.
 /// A scan the source cannot produce is recorded as Missing and the run continues. `cloud_dir`:
-/// where the keyframe clouds go (LidarSlam::keepCloudsOnDisk; empty: memory).
+/// where the keyframe clouds go (LidarSlam::keepCloudsOnDisk; empty: memory). `map_sink`: where
+/// the map goes (LidarSlam::setMapSink; null: SlamResult::map).
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress = {},
                    const std::optional<Pose3>& T_first_second = std::nullopt,
-                   const WheelOdometry* odometry = nullptr, const std::filesystem::path& cloud_dir = {});
+                   const WheelOdometry* odometry = nullptr, const std::filesystem::path& cloud_dir = {},
+                   MapSink* map_sink = nullptr);
 
 }  // namespace slamroute::evaluate
