@@ -2,6 +2,8 @@
 #include "slamroute/evaluate/Output.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstring>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -26,6 +28,17 @@ std::string fmt(double v, int prec = 2) {
   os.precision(prec);
   os << v;
   return os.str();
+}
+
+/// A scale bar of a round length at the bottom left of a top view of `scale` px per m.
+void drawScaleBar(cv::Mat& img, double scale, int margin) {
+  const int S = img.rows;
+  double bar = 1.0;
+  while (bar * scale < S / 8.0) bar *= 10.0;
+  if (bar * scale > S / 3.0) bar /= 2.0;
+  const cv::Point b0(margin, S - 15), b1(margin + static_cast<int>(bar * scale), S - 15);
+  cv::line(img, b0, b1, cv::Scalar(0, 0, 0), 2);
+  cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
 }
 
 }  // namespace
@@ -78,6 +91,71 @@ void PcdWriter::commit() {
   out.commit();
 }
 
+MapErrorImage::MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px, double max_m)
+    : size_(std::max(200, size_px)), margin_(40), max_m_(max_m) {
+  if (!(max_m > 0)) throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
+  const auto pixels = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
+  sum_.assign(pixels, 0.0f);
+  count_.assign(pixels, 0);
+  if (bounds.isEmpty()) return;
+  lo_ = bounds.min().head<2>().cast<double>();
+  const Eigen::Vector2d span = bounds.max().head<2>().cast<double>() - lo_;
+  scale_ = (size_ - 2 * margin_) / std::max({span.x(), span.y(), 1.0});
+}
+
+bool MapErrorImage::pixel(double x, double y, int& col, int& row) const {
+  col = static_cast<int>(std::floor(margin_ + (x - lo_.x()) * scale_));
+  row = static_cast<int>(std::floor(size_ - margin_ - (y - lo_.y()) * scale_));
+  return scale_ > 0 && col >= 0 && row >= 0 && col < size_ && row < size_;
+}
+
+void MapErrorImage::add(const Cloud& part, const float* dist_m) {
+  for (std::size_t i = 0; i < part.size(); ++i) {
+    int c = 0, r = 0;
+    if (!pixel(part[i].x(), part[i].y(), c, r)) continue;
+    const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
+    sum_[k] += dist_m[i];
+    ++count_[k];
+  }
+}
+
+double MapErrorImage::meanAt(double x, double y) const {
+  int c = 0, r = 0;
+  if (!pixel(x, y, c, r)) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
+  return count_[k] ? sum_[k] / count_[k] : std::numeric_limits<double>::quiet_NaN();
+}
+
+void MapErrorImage::write(const std::filesystem::path& path, const std::string& title) const {
+  // Mean distance per pixel on the colour map (0 .. max_m), white where the map has no point.
+  cv::Mat level(size_, size_, CV_8UC1, cv::Scalar(0));
+  for (int r = 0; r < size_; ++r)
+    for (int c = 0; c < size_; ++c) {
+      const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
+      if (count_[k]) level.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * sum_[k] / count_[k] / max_m_);
+    }
+  cv::Mat img;
+  cv::applyColorMap(level, img, cv::COLORMAP_TURBO);
+  for (int r = 0; r < size_; ++r)
+    for (int c = 0; c < size_; ++c)
+      if (!count_[static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c)])
+        img.at<cv::Vec3b>(r, c) = cv::Vec3b(255, 255, 255);
+  cv::putText(img, title, {margin_, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
+  // colour bar, top right: 0 .. max_m
+  const int bw = 150, bh = 10, bx = size_ - margin_ - bw, by = 30;
+  cv::Mat ramp(1, bw, CV_8UC1);
+  for (int i = 0; i < bw; ++i) ramp.at<uchar>(0, i) = static_cast<uchar>(255 * i / (bw - 1));
+  cv::Mat ramp_bgr;
+  cv::applyColorMap(ramp, ramp_bgr, cv::COLORMAP_TURBO);
+  cv::resize(ramp_bgr, ramp_bgr, {bw, bh}, 0, 0, cv::INTER_NEAREST);
+  ramp_bgr.copyTo(img(cv::Rect(bx, by, bw, bh)));
+  cv::putText(img, "0 m", {bx, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
+  cv::putText(img, ">= " + fmt(max_m_, 1) + " m", {bx + bw - 55, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
+              cv::Scalar(0, 0, 0), 1);
+  if (scale_ > 0) drawScaleBar(img, scale_, margin_);
+  writePng(path, img);
+}
+
 void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, int size_px) {
   const int S = std::max(200, size_px), margin = 40;
   cv::Mat img(S, S, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -106,13 +184,7 @@ void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, 
   cv::putText(img, "ground truth", {margin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 160, 0), 1);
   cv::putText(img, "estimate (aligned), ATE RMSE " + fmt(m.ate.rmse_m, 3) + " m", {margin + 120, 20},
               cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 220), 1);
-  // scale bar
-  double bar = 1.0;
-  while (bar * scale < S / 8.0) bar *= 10.0;
-  if (bar * scale > S / 3.0) bar /= 2.0;
-  const cv::Point b0(margin, S - 15), b1(margin + static_cast<int>(bar * scale), S - 15);
-  cv::line(img, b0, b1, cv::Scalar(0, 0, 0), 2);
-  cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
+  drawScaleBar(img, scale, margin);
   writePng(path, img);
 }
 

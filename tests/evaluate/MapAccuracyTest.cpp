@@ -2,6 +2,7 @@
 #include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,34 @@ TEST(MapAccuracy, PartByPartGivesTheSameAsTheWholeMap) {
   const MapAccuracy s = small.result();
   EXPECT_NEAR(s.mean_m, (0.5 + 2.0) / 2.0, 1e-6);
   EXPECT_NEAR(s.clamped_share, 0.5, 1e-12);
+}
+
+TEST(Output, MapErrorImageShowsWhereTheMapIsOff) {
+  // West half of a 100 m square 0.1 m off, east half 1.5 m off; each pixel shows its mean.
+  const Eigen::AlignedBox3f bounds(Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(100, 100, 5));
+  MapErrorImage img(bounds, 400, 2.0);
+  Cloud west, east;
+  std::vector<float> dw, de;
+  for (int i = 0; i < 50; ++i)
+    for (int k = 0; k < 100; ++k) {
+      west.push_back({0.5f + static_cast<float>(i), 0.5f + static_cast<float>(k), 1.0f});
+      dw.push_back(0.1f);
+      east.push_back({50.5f + static_cast<float>(i), 0.5f + static_cast<float>(k), 1.0f});
+      de.push_back(k % 2 ? 1.0f : 2.0f);  // two points per pixel on average: mean 1.5
+    }
+  img.add(west, dw.data());
+  img.add(east, de.data());
+  EXPECT_NEAR(img.meanAt(20.5, 40.5), 0.1, 1e-6);
+  EXPECT_NEAR(img.meanAt(70.5, 40.5), 1.5, 0.51);
+  EXPECT_TRUE(std::isnan(img.meanAt(500.0, 40.0)));  // off the image
+  const fs::path png = tmpDir() / "map_error_top.png";
+  img.write(png, "test");
+  EXPECT_EQ(readFile(png).substr(1, 3), "PNG");
+  EXPECT_THROW(MapErrorImage(bounds, 400, 0.0), std::invalid_argument);
+  MapErrorImage empty(Eigen::AlignedBox3f(), 400, 2.0);  // no map: a blank image, no error
+  empty.add(west, dw.data());
+  EXPECT_TRUE(std::isnan(empty.meanAt(20.5, 40.5)));
+  EXPECT_NO_THROW(empty.write(tmpDir() / "empty_map.png", "no map"));
 }
 
 TEST(Output, PcdWriterGivesTheFileWritePcdGives) {

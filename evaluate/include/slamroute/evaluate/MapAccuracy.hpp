@@ -32,6 +32,8 @@ class MapAccuracyMeter {
  public:
   MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::AlignedBox3f& bounds);
   void add(const Cloud& part);
+  /// The distance of every point given so far, in the order given (until result() reorders them).
+  const std::vector<float>& distances() const { return dist_; }
   MapAccuracy result();
 
  private:

@@ -1,6 +1,10 @@
 #pragma once
 // Output files of an evaluation: the map as binary PCD and the PNG plots.
+#include <Eigen/Geometry>
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "slamroute/evaluate/CloudStore.hpp"
 #include "slamroute/evaluate/Features.hpp"
@@ -27,6 +31,30 @@ class PcdWriter {
   CloudStore parts_;
   std::size_t points_ = 0;
 };
+/// Top view of the SLAM map coloured by its points' distances to the world surface (the map
+/// accuracy), the mean per pixel: where the map is off and by how much. Fed part by part, like
+/// the map (MapTiles.hpp); holds one sum and one count per pixel.
+class MapErrorImage {
+ public:
+  /// `bounds`: a box holding the map (its xy fills the image); `max_m`: the distance clamp, the
+  /// top of the colour scale.
+  MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px, double max_m);
+  /// Points and their distances [m], one per point.
+  void add(const Cloud& part, const float* dist_m);
+  /// Mean distance of the points that fall on the pixel of world point (x, y); NaN where none.
+  double meanAt(double x, double y) const;
+  /// PNG with a colour bar and a scale bar; `title` goes on top.
+  void write(const std::filesystem::path& path, const std::string& title) const;
+
+ private:
+  bool pixel(double x, double y, int& col, int& row) const;
+  int size_ = 0, margin_ = 0;
+  double max_m_ = 0, scale_ = 0;  ///< px per m
+  Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();
+  std::vector<float> sum_;
+  std::vector<std::uint32_t> count_;
+};
+
 /// Top view: ground truth (green) and aligned estimate (red), same scale on both axes.
 void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, int size_px);
 /// ATE (after alignment) against distance travelled along the ground truth.
