@@ -47,6 +47,9 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
     if (o->to_s > 0) cfg.end_s = o->to_s;
     if (cfg.end_s > 0 && cfg.end_s <= cfg.start_s)
       throw std::invalid_argument("--to must be later than --from");
+    if (!(cfg.map_tile_m > 0))  // checked before the scans are read or made
+      throw std::invalid_argument((ctx.config_file.empty() ? std::string("config") : ctx.config_file) +
+                                  ": evaluate.map_tile_m must be positive");
     const fs::path drive(o->drive);
     if (!fs::is_directory(drive)) throw std::invalid_argument(o->drive + ": not a drive folder");
     if (!fs::exists(drive / drive_files::kGroundTruth))

@@ -79,6 +79,16 @@ TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "eval"));
 }
 
+TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
+  const auto dir = test::cliTempDir("evaluate_bad_tile");
+  const fs::path cfg = dir / "tile.yaml";
+  std::ofstream(cfg) << "evaluate:\n  map_tile_m: 0\n";
+  // The drive need not exist: the config is checked before anything is read.
+  expectCleanFailure("--config " + cfg.string() + " evaluate --drive " + (dir / "drive").string() + " --out " +
+                         (dir / "eval").string(),
+                     cfg.string() + ": evaluate.map_tile_m must be positive", dir, 1);
+}
+
 TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
   // pose_edges.csv is read after the SLAM, once estimate.tum and map.pcd are made: a bad one
   // fails the evaluation, which then leaves no output folder, keeps an earlier evaluation in the
