@@ -18,7 +18,7 @@
 #include "slamroute/core/OdometrySpec.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
-#include "slamroute/evaluate/MapTiles.hpp"
+#include "slamroute/evaluate/MapOutput.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/StridedScanSource.hpp"
@@ -37,45 +37,6 @@ struct LenientLoader {
 };
 
 double nanToNull(double v) { return v; }  // nlohmann writes NaN as null
-
-/// The SLAM's map as it comes, tile by tile: into map.pcd and, with a world mesh, into the map
-/// accuracy, so the whole map is never held in memory (MapTiles.hpp).
-class MapOutput : public MapSink {
- public:
-  MapOutput(const fs::path& pcd, const Mesh* mesh, double max_m, int image_px)
-      : pcd_(pcd), mesh_(mesh), max_m_(max_m), image_px_(image_px) {}
-  void begin(const Eigen::AlignedBox3f& bounds) override {
-    if (!mesh_) return;
-    meter_.emplace(*mesh_, max_m_, bounds);
-    image_.emplace(bounds, image_px_, max_m_);
-  }
-  void add(const Cloud& part) override {
-    pcd_.add(part);
-    if (!meter_) return;
-    const std::size_t first = meter_->distances().size();
-    meter_->add(part);
-    image_->add(part, meter_->distances().data() + first);
-  }
-  /// Writes map.pcd.
-  void commit() { pcd_.commit(); }
-  /// Writes the map's top view coloured by distance to the world surface (with a mesh only).
-  void writeImage(const fs::path& png, double median_m) const {
-    if (!image_) return;
-    char title[160];
-    std::snprintf(title, sizeof title, "SLAM map from above: distance to the world surface (median %.2f m)", median_m);
-    image_->write(png, title);
-  }
-  /// The map's accuracy (none without a mesh).
-  std::optional<MapAccuracy> accuracy() { return meter_ ? std::optional(meter_->result()) : std::nullopt; }
-
- private:
-  PcdWriter pcd_;
-  const Mesh* mesh_;
-  double max_m_;
-  int image_px_;
-  std::optional<MapAccuracyMeter> meter_;
-  std::optional<MapErrorImage> image_;
-};
 
 /// coverage_edge_pct: visited passenger edges / passenger edges of the net named in world.yaml.
 void addCoverage(const fs::path& drive, const std::vector<PoseEdge>& pose_edges, nlohmann::json& j) {
@@ -305,7 +266,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   StagingDir staging(out, "metrics.json");
   const fs::path dir = staging.path();
   warnIfShortOfDisk(dir, out, pathLength(gt) / 1000.0, slam_cfg);
-  MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, cfg.map_accuracy_max_m, cfg.plot_size_px);
+  MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, &gt, cfg.assoc_max_dt_s, cfg.map_accuracy_max_m,
+                cfg.plot_size_px);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry,
@@ -362,7 +324,14 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
     j["map_p95_dist_m"] = acc.p95_m;
     j["map_far_share"] = acc.clamped_share;
     j["map_accuracy_max_m"] = cfg.map_accuracy_max_m;  // distances are clamped here
-    map.writeImage(dir / "map_error_top.png", acc.median_m);
+    // The same after the estimate's alignment onto the ground truth (the ATE's T_gt_est): what is
+    // left is the map's own deformation, not where the run started drifting from.
+    const MapAccuracy aligned = *map.alignedAccuracy();
+    j["map_aligned_mean_dist_m"] = aligned.mean_m;
+    j["map_aligned_median_dist_m"] = aligned.median_m;
+    j["map_aligned_p95_dist_m"] = aligned.p95_m;
+    j["map_aligned_far_share"] = aligned.clamped_share;
+    map.writeImage(dir / "map_error_top.png");
   }
 
   const StageTimes& t = slam.times;

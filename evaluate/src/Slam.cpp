@@ -551,6 +551,7 @@ struct LidarSlam::Impl {
     for (const auto& kf : kfs) map_kfs.push_back({kf.cloud, kf.T_world});
     CollectedMap collected;
     MapSink& sink = map_sink ? *map_sink : collected;
+    sink.estimate(out.trajectory);
     std::optional<Progress> progress;  // the tiles are counted inside
     out.map_points = buildMapByTiles(*clouds, map_kfs, cfg.map_voxel_m, cfg.map_tile_m, sink,
                                      [&](std::size_t done, std::size_t total) {

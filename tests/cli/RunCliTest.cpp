@@ -98,9 +98,12 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   // p95 of clamped distances was always the clamp).
   const auto mq = nlohmann::json::parse(readFile(out / "eval" / "qlearning" / "metrics.json"));
   char cell[96];
-  std::snprintf(cell, sizeof cell, "| %.2f / %.1f (> 2.0 m) |", mq["map_median_dist_m"].get<double>(),
-                100.0 * mq["map_far_share"].get<double>());
+  std::snprintf(cell, sizeof cell, "| %.2f / %.1f (> 2.0 m) | %.2f / %.1f (> 2.0 m) |",
+                mq["map_median_dist_m"].get<double>(), 100.0 * mq["map_far_share"].get<double>(),
+                mq["map_aligned_median_dist_m"].get<double>(), 100.0 * mq["map_aligned_far_share"].get<double>());
   EXPECT_NE(report.find(cell), std::string::npos) << cell << "\n" << report;
+  EXPECT_TRUE(std::filesystem::exists(out / "eval" / "qlearning" / "map_error_top.png"));
+  EXPECT_NE(report.find("eval/qlearning/map_error_top.png"), std::string::npos);
 
   // --resume: every step left its stamp, so a second run keeps all eleven (survey, graph, three
   // plans, drives and SLAM runs) and only writes the report again.

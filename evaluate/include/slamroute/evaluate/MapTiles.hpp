@@ -10,6 +10,7 @@
 #include <functional>
 #include <vector>
 
+#include "slamroute/core/Trajectory.hpp"
 #include "slamroute/core/Types.hpp"
 #include "slamroute/evaluate/CloudStore.hpp"
 #include "slamroute/evaluate/Features.hpp"
@@ -20,6 +21,8 @@ namespace slamroute::evaluate {
 class MapSink {
  public:
   virtual ~MapSink() = default;
+  /// Called once before begin() with the trajectory estimate the map is built on.
+  virtual void estimate(const Trajectory& est) { (void)est; }
   /// Called once before the first part with a box that holds every map point (empty: no points).
   virtual void begin(const Eigen::AlignedBox3f& bounds) { (void)bounds; }
   virtual void add(const Cloud& part) = 0;

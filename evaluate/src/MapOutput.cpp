@@ -1,0 +1,64 @@
+#include "slamroute/evaluate/MapOutput.hpp"
+
+#include <cstdio>
+
+#include "slamroute/evaluate/Metrics.hpp"
+
+namespace slamroute::evaluate {
+
+MapOutput::MapOutput(const std::filesystem::path& pcd, const Mesh* mesh, const Trajectory* gt, double max_dt_s,
+                     double max_m, int image_px)
+    : pcd_(pcd), mesh_(mesh), gt_(gt), max_dt_s_(max_dt_s), max_m_(max_m), image_px_(image_px) {}
+
+void MapOutput::estimate(const Trajectory& est) {
+  if (!mesh_ || !gt_) return;
+  const std::vector<PosePair> pairs = associate(est, *gt_, max_dt_s_);
+  if (!pairs.empty()) T_gt_est_ = alignUmeyama(pairs);
+}
+
+void MapOutput::begin(const Eigen::AlignedBox3f& bounds) {
+  if (!mesh_) return;
+  built_.emplace(*mesh_, max_m_, bounds);
+  Eigen::AlignedBox3f moved;
+  if (!bounds.isEmpty()) {
+    const Eigen::Matrix3f R = T_gt_est_.rotation().cast<float>();
+    const Eigen::Vector3f t = T_gt_est_.translation().cast<float>();
+    for (int k = 0; k < 8; ++k) moved.extend(R * bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)) + t);
+  }
+  aligned_.emplace(*mesh_, max_m_, moved);
+  image_.emplace(moved, image_px_, max_m_);
+}
+
+void MapOutput::add(const Cloud& part) {
+  pcd_.add(part);
+  if (!built_) return;
+  built_->add(part);
+  const Cloud moved = transformed(part, T_gt_est_);
+  const std::size_t first = aligned_->distances().size();
+  aligned_->add(moved);
+  image_->add(moved, aligned_->distances().data() + first);
+}
+
+void MapOutput::commit() { pcd_.commit(); }
+
+std::optional<MapAccuracy> MapOutput::accuracy() {
+  if (!built_) return std::nullopt;
+  return built_->result();
+}
+
+std::optional<MapAccuracy> MapOutput::alignedAccuracy() {
+  if (!aligned_) return std::nullopt;
+  if (!aligned_result_) aligned_result_ = aligned_->result();
+  return aligned_result_;
+}
+
+void MapOutput::writeImage(const std::filesystem::path& png) const {
+  if (!image_) return;
+  char title[200];
+  std::snprintf(title, sizeof title,
+                "SLAM map from above, aligned like the ATE: distance to the world surface (median %.2f m)",
+                aligned_result_ ? aligned_result_->median_m : 0.0);
+  image_->write(png, title);
+}
+
+}  // namespace slamroute::evaluate
