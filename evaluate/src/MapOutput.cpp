@@ -1,5 +1,7 @@
 #include "slamroute/evaluate/MapOutput.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "slamroute/evaluate/Metrics.hpp"
@@ -26,7 +28,7 @@ void MapOutput::begin(const Eigen::AlignedBox3f& bounds) {
     for (int k = 0; k < 8; ++k) moved.extend(R * bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)) + t);
   }
   aligned_.emplace(*mesh_, max_m_, moved);
-  image_.emplace(moved, image_px_, max_m_);
+  image_.emplace(moved, image_px_);
 }
 
 void MapOutput::add(const Cloud& part) {
@@ -52,13 +54,17 @@ std::optional<MapAccuracy> MapOutput::alignedAccuracy() {
   return aligned_result_;
 }
 
-void MapOutput::writeImage(const std::filesystem::path& png) const {
+void MapOutput::writeImage(const std::filesystem::path& png) {
   if (!image_) return;
+  const MapAccuracy aligned = *alignedAccuracy();
+  // Colours up to twice the aligned p95 in 0.25 m steps (at most the clamp): a good map's
+  // centimetres and a broken one's metres both show.
+  const double top = std::min(max_m_, std::max(0.25, std::ceil(2.0 * aligned.p95_m / 0.25) * 0.25));
   char title[200];
   std::snprintf(title, sizeof title,
                 "SLAM map from above, aligned like the ATE: distance to the world surface (median %.2f m)",
-                aligned_result_ ? aligned_result_->median_m : 0.0);
-  image_->write(png, title);
+                aligned.median_m);
+  image_->write(png, title, top);
 }
 
 }  // namespace slamroute::evaluate

@@ -91,9 +91,8 @@ void PcdWriter::commit() {
   out.commit();
 }
 
-MapErrorImage::MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px, double max_m)
-    : size_(std::max(200, size_px)), margin_(40), max_m_(max_m) {
-  if (!(max_m > 0)) throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
+MapErrorImage::MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px)
+    : size_(std::max(200, size_px)), margin_(40) {
   const auto pixels = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
   sum_.assign(pixels, 0.0f);
   count_.assign(pixels, 0);
@@ -126,13 +125,14 @@ double MapErrorImage::meanAt(double x, double y) const {
   return count_[k] ? sum_[k] / count_[k] : std::numeric_limits<double>::quiet_NaN();
 }
 
-void MapErrorImage::write(const std::filesystem::path& path, const std::string& title) const {
-  // Mean distance per pixel on the colour map (0 .. max_m), white where the map has no point.
+void MapErrorImage::write(const std::filesystem::path& path, const std::string& title, double top_m) const {
+  if (!(top_m > 0)) throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
+  // Mean distance per pixel on the colour map (0 .. top_m), white where the map has no point.
   cv::Mat level(size_, size_, CV_8UC1, cv::Scalar(0));
   for (int r = 0; r < size_; ++r)
     for (int c = 0; c < size_; ++c) {
       const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
-      if (count_[k]) level.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * sum_[k] / count_[k] / max_m_);
+      if (count_[k]) level.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * sum_[k] / count_[k] / top_m);
     }
   cv::Mat img;
   cv::applyColorMap(level, img, cv::COLORMAP_TURBO);
@@ -141,7 +141,7 @@ void MapErrorImage::write(const std::filesystem::path& path, const std::string& 
       if (!count_[static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c)])
         img.at<cv::Vec3b>(r, c) = cv::Vec3b(255, 255, 255);
   cv::putText(img, title, {margin_, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
-  // colour bar, top right: 0 .. max_m
+  // colour bar, top right: 0 .. top_m
   const int bw = 150, bh = 10, bx = size_ - margin_ - bw, by = 30;
   cv::Mat ramp(1, bw, CV_8UC1);
   for (int i = 0; i < bw; ++i) ramp.at<uchar>(0, i) = static_cast<uchar>(255 * i / (bw - 1));
@@ -150,7 +150,7 @@ void MapErrorImage::write(const std::filesystem::path& path, const std::string& 
   cv::resize(ramp_bgr, ramp_bgr, {bw, bh}, 0, 0, cv::INTER_NEAREST);
   ramp_bgr.copyTo(img(cv::Rect(bx, by, bw, bh)));
   cv::putText(img, "0 m", {bx, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
-  cv::putText(img, ">= " + fmt(max_m_, 1) + " m", {bx + bw - 55, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
+  cv::putText(img, ">= " + fmt(top_m, 2) + " m", {bx + bw - 55, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
               cv::Scalar(0, 0, 0), 1);
   if (scale_ > 0) drawScaleBar(img, scale_, margin_);
   writePng(path, img);

@@ -85,7 +85,7 @@ TEST(MapAccuracy, PartByPartGivesTheSameAsTheWholeMap) {
 TEST(Output, MapErrorImageShowsWhereTheMapIsOff) {
   // West half of a 100 m square 0.1 m off, east half 1.5 m off; each pixel shows its mean.
   const Eigen::AlignedBox3f bounds(Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(100, 100, 5));
-  MapErrorImage img(bounds, 400, 2.0);
+  MapErrorImage img(bounds, 400);
   Cloud west, east;
   std::vector<float> dw, de;
   for (int i = 0; i < 50; ++i)
@@ -101,13 +101,13 @@ TEST(Output, MapErrorImageShowsWhereTheMapIsOff) {
   EXPECT_NEAR(img.meanAt(70.5, 40.5), 1.5, 0.51);
   EXPECT_TRUE(std::isnan(img.meanAt(500.0, 40.0)));  // off the image
   const fs::path png = tmpDir() / "map_error_top.png";
-  img.write(png, "test");
+  img.write(png, "test", 2.0);
   EXPECT_EQ(readFile(png).substr(1, 3), "PNG");
-  EXPECT_THROW(MapErrorImage(bounds, 400, 0.0), std::invalid_argument);
-  MapErrorImage empty(Eigen::AlignedBox3f(), 400, 2.0);  // no map: a blank image, no error
+  EXPECT_THROW(img.write(png, "test", 0.0), std::invalid_argument);
+  MapErrorImage empty(Eigen::AlignedBox3f(), 400);  // no map: a blank image, no error
   empty.add(west, dw.data());
   EXPECT_TRUE(std::isnan(empty.meanAt(20.5, 40.5)));
-  EXPECT_NO_THROW(empty.write(tmpDir() / "empty_map.png", "no map"));
+  EXPECT_NO_THROW(empty.write(tmpDir() / "empty_map.png", "no map", 1.0));
 }
 
 TEST(Output, PcdWriterGivesTheFileWritePcdGives) {

@@ -30,7 +30,7 @@ class MapOutput : public MapSink {
   std::optional<MapAccuracy> accuracy();
   std::optional<MapAccuracy> alignedAccuracy();
   /// Writes the aligned map's top view coloured by distance to the world surface (mesh only).
-  void writeImage(const std::filesystem::path& png) const;
+  void writeImage(const std::filesystem::path& png);
 
  private:
   PcdWriter pcd_;

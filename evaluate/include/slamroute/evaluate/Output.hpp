@@ -36,20 +36,20 @@ class PcdWriter {
 /// the map (MapTiles.hpp); holds one sum and one count per pixel.
 class MapErrorImage {
  public:
-  /// `bounds`: a box holding the map (its xy fills the image); `max_m`: the distance clamp, the
-  /// top of the colour scale.
-  MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px, double max_m);
+  /// `bounds`: a box holding the map (its xy fills the image).
+  MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px);
   /// Points and their distances [m], one per point.
   void add(const Cloud& part, const float* dist_m);
   /// Mean distance of the points that fall on the pixel of world point (x, y); NaN where none.
   double meanAt(double x, double y) const;
-  /// PNG with a colour bar and a scale bar; `title` goes on top.
-  void write(const std::filesystem::path& path, const std::string& title) const;
+  /// PNG with a colour bar from 0 to `top_m` (red: `top_m` and more) and a scale bar; `title`
+  /// goes on top.
+  void write(const std::filesystem::path& path, const std::string& title, double top_m) const;
 
  private:
   bool pixel(double x, double y, int& col, int& row) const;
   int size_ = 0, margin_ = 0;
-  double max_m_ = 0, scale_ = 0;  ///< px per m
+  double scale_ = 0;  ///< px per m
   Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();
   std::vector<float> sum_;
   std::vector<std::uint32_t> count_;
