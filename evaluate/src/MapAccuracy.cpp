@@ -163,6 +163,7 @@ Mesh readPly(const std::filesystem::path& path) {
 MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::AlignedBox3f& bounds)
     : mesh_(mesh), max_m_(max_m) {
   if (!(max_m > 0)) throw std::invalid_argument("mapAccuracy: max distance must be positive");
+  hist_.assign(static_cast<std::size_t>(std::ceil(max_m / kBinM)) + 1, 0);
   if (bounds.isEmpty()) return;
   // Grid over the bounds' xy (+ one cell); triangles are binned by their xy bbox (counted, then
   // placed: one index array, not a list per cell).
@@ -202,7 +203,7 @@ MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::
   seen_.assign(mesh.faces.size(), 0);
 }
 
-void MapAccuracyMeter::add(const Cloud& part) {
+void MapAccuracyMeter::add(const Cloud& part, std::vector<float>* dist_m) {
   const double cell = max_m_;
   for (const auto& pf : part) {
     const std::uint64_t stamp = ++counter_;
@@ -227,23 +228,29 @@ void MapAccuracyMeter::add(const Cloud& part) {
       }
     const double dist = std::sqrt(best2);
     if (dist >= max_m_) ++clamped_;
+    else ++hist_[std::min(hist_.size() - 1, static_cast<std::size_t>(dist / kBinM))];
     sum_ += dist;
-    dist_.push_back(static_cast<float>(dist));
+    if (dist_m) dist_m->push_back(static_cast<float>(dist));
   }
 }
 
-MapAccuracy MapAccuracyMeter::result() {
+double MapAccuracyMeter::quantile(std::uint64_t rank) const {
+  std::uint64_t below = 0;
+  for (std::size_t b = 0; b < hist_.size(); ++b) {
+    below += hist_[b];
+    if (rank < below) return std::min(max_m_, (static_cast<double>(b) + 0.5) * kBinM);
+  }
+  return max_m_;  // among the clamped points
+}
+
+MapAccuracy MapAccuracyMeter::result() const {
   MapAccuracy out;
-  out.points = static_cast<int>(dist_.size());
-  if (dist_.empty()) return out;
-  const std::size_t n = dist_.size();
+  out.points = static_cast<int>(counter_);
+  if (counter_ == 0) return out;
+  const std::uint64_t n = counter_;
   out.mean_m = sum_ / static_cast<double>(n);
-  std::vector<float>& d = dist_;  // reordered in place: any order gives the same answer
-  const std::size_t mid = n / 2, p95 = std::min(n - 1, static_cast<std::size_t>(0.95 * static_cast<double>(n)));
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(mid), d.end());
-  out.median_m = d[mid];
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(p95), d.end());
-  out.p95_m = d[p95];
+  out.median_m = quantile(n / 2);
+  out.p95_m = quantile(std::min(n - 1, static_cast<std::uint64_t>(0.95 * static_cast<double>(n))));
   out.clamped_share = static_cast<double>(clamped_) / static_cast<double>(n);
   return out;
 }

@@ -36,25 +36,24 @@ void MapOutput::add(const Cloud& part) {
   if (!built_) return;
   built_->add(part);
   const Cloud moved = transformed(part, T_gt_est_);
-  const std::size_t first = aligned_->distances().size();
-  aligned_->add(moved);
-  image_->add(moved, aligned_->distances().data() + first);
+  std::vector<float> dist;
+  aligned_->add(moved, &dist);
+  image_->add(moved, dist.data());
 }
 
 void MapOutput::commit() { pcd_.commit(); }
 
-std::optional<MapAccuracy> MapOutput::accuracy() {
+std::optional<MapAccuracy> MapOutput::accuracy() const {
   if (!built_) return std::nullopt;
   return built_->result();
 }
 
-std::optional<MapAccuracy> MapOutput::alignedAccuracy() {
+std::optional<MapAccuracy> MapOutput::alignedAccuracy() const {
   if (!aligned_) return std::nullopt;
-  if (!aligned_result_) aligned_result_ = aligned_->result();
-  return aligned_result_;
+  return aligned_->result();
 }
 
-void MapOutput::writeImage(const std::filesystem::path& png) {
+void MapOutput::writeImage(const std::filesystem::path& png) const {
   if (!image_) return;
   const MapAccuracy aligned = *alignedAccuracy();
   // Colours up to twice the aligned p95 in 0.25 m steps (at most the clamp): a good map's

@@ -59,11 +59,11 @@ TEST(MapOutput, AlignedAccuracyRemovesWhereTheEstimateStartedDrifting) {
   out.commit();
   const MapAccuracy built = *out.accuracy(), aligned = *out.alignedAccuracy();
   EXPECT_EQ(built.points, 2500);
-  EXPECT_NEAR(built.median_m, 0.5, 1e-6);
+  EXPECT_NEAR(built.median_m, 0.5, 1e-4);  // quantiles to a 0.1 mm bin
   EXPECT_NEAR(built.mean_m, 0.5, 1e-6);
   EXPECT_EQ(aligned.points, 2500);
-  EXPECT_NEAR(aligned.median_m, 0.0, 1e-5);
-  EXPECT_NEAR(aligned.p95_m, 0.0, 1e-5);
+  EXPECT_NEAR(aligned.median_m, 0.0, 1e-4);
+  EXPECT_NEAR(aligned.p95_m, 0.0, 1e-4);
   out.writeImage(dir / "map_error_top.png");
   EXPECT_TRUE(fs::exists(dir / "map_error_top.png"));
   EXPECT_NE(readFile(dir / "map.pcd").find("POINTS 2500\n"), std::string::npos);

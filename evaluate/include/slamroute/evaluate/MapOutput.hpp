@@ -27,10 +27,10 @@ class MapOutput : public MapSink {
   /// T_gt_est of the estimate the map was built on (identity before estimate() or without gt).
   const Pose3& alignment() const { return T_gt_est_; }
   /// The map's accuracy as built and aligned (none without a mesh).
-  std::optional<MapAccuracy> accuracy();
-  std::optional<MapAccuracy> alignedAccuracy();
+  std::optional<MapAccuracy> accuracy() const;
+  std::optional<MapAccuracy> alignedAccuracy() const;
   /// Writes the aligned map's top view coloured by distance to the world surface (mesh only).
-  void writeImage(const std::filesystem::path& png);
+  void writeImage(const std::filesystem::path& png) const;
 
  private:
   PcdWriter pcd_;
@@ -41,7 +41,6 @@ class MapOutput : public MapSink {
   Pose3 T_gt_est_ = Pose3::Identity();
   std::optional<MapAccuracyMeter> built_, aligned_;
   std::optional<MapErrorImage> image_;
-  std::optional<MapAccuracy> aligned_result_;
 };
 
 }  // namespace slamroute::evaluate
