@@ -29,7 +29,7 @@ Step childStep(const Context& ctx, const std::string& label, std::vector<std::st
 double routeLength(const fs::path& route_json) { return Route::readJson(route_json).length_m; }
 
 double slamMemoryGb(double route_km, bool clouds_on_disk) {
-  return 0.3 + (clouds_on_disk ? 0.04 : 0.075) * std::max(0.0, route_km);
+  return 0.3 + (clouds_on_disk ? 0.008 : 0.04) * std::max(0.0, route_km);
 }
 
 double availableMemoryGb() {

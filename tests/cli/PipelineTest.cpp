@@ -9,15 +9,15 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Pipeline, SlamMemoryEstimateLiesAboveTheMeasuredPeaks) {
-  // Keyframe clouds on disk (the default): default city, qlearning: peak 725,140 kB; Ingolstadt,
-  // postman: 2,762,904 kB.
-  EXPECT_GT(slamMemoryGb(14.9), 0.742);
-  EXPECT_GT(slamMemoryGb(74.5), 2.83);
-  EXPECT_LT(slamMemoryGb(74.5), 3.6);  // not so far above that it wastes the machine
-  // In memory: 1,136,460 kB and 5,424,600 kB.
-  EXPECT_GT(slamMemoryGb(14.9, false), 1.16);
-  EXPECT_GT(slamMemoryGb(74.5, false), 5.55);
-  EXPECT_LT(slamMemoryGb(74.5, false), 7.0);
+  // Keyframe clouds on disk (the default), the map merged tile by tile: default city, qlearning:
+  // peak 330,444 kB; Ingolstadt, postman: 698,780 kB.
+  EXPECT_GT(slamMemoryGb(14.9), 0.338);
+  EXPECT_GT(slamMemoryGb(74.5), 0.716);
+  EXPECT_LT(slamMemoryGb(74.5), 1.1);  // not so far above that it wastes the machine
+  // In memory: 601,096 kB and 2,496,008 kB.
+  EXPECT_GT(slamMemoryGb(14.9, false), 0.616);
+  EXPECT_GT(slamMemoryGb(74.5, false), 2.56);
+  EXPECT_LT(slamMemoryGb(74.5, false), 3.5);
   EXPECT_NEAR(slamMemoryGb(0.0), 0.3, 1e-12);
 }
 
