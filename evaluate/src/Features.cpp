@@ -154,6 +154,15 @@ Cloud transformed(const Cloud& c, const Pose3& T) {
   return out;
 }
 
+Eigen::AlignedBox3f transformedBox(const Eigen::AlignedBox3f& b, const Pose3& T) {
+  Eigen::AlignedBox3f out;
+  if (b.isEmpty()) return out;
+  Cloud corners;
+  for (int k = 0; k < 8; ++k) corners.push_back(b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)));
+  for (const auto& p : transformed(corners, T)) out.extend(p);
+  return out;
+}
+
 Cloud voxelFilter(const Cloud& in, double voxel_m) {
   if (voxel_m <= 0.0 || in.empty()) return in;
   const auto keys = sortedKeys(in, static_cast<float>(1.0 / voxel_m));

@@ -165,8 +165,7 @@ MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::
   if (!(max_m > 0)) throw std::invalid_argument("mapAccuracy: max distance must be positive");
   hist_.assign(static_cast<std::size_t>(std::ceil(max_m / kBinM)) + 1, 0);
   if (bounds.isEmpty()) return;
-  // Grid over the bounds' xy (+ one cell); triangles are binned by their xy bbox (counted, then
-  // placed: one index array, not a list per cell).
+  // Grid over the bounds' xy (+ one cell).
   const double cell = max_m;
   lo_ = bounds.min().head<2>().cast<double>().array() - cell;
   const Eigen::Vector2d hi = bounds.max().head<2>().cast<double>().array() + cell;
@@ -174,32 +173,28 @@ MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::
   ny_ = static_cast<int>(std::ceil((hi.y() - lo_.y()) / cell)) + 1;
   if (static_cast<double>(nx_) * ny_ > 5e7) throw std::invalid_argument("mapAccuracy: map too large for the grid");
   const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  // Each triangle's cells (those its xy box overlaps), counted, then placed: one index array,
+  // not a list per cell.
+  const auto forEachCell = [&](std::size_t f, auto&& fn) {
+    Eigen::Vector2d a(1e300, 1e300), b(-1e300, -1e300);
+    for (int k : mesh.faces[f]) {
+      a = a.cwiseMin(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+      b = b.cwiseMax(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
+    }
+    const int x0 = std::max(0, static_cast<int>(std::floor((a.x() - lo_.x()) / cell)));
+    const int y0 = std::max(0, static_cast<int>(std::floor((a.y() - lo_.y()) / cell)));
+    const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((b.x() - lo_.x()) / cell)));
+    const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((b.y() - lo_.y()) / cell)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) fn(static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x));
+  };
   cell_start_.assign(cells + 1, 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<std::uint32_t> fill;
-    if (pass == 1) {
-      for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-      cell_faces_.resize(cell_start_[cells]);
-      fill.assign(cell_start_.begin(), cell_start_.end() - 1);
-    }
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-      Eigen::Vector2d a(1e300, 1e300), b(-1e300, -1e300);
-      for (int k : mesh.faces[f]) {
-        a = a.cwiseMin(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
-        b = b.cwiseMax(mesh.vertices[static_cast<std::size_t>(k)].head<2>().cast<double>());
-      }
-      const int x0 = std::max(0, static_cast<int>(std::floor((a.x() - lo_.x()) / cell)));
-      const int y0 = std::max(0, static_cast<int>(std::floor((a.y() - lo_.y()) / cell)));
-      const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((b.x() - lo_.x()) / cell)));
-      const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((b.y() - lo_.y()) / cell)));
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
-          if (pass == 0) ++cell_start_[c + 1];
-          else cell_faces_[fill[c]++] = static_cast<std::uint32_t>(f);
-        }
-    }
-  }
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) forEachCell(f, [&](std::size_t c) { ++cell_start_[c + 1]; });
+  for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_faces_.resize(cell_start_[cells]);
+  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    forEachCell(f, [&](std::size_t c) { cell_faces_[fill[c]++] = static_cast<std::uint32_t>(f); });
   seen_.assign(mesh.faces.size(), 0);
 }
 

@@ -21,12 +21,7 @@ void MapOutput::estimate(const Trajectory& est) {
 void MapOutput::begin(const Eigen::AlignedBox3f& bounds) {
   if (!mesh_) return;
   built_.emplace(*mesh_, max_m_, bounds);
-  Eigen::AlignedBox3f moved;
-  if (!bounds.isEmpty()) {
-    const Eigen::Matrix3f R = T_gt_est_.rotation().cast<float>();
-    const Eigen::Vector3f t = T_gt_est_.translation().cast<float>();
-    for (int k = 0; k < 8; ++k) moved.extend(R * bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)) + t);
-  }
+  const Eigen::AlignedBox3f moved = transformedBox(bounds, T_gt_est_);
   aligned_.emplace(*mesh_, max_m_, moved);
   image_.emplace(moved, image_px_);
 }

@@ -17,17 +17,6 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
   return q;
 }
 
-/// The world box of a body-frame box moved by `T`: its eight corners moved as transformed()
-/// moves points. A moved point can pass its box's moved corners only by rounding (well under a
-/// voxel), which the callers' one-voxel margin covers.
-Eigen::AlignedBox3f movedBox(const Eigen::AlignedBox3f& b, const Pose3& T) {
-  const Eigen::Matrix3f R = T.rotation().cast<float>();
-  const Eigen::Vector3f t = T.translation().cast<float>();
-  Eigen::AlignedBox3f out;
-  for (int k = 0; k < 8; ++k) out.extend(R * b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)) + t);
-  return out;
-}
-
 using Tile = std::pair<std::int64_t, std::int64_t>;  ///< (y, x) tile index: rows of tiles
 
 /// Points a tile's merger sorts at once: 48 MB of points + 64 MB of keys (the default 2^24 took
@@ -45,7 +34,7 @@ std::size_t buildMapByTiles(CloudStore& clouds, const std::vector<MapKeyframe>& 
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::AlignedBox3f& b = clouds.box(keyframes[k].cloud);
     if (b.isEmpty()) continue;
-    boxes[k] = movedBox(b, keyframes[k].T_world);
+    boxes[k] = transformedBox(b, keyframes[k].T_world);  // + rounding, covered by a voxel's margin below
     bounds.extend(boxes[k]);
   }
   if (voxel_m <= 0.0) {  // every point, keyframe by keyframe

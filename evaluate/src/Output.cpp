@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstring>
+#include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
@@ -40,10 +40,6 @@ void drawScaleBar(cv::Mat& img, double scale, int margin) {
   cv::line(img, b0, b1, cv::Scalar(0, 0, 0), 2);
   cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
 }
-
-}  // namespace
-
-namespace {
 
 std::string pcdHeader(std::size_t points) {
   std::ostringstream os;
@@ -102,6 +98,10 @@ MapErrorImage::MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px)
   scale_ = (size_ - 2 * margin_) / std::max({span.x(), span.y(), 1.0});
 }
 
+std::size_t MapErrorImage::at(int row, int col) const {
+  return static_cast<std::size_t>(row) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(col);
+}
+
 bool MapErrorImage::pixel(double x, double y, int& col, int& row) const {
   col = static_cast<int>(std::floor(margin_ + (x - lo_.x()) * scale_));
   row = static_cast<int>(std::floor(size_ - margin_ - (y - lo_.y()) * scale_));
@@ -112,34 +112,30 @@ void MapErrorImage::add(const Cloud& part, const float* dist_m) {
   for (std::size_t i = 0; i < part.size(); ++i) {
     int c = 0, r = 0;
     if (!pixel(part[i].x(), part[i].y(), c, r)) continue;
-    const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
-    sum_[k] += dist_m[i];
-    ++count_[k];
+    sum_[at(r, c)] += dist_m[i];
+    ++count_[at(r, c)];
   }
 }
 
 double MapErrorImage::meanAt(double x, double y) const {
   int c = 0, r = 0;
-  if (!pixel(x, y, c, r)) return std::numeric_limits<double>::quiet_NaN();
-  const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
-  return count_[k] ? sum_[k] / count_[k] : std::numeric_limits<double>::quiet_NaN();
+  if (!pixel(x, y, c, r) || !count_[at(r, c)]) return std::numeric_limits<double>::quiet_NaN();
+  return sum_[at(r, c)] / count_[at(r, c)];
 }
 
 void MapErrorImage::write(const std::filesystem::path& path, const std::string& title, double top_m) const {
   if (!(top_m > 0)) throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
   // Mean distance per pixel on the colour map (0 .. top_m), white where the map has no point.
-  cv::Mat level(size_, size_, CV_8UC1, cv::Scalar(0));
+  cv::Mat level(size_, size_, CV_8UC1, cv::Scalar(0)), empty(size_, size_, CV_8UC1, cv::Scalar(0));
   for (int r = 0; r < size_; ++r)
     for (int c = 0; c < size_; ++c) {
-      const std::size_t k = static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c);
+      const std::size_t k = at(r, c);
       if (count_[k]) level.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * sum_[k] / count_[k] / top_m);
+      else empty.at<uchar>(r, c) = 255;
     }
   cv::Mat img;
   cv::applyColorMap(level, img, cv::COLORMAP_TURBO);
-  for (int r = 0; r < size_; ++r)
-    for (int c = 0; c < size_; ++c)
-      if (!count_[static_cast<std::size_t>(r) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(c)])
-        img.at<cv::Vec3b>(r, c) = cv::Vec3b(255, 255, 255);
+  img.setTo(cv::Scalar(255, 255, 255), empty);
   cv::putText(img, title, {margin_, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
   // colour bar, top right: 0 .. top_m
   const int bw = 150, bh = 10, bx = size_ - margin_ - bw, by = 30;

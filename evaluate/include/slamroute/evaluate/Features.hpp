@@ -31,6 +31,9 @@ Cloud voxelFilter(const Cloud& in, double voxel_m);
 inline std::int64_t voxelIndex(float v, float inv) { return static_cast<std::int64_t>(std::floor(v * inv)); }
 /// `c` moved by `T` (single precision, as the SLAM's clouds).
 Cloud transformed(const Cloud& c, const Pose3& T);
+/// The box around `b`'s eight corners moved by `T` as transformed() moves points (empty stays
+/// empty). The points of a box moved by `T` lie in it up to float rounding.
+Eigen::AlignedBox3f transformedBox(const Eigen::AlignedBox3f& b, const Pose3& T);
 
 /// voxelFilter of clouds given one at a time: finish() returns, bit for bit, voxelFilter of their
 /// concatenation, while holding only a buffer of chunk_points input points and one cell (24 bytes)

@@ -48,6 +48,7 @@ class MapErrorImage {
 
  private:
   bool pixel(double x, double y, int& col, int& row) const;
+  std::size_t at(int row, int col) const;  ///< index of a pixel in sum_ / count_
   int size_ = 0, margin_ = 0;
   double scale_ = 0;  ///< px per m
   Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();
