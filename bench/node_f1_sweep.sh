@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # Node F1 of build-graph over survey seeds and roadgraph.nodes settings on the shared nets
-# (bench/RESULTS.md, "Node F1 over survey seeds", parameter sweep).
+# (bench/RESULTS.md, "Node F1 over survey seeds", parameter sweep) or on other nets.
 # Usage: bench/node_f1_sweep.sh [BUILD_DIR] [OUT_DIR] [SEEDS]
 # Surveys are made once (--depth-spacing 0: traces only) and reused; each setting then builds the
 # graph from all of them (~30 s per setting on 2 cores). Prints one Markdown row per setting:
-# F1 per seed and the mean, Bologna then Ingolstadt.
+# F1 per seed and the mean, per net (default: Bologna then Ingolstadt).
+# NETS="name=NET.net.xml ..." sweeps other nets instead, e.g. the held-out nets of RESULTS.md
+# "Node F1 on nets not used for tuning" (the real city nets Debian's sumo-tools ships):
+#   NETS="pasubio=/usr/share/sumo/tools/sumolib/scenario/scenarios/RealWorld/pasubio/pasubio_buslanes.net.xml
+#         braunschweig=/usr/share/sumo/tools/game/bs3d/bs.net.xml drt=/usr/share/sumo/tools/game/DRT/osm.net.xml"
+# SWEEP_ONLY=N keeps the first N settings (1: the defaults only).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"
@@ -12,10 +17,15 @@ out="${2:-/tmp/slamroute_node_f1}"
 seeds="${3:-42 7 1 2 3}"
 bin="$build/cli/slamroute"
 shared="$here/../../shared/networks"
-declare -A net=([bologna]="$shared/bologna_acosta/acosta_buslanes.net.xml"
-                [ingolstadt]="$shared/ingolstadt21/ingolstadt21.net.xml")
+declare -A net=()
+names=()
+for entry in ${NETS:-bologna=$shared/bologna_acosta/acosta_buslanes.net.xml ingolstadt=$shared/ingolstadt21/ingolstadt21.net.xml}; do
+  name="${entry%%=*}"; path="${entry#*=}"
+  [ -f "$path" ] || { echo "node_f1_sweep.sh: $path: no such net" >&2; exit 2; }
+  net[$name]="$path"; names+=("$name")
+done
 mkdir -p "$out/graphs"
-for n in bologna ingolstadt; do
+for n in "${names[@]}"; do
   for s in $seeds; do
     [ -f "$out/$n$s/traces.csv" ] ||
       "$bin" --log-level warn --seed "$s" survey --net "${net[$n]}" --out "$out/$n$s" --depth-spacing 0
@@ -50,15 +60,16 @@ cfg="$out/sweep.yaml"
 f1() {  # graph.json -> node F1
   python3 -c 'import json,sys; print("%.3f" % json.load(open(sys.argv[1]))["metadata"]["validation"]["node_f1"])' "$1"
 }
-echo "| setting | Bologna per seed ($seeds) | mean | Ingolstadt per seed | mean |"
-echo "|---|---|---|---|---|"
+header="| setting"; rule="|---"
+for n in "${names[@]}"; do header="$header | $n per seed ($seeds) | mean"; rule="$rule|---|---"; done
+echo "$header |"; echo "$rule|"
 for entry in "${settings[@]}"; do
   name="${entry%%|*}"; body="${entry#*|}"
   if [ -z "$body" ]; then echo "{}" > "$cfg"; else
     { echo "roadgraph:"; echo "  nodes:"; IFS=';' read -ra kv <<< "$body"
       for l in "${kv[@]}"; do echo "    $l"; done; } > "$cfg"; fi
   row="| $name"
-  for n in bologna ingolstadt; do
+  for n in "${names[@]}"; do
     vals=()
     for s in $seeds; do
       g="$out/graphs/$n$s.json"
