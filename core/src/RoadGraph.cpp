@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "JsonFile.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -123,12 +124,7 @@ RoadGraph RoadGraph::fromSumoNet(const SumoNet& net, bool lscc_only) {
 
 RoadGraph RoadGraph::readJson(const std::filesystem::path& path) {
   const std::string name = path.string();
-  json j;
-  try {
-    j = json::parse(readFile(path));
-  } catch (const json::parse_error& e) {
-    throw std::invalid_argument(name + ": not valid JSON (" + std::string(e.what()) + ")");
-  }
+  const json j = detail::readJsonFile(path);
   RoadGraph g;
   try {
     if (!j.is_object() || !j.contains("nodes") || !j.contains("edges"))

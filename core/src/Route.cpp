@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "JsonFile.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 
 namespace slamroute {
@@ -13,12 +14,7 @@ using nlohmann::json;
 
 Route Route::readJson(const std::filesystem::path& path) {
   const std::string name = path.string();
-  json j;
-  try {
-    j = json::parse(readFile(path));
-  } catch (const json::parse_error& e) {
-    throw std::invalid_argument(name + ": not valid JSON (" + std::string(e.what()) + ")");
-  }
+  const json j = detail::readJsonFile(path);
   Route r;
   try {
     if (j.is_array()) {  // plain list of SUMO edge ids

@@ -66,19 +66,7 @@ DepthImage DepthCamera::render(const World& world, const Pose3& T_wc,
         mask[k] = (u < W && v < H) ? -1 : 0;
         const Eigen::Vector3f d =
             R * Eigen::Vector3f(static_cast<float>((u - cxv) / f_), static_cast<float>((v - cyv) / f_), 1.0f);
-        rh.ray.org_x[k] = o.x();
-        rh.ray.org_y[k] = o.y();
-        rh.ray.org_z[k] = o.z();
-        rh.ray.dir_x[k] = d.x();
-        rh.ray.dir_y[k] = d.y();
-        rh.ray.dir_z[k] = d.z();
-        rh.ray.tnear[k] = 0.0f;
-        rh.ray.tfar[k] = maxz;
-        rh.ray.mask[k] = 0xFFFFFFFFu;
-        rh.ray.time[k] = 0.0f;
-        rh.ray.flags[k] = 0;
-        rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        detail::setRay16(rh, k, o, d, maxz);
       }
       rtcIntersect16(mask, scene, &ctx, &rh);
       for (int k = 0; k < 16; ++k) {

@@ -28,21 +28,6 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-/// Sensor pose from SUMO's vehicle state. SUMO's reference point is the middle of the front
-/// bumper on the road surface; the sensor sits mount_height_m straight above it. Yaw from the
-/// heading (SUMO angle: 0 = north, clockwise), pitch from the road's slope (positive uphill:
-/// the body x axis then points up, hence the rotation by -pitch about body y).
-Pose3 sensorPose(double x, double y, double z, double sumo_angle_deg, double slope_deg,
-                 double mount_height_m) {
-  const double yaw = (90.0 - sumo_angle_deg) * kPi / 180.0;
-  const double pitch = slope_deg * kPi / 180.0;
-  Pose3 T = Pose3::Identity();
-  T.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
-                   .toRotationMatrix();
-  T.translation() = Vec3(x, y, z + mount_height_m);
-  return T;
-}
-
 /// SUMO's vehicle angle is the lane direction at the vehicle's position; entering an internal
 /// junction lane (a U-turn at a dead end, a sharp turn) makes it jump by up to ~100 degrees
 /// within one 0.1 s step, which no real car does and which would make the simulated scans jump
@@ -210,7 +195,7 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
       if (step % steps_per_record != 0) return;
 
       const auto p = libsumo::Vehicle::getPosition3D(kMapper);
-      const Pose3 T = sensorPose(p.x, p.y, p.z, libsumo::Vehicle::getAngle(kMapper),
+      const Pose3 T = vehicleBodyPose(p.x, p.y, p.z, libsumo::Vehicle::getAngle(kMapper),
                                  libsumo::Vehicle::getSlope(kMapper), spec.mount_height_m);
       const std::string lane = libsumo::Vehicle::getLaneID(kMapper);
       PoseEdge pe;

@@ -132,19 +132,7 @@ Scan Lidar::scan(const World& world, const Pose3& T_ws, const std::vector<Vehicl
           const int rr = std::min(r, C - 1);
           dir_s[k] = Eigen::Vector3f(cos_el_[rr] * cos_az_[c], cos_el_[rr] * sin_az_[c], sin_el_[rr]);
           const Eigen::Vector3f d = R * dir_s[k];
-          rh.ray.org_x[k] = o.x();
-          rh.ray.org_y[k] = o.y();
-          rh.ray.org_z[k] = o.z();
-          rh.ray.dir_x[k] = d.x();
-          rh.ray.dir_y[k] = d.y();
-          rh.ray.dir_z[k] = d.z();
-          rh.ray.tnear[k] = 0.0f;
-          rh.ray.tfar[k] = tmax;
-          rh.ray.mask[k] = 0xFFFFFFFFu;
-          rh.ray.time[k] = 0.0f;
-          rh.ray.flags[k] = 0;
-          rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-          rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+          detail::setRay16(rh, k, o, d, tmax);
         }
         rtcIntersect16(mask, scene, &ctx, &rh);
         for (int k = 0; k < 16 && r0 + k < C; ++k) {

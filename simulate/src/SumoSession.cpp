@@ -12,6 +12,7 @@ namespace slamroute::simulate {
 namespace {
 
 std::atomic<bool> g_open{false};  // libsumo's simulation is process-global
+constexpr double kPi = 3.14159265358979323846;
 
 std::string num(double v) {
   std::ostringstream os;
@@ -97,5 +98,16 @@ void SumoSession::close() {
 }
 
 bool SumoSession::anyOpen() { return g_open.load(); }
+
+Pose3 vehicleBodyPose(double x, double y, double z, double sumo_angle_deg, double slope_deg,
+                      double height_m) {
+  const double yaw = (90.0 - sumo_angle_deg) * kPi / 180.0;
+  const double pitch = slope_deg * kPi / 180.0;
+  Pose3 T = Pose3::Identity();
+  T.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
+                   .toRotationMatrix();
+  T.translation() = Vec3(x, y, z + height_m);
+  return T;
+}
 
 }  // namespace slamroute::simulate

@@ -26,7 +26,6 @@ namespace slamroute::simulate {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kSurveyPrefix = "survey";
 
 /// GPS-like noise: per vehicle and axis a first-order Gauss-Markov process with standard
@@ -70,19 +69,6 @@ std::string fmt(double v, int decimals) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
-}
-
-/// Camera body pose: at the vehicle's reference point (front bumper), camera_height_m above
-/// the road, x along the heading, pitched with the road slope, z up.
-Pose3 cameraBodyPose(double x, double y, double z, double sumo_angle_deg, double slope_deg,
-                     double height) {
-  const double yaw = (90.0 - sumo_angle_deg) * kPi / 180.0;
-  const double pitch = slope_deg * kPi / 180.0;
-  Pose3 T = Pose3::Identity();
-  T.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
-                   .toRotationMatrix();
-  T.translation() = Vec3(x, y, z + height);
-  return T;
 }
 
 struct SurveyRecord {
@@ -172,7 +158,7 @@ SurveyRecord simulate(const SumoNet& net, const DriveGraph& dg,
         if (odometer[id] >= sc.depth_spacing_m && road[0] != ':') {
           odometer[id] = 0.0;
           rec.shots.push_back({t, id, road,
-                               cameraBodyPose(p.x, p.y, p.z, angle, libsumo::Vehicle::getSlope(id),
+                               vehicleBodyPose(p.x, p.y, p.z, angle, libsumo::Vehicle::getSlope(id),
                                               sc.camera_height_m)});
         }
       }

@@ -27,4 +27,22 @@ class EmbreeScene {
   RTCScene scene_ = nullptr;
 };
 
+/// Lane k of a packet of 16 rays: origin, direction, [0, tfar], no hit yet.
+inline void setRay16(RTCRayHit16& rh, int k, const Eigen::Vector3f& org, const Eigen::Vector3f& dir,
+                     float tfar) {
+  rh.ray.org_x[k] = org.x();
+  rh.ray.org_y[k] = org.y();
+  rh.ray.org_z[k] = org.z();
+  rh.ray.dir_x[k] = dir.x();
+  rh.ray.dir_y[k] = dir.y();
+  rh.ray.dir_z[k] = dir.z();
+  rh.ray.tnear[k] = 0.0f;
+  rh.ray.tfar[k] = tfar;
+  rh.ray.mask[k] = 0xFFFFFFFFu;
+  rh.ray.time[k] = 0.0f;
+  rh.ray.flags[k] = 0;
+  rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+}
+
 }  // namespace slamroute::simulate::detail

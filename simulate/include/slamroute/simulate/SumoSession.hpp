@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "slamroute/core/Types.hpp"
+
 namespace slamroute {
 struct SumoNet;
 }
@@ -63,6 +65,13 @@ class SumoSession {
   SumoSessionOptions opts_;
   bool open_ = false;
 };
+
+/// Pose of a body `height_m` straight above SUMO's vehicle reference point (the middle of the
+/// front bumper on the road surface) at (x, y, z): x along the heading (SUMO angle: 0 = north,
+/// clockwise), pitched with the road's slope (positive uphill: the body x axis then points up,
+/// hence the rotation by -pitch about body y), z up.
+Pose3 vehicleBodyPose(double x, double y, double z, double sumo_angle_deg, double slope_deg,
+                      double height_m);
 
 /// Background traffic from random trips, generated in C++ from a seed (deterministic; no
 /// randomTrips.py): keeps about `vehicles_per_km` vehicles per km of drivable road on the net,
