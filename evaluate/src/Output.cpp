@@ -87,15 +87,23 @@ void PcdWriter::commit() {
   out.commit();
 }
 
+TopViewFrame::TopViewFrame(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int size_px, int margin_px)
+    : scale((size_px - 2 * margin_px) / std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1.0})),
+      size(size_px),
+      centre(0.5 * (lo + hi)) {}
+
+Eigen::Vector2d TopViewFrame::pixel(double x, double y) const {
+  return {0.5 * size + (x - centre.x()) * scale, 0.5 * size - (y - centre.y()) * scale};
+}
+
 MapErrorImage::MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px)
     : size_(std::max(200, size_px)), margin_(40) {
   const auto pixels = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
   sum_.assign(pixels, 0.0f);
   count_.assign(pixels, 0);
   if (bounds.isEmpty()) return;
-  lo_ = bounds.min().head<2>().cast<double>();
-  const Eigen::Vector2d span = bounds.max().head<2>().cast<double>() - lo_;
-  scale_ = (size_ - 2 * margin_) / std::max({span.x(), span.y(), 1.0});
+  frame_ = TopViewFrame(bounds.min().head<2>().cast<double>(), bounds.max().head<2>().cast<double>(),
+                        size_, margin_);
 }
 
 std::size_t MapErrorImage::at(int row, int col) const {
@@ -103,9 +111,10 @@ std::size_t MapErrorImage::at(int row, int col) const {
 }
 
 bool MapErrorImage::pixel(double x, double y, int& col, int& row) const {
-  col = static_cast<int>(std::floor(margin_ + (x - lo_.x()) * scale_));
-  row = static_cast<int>(std::floor(size_ - margin_ - (y - lo_.y()) * scale_));
-  return scale_ > 0 && col >= 0 && row >= 0 && col < size_ && row < size_;
+  const Eigen::Vector2d p = frame_.pixel(x, y);
+  col = static_cast<int>(std::floor(p.x()));
+  row = static_cast<int>(std::floor(p.y()));
+  return frame_.scale > 0 && col >= 0 && row >= 0 && col < size_ && row < size_;
 }
 
 void MapErrorImage::add(const Cloud& part, const float* dist_m) {
@@ -148,7 +157,7 @@ void MapErrorImage::write(const std::filesystem::path& path, const std::string& 
   cv::putText(img, "0 m", {bx, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
   cv::putText(img, ">= " + fmt(top_m, 2) + " m", {bx + bw - 55, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
               cv::Scalar(0, 0, 0), 1);
-  if (scale_ > 0) drawScaleBar(img, scale_, margin_);
+  if (frame_.scale > 0) drawScaleBar(img, frame_.scale, margin_);
   writePng(path, img);
 }
 
@@ -166,11 +175,10 @@ void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, 
     }
   }
   if (gt.empty()) throw std::invalid_argument("plotTopView: empty trajectory");
-  const double span = std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1.0});
-  const double scale = (S - 2 * margin) / span;
+  const TopViewFrame frame(lo, hi, S, margin);
   auto px = [&](const Eigen::Vector2d& q) {
-    return cv::Point(static_cast<int>(margin + (q.x() - lo.x()) * scale),
-                     static_cast<int>(S - margin - (q.y() - lo.y()) * scale));
+    const Eigen::Vector2d p = frame.pixel(q.x(), q.y());
+    return cv::Point(static_cast<int>(p.x()), static_cast<int>(p.y()));
   };
   for (std::size_t i = 1; i < gt.size(); ++i) {
     cv::line(img, px(gt[i - 1]), px(gt[i]), cv::Scalar(0, 160, 0), 2, cv::LINE_AA);
@@ -180,7 +188,7 @@ void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, 
   cv::putText(img, "ground truth", {margin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 160, 0), 1);
   cv::putText(img, "estimate (aligned), ATE RMSE " + fmt(m.ate.rmse_m, 3) + " m", {margin + 120, 20},
               cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 220), 1);
-  drawScaleBar(img, scale, margin);
+  drawScaleBar(img, frame.scale, margin);
   writePng(path, img);
 }
 

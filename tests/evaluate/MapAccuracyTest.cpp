@@ -111,6 +111,21 @@ TEST(Output, MapErrorImageShowsWhereTheMapIsOff) {
   EXPECT_NO_THROW(empty.write(tmpDir() / "empty_map.png", "no map", 1.0));
 }
 
+TEST(Output, TopViewFrameCentresTheBox) {
+  // A 1000 m x 100 m box in 1000 px with 40 px margins: 0.92 px/m, the long side from margin to
+  // margin, the short side centred (not at the bottom edge).
+  const TopViewFrame f({0.0, 0.0}, {1000.0, 100.0}, 1000, 40);
+  EXPECT_DOUBLE_EQ(f.scale, 0.92);
+  EXPECT_TRUE(f.pixel(500.0, 50.0).isApprox(Eigen::Vector2d(500.0, 500.0)));
+  EXPECT_NEAR(f.pixel(0.0, 50.0).x(), 40.0, 1e-9);
+  EXPECT_NEAR(f.pixel(1000.0, 50.0).x(), 960.0, 1e-9);
+  EXPECT_NEAR(f.pixel(500.0, 0.0).y(), 546.0, 1e-9);    // south is down
+  EXPECT_NEAR(f.pixel(500.0, 100.0).y(), 454.0, 1e-9);
+  const TopViewFrame dot({5.0, 5.0}, {5.0, 5.0}, 400, 40);  // a single point: 1 m spans the image
+  EXPECT_DOUBLE_EQ(dot.scale, 320.0);
+  EXPECT_TRUE(dot.pixel(5.0, 5.0).isApprox(Eigen::Vector2d(200.0, 200.0)));
+}
+
 TEST(Output, PcdWriterGivesTheFileWritePcdGives) {
   const Cloud a{{1.0f, 2.0f, 3.0f}, {4.0f, 5.0f, 6.0f}}, b{{-7.5f, 8.25f, 9.0f}};
   Cloud ab = a;

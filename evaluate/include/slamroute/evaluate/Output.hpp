@@ -31,6 +31,17 @@ class PcdWriter {
   CloudStore parts_;
   std::size_t points_ = 0;
 };
+/// A square top view: world x/y to pixel (column, row; row 0 at the top), one scale on both
+/// axes, the box [lo, hi] centred with `margin_px` around its longer side.
+struct TopViewFrame {
+  TopViewFrame() = default;
+  TopViewFrame(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int size_px, int margin_px);
+  Eigen::Vector2d pixel(double x, double y) const;
+  double scale = 0;  ///< px per m (0: no box)
+  int size = 0;      ///< [px]
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+};
+
 /// Top view of the SLAM map coloured by its points' distances to the world surface (the map
 /// accuracy), the mean per pixel: where the map is off and by how much. Fed part by part, like
 /// the map (MapTiles.hpp); holds one sum and one count per pixel.
@@ -50,8 +61,7 @@ class MapErrorImage {
   bool pixel(double x, double y, int& col, int& row) const;
   std::size_t at(int row, int col) const;  ///< index of a pixel in sum_ / count_
   int size_ = 0, margin_ = 0;
-  double scale_ = 0;  ///< px per m
-  Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();
+  TopViewFrame frame_;
   std::vector<float> sum_;
   std::vector<std::uint32_t> count_;
 };
