@@ -29,6 +29,9 @@ def main():
         sys.exit(__doc__)
     build, surveys, name, net, seeds, out_path = sys.argv[1:]
     binary = os.path.join(build, "cli", "slamroute")
+    for path in [binary, net] + [os.path.join(surveys, f"{name}{s}", "traces.csv") for s in seeds.split()]:
+        if not os.path.isfile(path):
+            sys.exit(f"node_f1_grid.py: {path}: no such file (surveys come from bench/node_f1_sweep.sh)")
     done = set()
     if os.path.exists(out_path):
         with open(out_path) as f:
@@ -44,9 +47,11 @@ def main():
                 f.write("roadgraph:\n  nodes:\n" + "".join(f"    {k}: {v}\n" for k, v in zip(GRID, values)))
             f1 = []
             for s in seeds.split():
-                subprocess.run([binary, "--log-level", "error", "--config", cfg, "build-graph", "--survey",
-                                os.path.join(surveys, f"{name}{s}"), "--no-depth", "--net", net, "--out", graph],
-                               check=True, stdout=subprocess.DEVNULL)
+                run = subprocess.run([binary, "--log-level", "error", "--config", cfg, "build-graph", "--survey",
+                                      os.path.join(surveys, f"{name}{s}"), "--no-depth", "--net", net, "--out",
+                                      graph], stdout=subprocess.DEVNULL)
+                if run.returncode != 0:
+                    sys.exit(f"node_f1_grid.py: build-graph failed on {name}{s} with {key}")
                 with open(graph) as f:
                     f1.append(json.load(f)["metadata"]["validation"]["node_f1"])
             out.write(f"{key}\t{' '.join('%.3f' % x for x in f1)}\t{min(f1):.3f}\t{sum(f1) / len(f1):.3f}\n")

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
 
 #include "DriveInternal.hpp"
@@ -22,7 +23,6 @@ namespace slamroute::simulate {
 namespace {
 
 constexpr const char* kMapper = "mapper";
-constexpr double kPi = 3.14159265358979323846;
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
@@ -56,12 +56,12 @@ void headingsFromMotion(Trajectory& traj) {
   // kMinTurnRate while (nearly) standing. Without this the heading snapped by ~20 degrees within
   // 0.1 s when a vehicle waiting at a junction started along a differently directed internal lane.
   constexpr double kMaxCurvature = 0.5;            // [rad/m], a 2 m turning radius
-  constexpr double kMinTurnRate = 30.0 * kPi / 180.0;  // [rad/s]
+  constexpr double kMinTurnRate = 30.0 * std::numbers::pi / 180.0;  // [rad/s]
   for (std::size_t i = 1; i < n; ++i) {
     const Vec3 step = traj[i].T_world_body.translation() - traj[i - 1].T_world_body.translation();
     const double dt = std::max(0.0, traj[i].t - traj[i - 1].t);
     const double limit = std::max(kMaxCurvature * std::hypot(step.x(), step.y()), kMinTurnRate * dt);
-    const double diff = std::remainder(yaw[i] - yaw[i - 1], 2.0 * kPi);
+    const double diff = std::remainder(yaw[i] - yaw[i - 1], 2.0 * std::numbers::pi);
     yaw[i] = yaw[i - 1] + std::clamp(diff, -limit, limit);
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -92,7 +92,7 @@ std::vector<VehicleBox> trafficAround(const Vec3& sensor, double range,
                                        libsumo::VehicleType::getWidth(type),
                                        libsumo::VehicleType::getHeight(type)})
                .first;
-    const double a = libsumo::Vehicle::getAngle(id) * kPi / 180.0;
+    const double a = libsumo::Vehicle::getAngle(id) * std::numbers::pi / 180.0;
     // SUMO's position is the front bumper; the box centre is half a length behind it.
     const double cx = p.x - std::sin(a) * it->second.length / 2.0;
     const double cy = p.y - std::cos(a) * it->second.length / 2.0;

@@ -6,13 +6,13 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <sstream>
 
 namespace slamroute::simulate {
 namespace {
 
 std::atomic<bool> g_open{false};  // libsumo's simulation is process-global
-constexpr double kPi = 3.14159265358979323846;
 
 std::string num(double v) {
   std::ostringstream os;
@@ -101,8 +101,8 @@ bool SumoSession::anyOpen() { return g_open.load(); }
 
 Pose3 vehicleBodyPose(double x, double y, double z, double sumo_angle_deg, double slope_deg,
                       double height_m) {
-  const double yaw = (90.0 - sumo_angle_deg) * kPi / 180.0;
-  const double pitch = slope_deg * kPi / 180.0;
+  const double yaw = (90.0 - sumo_angle_deg) * std::numbers::pi / 180.0;
+  const double pitch = slope_deg * std::numbers::pi / 180.0;
   Pose3 T = Pose3::Identity();
   T.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
                    .toRotationMatrix();
