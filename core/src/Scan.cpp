@@ -43,7 +43,18 @@ void writeKittiScan(const std::filesystem::path& path, const Scan& scan) {
     const auto& p = scan.points[i];
     f[4 * i + 0] = p.x, f[4 * i + 1] = p.y, f[4 * i + 2] = p.z, f[4 * i + 3] = p.intensity;
   }
+  if (scan.has_point_times) {
+    std::string tbuf(scan.points.size() * sizeof(float), '\0');
+    float* ft = reinterpret_cast<float*>(tbuf.data());
+    for (std::size_t i = 0; i < scan.points.size(); ++i) ft[i] = scan.points[i].dt;
+    writeFileAtomic(kittiPointTimesPath(path), tbuf);
+  }
   writeFileAtomic(path, buf);
+}
+
+std::filesystem::path kittiPointTimesPath(const std::filesystem::path& bin_path) {
+  std::filesystem::path p = bin_path;
+  return p.replace_extension(".time");
 }
 
 Scan readKittiScan(const std::filesystem::path& path) {
@@ -55,7 +66,21 @@ Scan readKittiScan(const std::filesystem::path& path) {
   s.points.resize(n);
   const float* f = reinterpret_cast<const float*>(raw.data());
   for (std::size_t i = 0; i < n; ++i)
-    s.points[i] = {f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3], -1};
+    s.points[i] = {f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3], -1, 0.0f};
+  const std::filesystem::path tp = kittiPointTimesPath(path);
+  if (std::filesystem::exists(tp)) {
+    const std::string traw = readFile(tp);
+    if (traw.size() != n * sizeof(float))
+      throw std::runtime_error(tp.string() + ": " + std::to_string(traw.size() / sizeof(float)) +
+                               " point times for " + std::to_string(n) + " points in " +
+                               path.filename().string());
+    const float* ft = reinterpret_cast<const float*>(traw.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(ft[i])) throw std::runtime_error(tp.string() + ": point time " + std::to_string(i) + " is not finite");
+      s.points[i].dt = ft[i];
+    }
+    s.has_point_times = true;
+  }
   return s;
 }
 

@@ -34,13 +34,15 @@ void visitFields(V& v, LidarSpec& c) {
 LidarSpec lidarPreset(const std::string& name);
 
 struct ScanPoint {
-  float x = 0, y = 0, z = 0;  ///< sensor frame [m]
+  float x = 0, y = 0, z = 0;  ///< sensor frame at the point's own firing time [m]
   float intensity = 0;
   int ring = -1;              ///< -1 when unknown (e.g. read from KITTI .bin)
+  float dt = 0;               ///< firing time after Scan::t [s] (0 for an instantaneous scan)
 };
 struct Scan {
-  double t = 0.0;
+  double t = 0.0;               ///< time of the sweep's start: the frame the scan is deskewed to [s]
   std::vector<ScanPoint> points;
+  bool has_point_times = false; ///< the points carry their firing times (ScanPoint::dt)
 };
 
 class ScanSource {
@@ -53,9 +55,14 @@ class ScanSource {
   virtual LidarSpec spec() const = 0;
 };
 
-/// KITTI velodyne layout: DIR/NNNNNN.bin (float32 x,y,z,intensity) + DIR/times.txt.
+/// KITTI velodyne layout: DIR/NNNNNN.bin (float32 x,y,z,intensity) + DIR/times.txt. A scan with
+/// point times also gets DIR/NNNNNN.time beside its .bin: one float32 per point, the point's
+/// firing time after the scan's entry in times.txt [s]. Readers that know only KITTI ignore it.
 void writeKittiScan(const std::filesystem::path& path, const Scan& scan);
+/// Reads NNNNNN.bin and, when it exists, NNNNNN.time beside it (point count must match).
 Scan readKittiScan(const std::filesystem::path& path);
+/// The point-time file that belongs to a KITTI .bin path (NNNNNN.time).
+std::filesystem::path kittiPointTimesPath(const std::filesystem::path& bin_path);
 
 class KittiScanSource : public ScanSource {
  public:
