@@ -134,6 +134,16 @@ void validateLoop(const LoopConfig& c) {
   check(finitePositive(c.graph_odom_sigma_rad), "graph_odom_sigma_rad", c.graph_odom_sigma_rad, "must be > 0");
   check(finitePositive(c.graph_loop_sigma_m), "graph_loop_sigma_m", c.graph_loop_sigma_m, "must be > 0");
   check(finitePositive(c.graph_loop_sigma_rad), "graph_loop_sigma_rad", c.graph_loop_sigma_rad, "must be > 0");
+  check(finiteNonNegative(c.place_gate_per_m), "place_gate_per_m", c.place_gate_per_m, "must be >= 0");
+  check(c.place_gate_max_m >= c.radius_m && std::isfinite(c.place_gate_max_m), "place_gate_max_m",
+        c.place_gate_max_m, "must be >= radius_m");
+  check(c.place_max_yaw_change_deg > 0 && c.place_max_yaw_change_deg <= 180, "place_max_yaw_change_deg",
+        c.place_max_yaw_change_deg, "must be in (0, 180]");
+  try {
+    c.place.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("evaluate.loop.") + e.what());
+  }
 }
 
 void validateOutput(const OutputConfig& c, const MetricsConfig& m) {

@@ -288,6 +288,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   j["scan_stride"] = cfg.input.scan_stride;
   j["keyframes"] = slam.keyframes;
   j["loop_closures"] = slam.loops.size();
+  j["loop_closures_by_place"] =
+      std::count_if(slam.loops.begin(), slam.loops.end(), [](const LoopClosure& l) { return l.by_place; });
   j["loop_candidates"] = slam.loop_candidates;
   j["loops_rejected_correction"] = slam.loops_rejected;
   j["loops_rejected_ambiguous"] = slam.loops_ambiguous;
@@ -295,7 +297,7 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   for (const auto& l : slam.loops)
     loops.push_back({{"old_keyframe", l.from_keyframe}, {"new_keyframe", l.to_keyframe},
                      {"t_old", l.t_old}, {"t_new", l.t_new}, {"fitness_m2", l.fitness_m2},
-                     {"correction_m", l.correction_m},
+                     {"correction_m", l.correction_m}, {"by_place", l.by_place},
                      {"t_old_new", {l.T_old_new.translation().x(), l.T_old_new.translation().y(),
                                     l.T_old_new.translation().z()}},
                      {"yaw_old_new_deg", std::atan2(l.T_old_new.rotation()(1, 0), l.T_old_new.rotation()(0, 0)) *

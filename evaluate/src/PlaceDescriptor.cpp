@@ -11,7 +11,7 @@ namespace slamroute::evaluate {
 namespace {
 
 void require(bool ok, const char* key, const char* what) {
-  if (!ok) throw std::invalid_argument(std::string("place_recognition.") + key + " " + what);
+  if (!ok) throw std::invalid_argument(std::string("place.") + key + " " + what);
 }
 
 /// Euclidean norm of each sector's column (over the rings).

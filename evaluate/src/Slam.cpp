@@ -69,7 +69,7 @@ struct LidarSlam::Impl {
   slam::ScanToScan scan_to_scan{cfg};
   slam::ScanToMap scan_to_map{cfg};
   slam::KeyframeGraph graph{cfg};
-  slam::LoopCloser loop_closer{cfg};
+  slam::LoopCloser loop_closer{cfg, spec.mount_height_m};
   std::vector<FrameRecord> frames;
   MapSink* map_sink = nullptr;  ///< where finish() puts the map (none: SlamResult::map)
   StageTimes times;
@@ -230,6 +230,7 @@ struct LidarSlam::Impl {
 
   void addKeyframe(double t, const Pose3& T_world, const slam::PreparedScan& p) {
     graph.add(t, static_cast<int>(frames.size()), T_world, p.kf_edges, p.kf_planes, p.features.segmented);
+    loop_closer.addPlace(graph, p.features.segmented);
     bool closed = false;
     if (cfg.loop.enabled) {
       const double t0 = cpuNow();

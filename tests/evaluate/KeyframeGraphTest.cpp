@@ -56,7 +56,7 @@ TEST(LoopCloser, ARevisitWithDriftClosesAndCorrectsIt) {
   const test::Scene scene = townBlock();
   const LidarSpec spec = lidarPreset("vlp16");
   slam::KeyframeGraph g(cfg);
-  slam::LoopCloser closer(cfg);
+  slam::LoopCloser closer(cfg, 1.8);
   StageTimes times;
   // Out along the street and back: the last keyframe is at the first place, estimated 0.6 m off.
   const double xs[] = {0, 10, 20, 30, 0};
@@ -75,12 +75,42 @@ TEST(LoopCloser, ARevisitWithDriftClosesAndCorrectsIt) {
   EXPECT_LT((g.back().T_world.translation() - at(0, 0).translation()).norm(), 0.35);
 }
 
+TEST(LoopCloser, ThePlaceDescriptorFindsARevisitTheEstimateHasDriftedAwayFrom) {
+  Config cfg;
+  cfg.loop.place_gate_per_m = 0.5;  // a drift of 15 m in 60 m of path
+  const test::Scene scene = townBlock();
+  const LidarSpec spec = lidarPreset("vlp16");
+  slam::KeyframeGraph g(cfg);
+  slam::LoopCloser closer(cfg, 1.8);
+  StageTimes times;
+  const double xs[] = {0, 10, 20, 30, 0};
+  for (int k = 0; k < 5; ++k) {
+    const Cloud c = cloudOf(test::scanScene(scene, at(xs[k], 0), spec));
+    g.add(20.0 * k, k, k == 4 ? at(0, 15) : at(xs[k], 0), c, c, c);  // 15 m off: no keyframe within 7 m
+    closer.addPlace(g, c);
+    EXPECT_EQ(closer.tryClose(g, times), k == 4) << "keyframe " << k;
+  }
+  ASSERT_EQ(closer.stats().loops.size(), 1u);
+  EXPECT_TRUE(closer.stats().loops.front().by_place);
+  EXPECT_NEAR(closer.stats().loops.front().correction_m, 15.0, 0.2);
+  // Without the descriptor the same revisit is no candidate at all.
+  cfg.loop.place_recognition = false;
+  slam::KeyframeGraph g2(cfg);
+  slam::LoopCloser blind(cfg, 1.8);
+  for (int k = 0; k < 5; ++k) {
+    const Cloud c = cloudOf(test::scanScene(scene, at(xs[k], 0), spec));
+    g2.add(20.0 * k, k, k == 4 ? at(0, 15) : at(xs[k], 0), c, c, c);
+    blind.addPlace(g2, c);
+    EXPECT_FALSE(blind.tryClose(g2, times));
+  }
+}
+
 TEST(LoopCloser, NothingOldEnoughOrNearEnoughIsNoCandidate) {
   Config cfg;
   const test::Scene scene = townBlock();
   const LidarSpec spec = lidarPreset("vlp16");
   slam::KeyframeGraph g(cfg);
-  slam::LoopCloser closer(cfg);
+  slam::LoopCloser closer(cfg, 1.8);
   StageTimes times;
   const Cloud c = cloudOf(test::scanScene(scene, at(0, 0), spec));
   g.add(0.0, 0, at(0, 0), c, c, c);

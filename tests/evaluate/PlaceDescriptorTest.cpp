@@ -153,7 +153,7 @@ TEST(PlaceDatabase, RejectsABadConfigAndForeignDescriptors) {
     PlaceDatabase db(bad);
     FAIL() << "rings 0 accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("place_recognition.rings"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("place.rings"), std::string::npos) << e.what();
   }
   PlaceDatabase db(PlaceRecognitionConfig{});
   PlaceRecognitionConfig small;

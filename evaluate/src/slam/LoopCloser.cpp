@@ -1,30 +1,41 @@
 #include "LoopCloser.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "SlamClock.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/LoopVerification.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 
 namespace slamroute::evaluate::slam {
 
+void LoopCloser::addPlace(const KeyframeGraph& graph, const Cloud& segmented_body) {
+  if (!cfg_.loop.enabled || !cfg_.loop.place_recognition) return;
+  newest_ = makePlaceDescriptor(segmented_body, sensor_height_m_, cfg_.loop.place);
+  newest_kf_ = static_cast<int>(graph.size()) - 1;
+  places_.add(newest_kf_, newest_, graph.back().T_world.translation());
+}
+
 bool LoopCloser::tryClose(KeyframeGraph& graph, StageTimes& times) {
   const double t = graph.back().t;
   if (t - last_loop_t_ < cfg_.loop.cooldown_s || t - last_attempt_t_ < 1.0) return false;
-  const int old_kf = candidate(graph);
-  if (old_kf < 0) return false;
+  std::optional<LoopCandidate> c = nearbyCandidate(graph);          // the estimate: same place
+  if (!c && cfg_.loop.place_recognition) c = placeCandidate(graph);  // the descriptor: same place
+  if (!c) return false;
   last_attempt_t_ = t;
   ++stats_.candidates;
-  const std::optional<IcpResult> icp = verify(graph, old_kf);
+  const std::optional<IcpResult> icp = verify(graph, *c);
   if (!icp) return false;
-  accept(graph, old_kf, *icp, times);
+  accept(graph, *c, *icp, times);
   return true;
 }
 
-int LoopCloser::candidate(const KeyframeGraph& graph) const {
+std::optional<LoopCandidate> LoopCloser::nearbyCandidate(const KeyframeGraph& graph) const {
   const Keyframe& cur = graph.back();
-  int best = -1;
+  std::optional<LoopCandidate> best;
   double best_d = cfg_.loop.radius_m;
   for (std::size_t k = 0; k + 1 < graph.size(); ++k) {
     const Keyframe& kf = graph.at(k);
@@ -32,14 +43,36 @@ int LoopCloser::candidate(const KeyframeGraph& graph) const {
     const double d = (kf.T_world.translation() - cur.T_world.translation()).norm();
     if (d < best_d) {
       best_d = d;
-      best = static_cast<int>(k);
+      best = LoopCandidate{static_cast<int>(k), cur.T_world, std::nullopt, 0.0};
     }
   }
   return best;
 }
 
-std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, int old_kf) {
+std::optional<LoopCandidate> LoopCloser::placeCandidate(const KeyframeGraph& graph) const {
+  const Keyframe& cur = graph.back();
+  if (newest_kf_ != static_cast<int>(graph.size()) - 1) return std::nullopt;  // not described
+  PlaceQuery q;
+  q.newest_keyframe = -1;
+  for (std::size_t k = 0; k + 1 < graph.size() && cur.t - graph.at(k).t >= cfg_.loop.min_time_gap_s; ++k)
+    q.newest_keyframe = static_cast<int>(k);
+  if (q.newest_keyframe < 0) return std::nullopt;
+  const double gate = std::min(cfg_.loop.place_gate_max_m,
+                               cfg_.loop.radius_m + cfg_.loop.place_gate_per_m * graph.drivenSinceLoop());
+  q.gate_centre = cur.T_world.translation();
+  q.gate_radius_m = gate;
+  const std::vector<PlaceCandidate> found = places_.query(newest_, q);
+  if (found.empty()) return std::nullopt;
+  const PlaceCandidate& best = found.front();
+  Pose3 turn = Pose3::Identity();
+  turn.linear() = Eigen::AngleAxisd(best.yaw_rad, Vec3::UnitZ()).toRotationMatrix();
+  const Pose3 init = graph.at(static_cast<std::size_t>(best.keyframe)).T_world * turn;
+  return LoopCandidate{best.keyframe, init, best, gate};
+}
+
+std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const LoopCandidate& cand) {
   const LoopConfig& c = cfg_.loop;
+  const int old_kf = cand.keyframe;
   const Keyframe& cur = graph.back();
   const int n = static_cast<int>(graph.size());
   Cloud target;
@@ -51,10 +84,20 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, int old_
   }
   const IcpTarget icp_target(voxelFilter(target, c.voxel_m));
   const Cloud source = voxelFilter(graph.clouds().get(cur.cloud), c.voxel_m);
-  const IcpResult icp = icp_target.align(source, cur.T_world, c.icp_iterations, c.icp_max_corr_m);
-  logDebug("loop candidate kf " + std::to_string(old_kf) + " -> " + std::to_string(n - 1) + ": fitness " +
-           std::to_string(icp.fitness_m2) + " inliers " + std::to_string(icp.inlier_ratio));
   const IcpAcceptance accept{c.fitness_m2, c.min_inlier_ratio};
+  IcpResult icp;
+  if (cand.place) {  // ICP from the descriptor's yaw; it may not turn far from it
+    const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
+    const LoopVerifyOptions vo{c.icp_iterations, c.icp_max_corr_m, accept, c.place_max_yaw_change_deg};
+    const LoopVerification v = verifyLoop(icp_target, old.T_world, source, *cand.place, vo);
+    if (!v.accepted) return std::nullopt;
+    icp = v.icp;
+  } else {
+    icp = icp_target.align(source, cand.init, c.icp_iterations, c.icp_max_corr_m);
+  }
+  logDebug("loop candidate kf " + std::to_string(old_kf) + " -> " + std::to_string(n - 1) + ": fitness " +
+           std::to_string(icp.fitness_m2) + " inliers " + std::to_string(icp.inlier_ratio) +
+           (cand.place ? " (place descriptor)" : ""));
   if (!accept(icp)) return std::nullopt;
   const IcpAmbiguity amb{c.ambiguity_along_m,      c.ambiguity_across_m, c.ambiguity_separation_m,
                          c.ambiguity_inlier_margin, c.icp_iterations,     c.icp_max_corr_m,
@@ -65,7 +108,8 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, int old_
     return std::nullopt;
   }
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
-  if (!plausibleLoopCorrection(correction, graph.drivenSinceLoop(), cfg_)) {
+  const bool outside_gate = cand.place && correction > cand.gate_m;
+  if (outside_gate || !plausibleLoopCorrection(correction, graph.drivenSinceLoop(), cfg_)) {
     ++stats_.rejected;
     logDebug("loop candidate rejected: correction " + std::to_string(correction) + " m after " +
              std::to_string(graph.drivenSinceLoop()) + " m");
@@ -74,7 +118,8 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, int old_
   return icp;
 }
 
-void LoopCloser::accept(KeyframeGraph& graph, int old_kf, const IcpResult& icp, StageTimes& times) {
+void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp, StageTimes& times) {
+  const int old_kf = c.keyframe;
   const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
   const Keyframe& cur = graph.back();
   const int n = static_cast<int>(graph.size());
@@ -85,7 +130,7 @@ void LoopCloser::accept(KeyframeGraph& graph, int old_kf, const IcpResult& icp, 
   e.sigma_m = cfg_.loop.graph_loop_sigma_m;
   e.sigma_rad = cfg_.loop.graph_loop_sigma_rad;
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
-  stats_.loops.push_back({old_kf, n - 1, old.t, cur.t, icp.fitness_m2, correction, e.T_from_to});
+  stats_.loops.push_back({old_kf, n - 1, old.t, cur.t, icp.fitness_m2, correction, e.T_from_to, c.place.has_value()});
   last_loop_t_ = cur.t;
   const double t_cur = cur.t;
   const double t0 = cpuNow();

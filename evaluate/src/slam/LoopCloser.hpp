@@ -1,13 +1,15 @@
 #pragma once
-// Loop closure (paper §3.3 / LeGO-LOAM): a new keyframe near an old one (in the estimate) is
-// matched by ICP against the old keyframe's submap; the match must fit, must not be a local
-// minimum along a row of look-alikes, and must be a correction the odometry can have drifted;
-// then a loop edge joins the pose graph.
+// Loop closure (paper §3.3 / LeGO-LOAM): a new keyframe near an old one in the estimate, or, when
+// none is, one whose place descriptor matches within a drift gate, is matched by ICP against the
+// old keyframe's submap; the match must fit, must not be a local minimum along a row of
+// look-alikes, and must be a correction the odometry can have drifted; then a loop edge joins the
+// pose graph.
 #include <optional>
 #include <vector>
 
 #include "KeyframeGraph.hpp"
 #include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/PlaceDatabase.hpp"
 #include "slamroute/evaluate/Registration.hpp"
 #include "slamroute/evaluate/Slam.hpp"
 
@@ -20,23 +22,41 @@ struct LoopStats {
   int ambiguous = 0;               ///< refused: ICP from nearby starts fits better elsewhere
 };
 
+/// An old keyframe the newest one may revisit, and where its ICP starts.
+struct LoopCandidate {
+  int keyframe = -1;
+  Pose3 init = Pose3::Identity();  ///< ICP start: the estimate, or the old pose turned by the yaw
+  std::optional<PlaceCandidate> place;  ///< set when the descriptor proposed it
+  double gate_m = 0.0;                  ///< a place candidate's correction must stay within [m]
+};
+
 class LoopCloser {
  public:
-  explicit LoopCloser(const Config& cfg) : cfg_(cfg) {}
+  /// `sensor_height_m`: the LiDAR above the road (the place descriptor counts heights from it).
+  LoopCloser(const Config& cfg, double sensor_height_m)
+      : cfg_(cfg), sensor_height_m_(sensor_height_m), places_(cfg.loop.place) {}
+  /// Describes the newest keyframe's place from its segmented cloud (body frame).
+  void addPlace(const KeyframeGraph& graph, const Cloud& segmented_body);
   /// Tries to close a loop from the newest keyframe; true when a closure was added (the graph
   /// is then re-optimised).
   bool tryClose(KeyframeGraph& graph, StageTimes& times);
   const LoopStats& stats() const { return stats_; }
 
  private:
-  /// The old keyframe nearest to the newest one within loop.radius_m, old enough; -1 if none.
-  int candidate(const KeyframeGraph& graph) const;
+  /// The old keyframe nearest to the newest one within loop.radius_m of the estimate.
+  std::optional<LoopCandidate> nearbyCandidate(const KeyframeGraph& graph) const;
+  /// The best descriptor match among old keyframes within the drift gate.
+  std::optional<LoopCandidate> placeCandidate(const KeyframeGraph& graph) const;
   /// ICP of the newest keyframe's cloud against the candidate's submap, with the checks; the
   /// match when it passes them.
-  std::optional<IcpResult> verify(const KeyframeGraph& graph, int old_kf);
-  void accept(KeyframeGraph& graph, int old_kf, const IcpResult& icp, StageTimes& times);
+  std::optional<IcpResult> verify(const KeyframeGraph& graph, const LoopCandidate& c);
+  void accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp, StageTimes& times);
 
   const Config& cfg_;
+  double sensor_height_m_;
+  PlaceDatabase places_;
+  PlaceDescriptor newest_;  ///< the newest described keyframe's descriptor
+  int newest_kf_ = -1;      ///< ... and its index
   LoopStats stats_;
   double last_loop_t_ = -1e18, last_attempt_t_ = -1e18;
 };

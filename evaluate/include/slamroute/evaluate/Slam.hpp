@@ -35,6 +35,7 @@ struct LoopClosure {
   double fitness_m2 = 0;
   double correction_m = 0;  ///< how far the ICP moved the new keyframe from its estimate [m]
   Pose3 T_old_new = Pose3::Identity();  ///< the measured relative pose (for checks against truth)
+  bool by_place = false;  ///< the candidate came from the place descriptor, not the estimate
 };
 
 struct SlamResult {
