@@ -17,7 +17,7 @@ std::string checkGeoOrigin(const std::string& text) {
 }
 
 std::string writeCrewFiles(const Context& ctx, const SumoNet& net,
-                    const std::filesystem::path& route_json, const std::string& geo_origin) {
+                           const std::filesystem::path& route_json, const std::string& geo_origin) {
   exports::RouteExportOptions opt;
   if (!geo_origin.empty()) opt.geo_origin = exports::parseGeoOrigin(geo_origin, "--geo-origin");
   opt.instructions.loop_min_travel_m = ctx.cfg.rl.eif.loop_min_travel_m;

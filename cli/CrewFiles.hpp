@@ -19,6 +19,6 @@ std::string checkGeoOrigin(const std::string& text);
 /// one-line note for a net without geo-reference ("" otherwise). Throws std::invalid_argument on
 /// a bad origin.
 std::string writeCrewFiles(const Context& ctx, const SumoNet& net,
-                    const std::filesystem::path& route_json, const std::string& geo_origin);
+                           const std::filesystem::path& route_json, const std::string& geo_origin);
 
 }  // namespace slamroute::cli

@@ -31,8 +31,9 @@ HtmlParts HtmlParts::installed() { return {SLAMROUTE_VENDOR_DIR, SLAMROUTE_WEB_D
 std::string HtmlParts::missing() const {
   for (const fs::path& p : {vendor_dir / "leaflet.js", vendor_dir / "leaflet.css"})
     if (!fs::exists(p))
-      return p.string() + " is missing: the build vendors it with scripts/vendor_js.sh (needs npm, "
-                          "which scripts/setup.sh installs)";
+      return p.string() +
+             " is missing: the build vendors it with scripts/vendor_js.sh (needs npm, "
+             "which scripts/setup.sh installs)";
   for (const fs::path& p : {web_dir / "report.js", web_dir / "report.css"})
     if (!fs::exists(p)) return p.string() + " is missing";
   return "";
@@ -42,17 +43,19 @@ std::string selfContainedPage(const std::string& title, const nlohmann::json& da
                               const HtmlParts& parts) {
   if (const std::string m = parts.missing(); !m.empty()) throw std::runtime_error(m);
   std::string page;
-  page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-          exports::xmlEscape(title) + "</title>\n<style>\n" +
-          inlineSafe(readFile(parts.vendor_dir / "leaflet.css"), "</") + "\n" +
-          inlineSafe(readFile(parts.web_dir / "report.css"), "</") + "\n</style>\n</head>\n";
-  page += "<body data-status=\"loading\">\n<noscript>This report needs JavaScript.</noscript>\n"
-          "<script type=\"application/json\" id=\"report-data\">" +
-          inlineSafe(data.dump(), "</") + "</script>\n<script>\n" +
-          inlineSafe(withoutSourceMap(readFile(parts.vendor_dir / "leaflet.js")), "</") +
-          "\n</script>\n<script>\n" + inlineSafe(readFile(parts.web_dir / "report.js"), "</") +
-          "\n</script>\n</body>\n</html>\n";
+  page +=
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+      exports::xmlEscape(title) + "</title>\n<style>\n" +
+      inlineSafe(readFile(parts.vendor_dir / "leaflet.css"), "</") + "\n" +
+      inlineSafe(readFile(parts.web_dir / "report.css"), "</") + "\n</style>\n</head>\n";
+  page +=
+      "<body data-status=\"loading\">\n<noscript>This report needs JavaScript.</noscript>\n"
+      "<script type=\"application/json\" id=\"report-data\">" +
+      inlineSafe(data.dump(), "</") + "</script>\n<script>\n" +
+      inlineSafe(withoutSourceMap(readFile(parts.vendor_dir / "leaflet.js")), "</") +
+      "\n</script>\n<script>\n" + inlineSafe(readFile(parts.web_dir / "report.js"), "</") +
+      "\n</script>\n</body>\n</html>\n";
   return page;
 }
 

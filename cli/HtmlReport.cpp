@@ -1,11 +1,10 @@
 // Gathers a run's results (net, graph, routes, drives, SLAM metrics) into report.html's data.
 #include "HtmlReport.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
@@ -54,7 +53,8 @@ json readJsonOr(const fs::path& p) {
 json streetsLayer(const SumoNet& net, const MapFrame& f) {
   json out = json::array();
   for (const auto& e : net.edges)
-    if (e.allowsPassenger()) out.push_back({{"id", e.id}, {"name", e.name}, {"pts", f.line(e.shape)}});
+    if (e.allowsPassenger())
+      out.push_back({{"id", e.id}, {"name", e.name}, {"pts", f.line(e.shape)}});
   return out;
 }
 
@@ -72,7 +72,9 @@ json routeLayer(const SumoNet& net, const Route& r, const MapFrame& f) {
   json out = json::array();
   for (const auto& id : r.sumo_edges) {
     const SumoEdge* e = net.findEdge(id);
-    out.push_back({{"edge", id}, {"name", e ? e->name : ""}, {"n", times[id]},
+    out.push_back({{"edge", id},
+                   {"name", e ? e->name : ""},
+                   {"n", times[id]},
                    {"pts", e ? f.line(e->shape) : json::array()}});
   }
   return out;
@@ -90,9 +92,12 @@ json driftLayer(const SumoNet& net, const fs::path& csv, const MapFrame& f) {
     for (std::string cell; std::getline(ss, cell, ',');) c.push_back(cell);
     const SumoEdge* e = c.size() >= 7 ? net.findEdge(c[0]) : nullptr;
     if (!e) continue;
-    const double drift = std::strtod(c[6].c_str(), nullptr), len = std::strtod(c[3].c_str(), nullptr);
+    const double drift = std::strtod(c[6].c_str(), nullptr),
+                 len = std::strtod(c[3].c_str(), nullptr);
     if (!std::isfinite(drift)) continue;
-    out.push_back({{"edge", c[0]}, {"pct", rounded(drift, 1e-3)}, {"len", rounded(len, 0.1)},
+    out.push_back({{"edge", c[0]},
+                   {"pct", rounded(drift, 1e-3)},
+                   {"len", rounded(len, 0.1)},
                    {"ate", rounded(std::strtod(c[4].c_str(), nullptr), 1e-3)},
                    {"pts", f.line(e->shape)}});
   }
@@ -104,8 +109,10 @@ json driveLayer(const fs::path& drive, const fs::path& eval, const MapFrame& f) 
   if (!fs::exists(drive / "groundtruth.tum") || !fs::exists(eval / "estimate.tum")) return nullptr;
   const auto m = evaluate::compareTrajectories(readTum(eval / "estimate.tum"),
                                                readTum(drive / "groundtruth.tum"), {});
-  const std::size_t step = std::max<std::size_t>(1, (m.pairs.size() + kMaxDrivePoints - 1) / kMaxDrivePoints);
-  json gt = json::array(), est = json::array(), d = json::array(), err = json::array(), t = json::array();
+  const std::size_t step =
+      std::max<std::size_t>(1, (m.pairs.size() + kMaxDrivePoints - 1) / kMaxDrivePoints);
+  json gt = json::array(), est = json::array(), d = json::array(), err = json::array(),
+       t = json::array();
   for (std::size_t i = 0; i < m.pairs.size(); i += step) {
     const auto& p = m.pairs[i];
     gt.push_back(f.at(p.gt.translation().head<2>()));
@@ -139,10 +146,11 @@ json resultsTable(const ReportInputs& in) {
                     cell(m, "map_aligned_far_share", 1, 100.0)});
   }
   return {{"title", "Routes and SLAM results"},
-          {"head", {"planner", "route [km]", "edge coverage [%]", "node coverage [%]",
-                    "predicted loop closures", "ATE RMSE [m]", "ATE mean [m]", "RPE [%]",
-                    "loop closures found", "map median distance [m]", "map farther than clamp [%]",
-                    "aligned map median [m]", "aligned map farther [%]"}},
+          {"head",
+           {"planner", "route [km]", "edge coverage [%]", "node coverage [%]",
+            "predicted loop closures", "ATE RMSE [m]", "ATE mean [m]", "RPE [%]",
+            "loop closures found", "map median distance [m]", "map farther than clamp [%]",
+            "aligned map median [m]", "aligned map farther [%]"}},
           {"rows", rows}};
 }
 
@@ -158,7 +166,8 @@ json stepTable(const ReportInputs& in) {
   return {{"title", "Step times"}, {"head", {"step", "seconds"}}, {"rows", rows}};
 }
 
-json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& net, const MapFrame& f) {
+json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& net,
+                 const MapFrame& f) {
   json pd = {{"name", p}};
   const fs::path rj = in.out / "routes" / (p + ".json");
   pd["route"] = fs::exists(rj) ? routeLayer(net, Route::readJson(rj), f) : json::array();
@@ -176,7 +185,8 @@ json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& ne
 
 std::string writeHtmlReport(const ReportInputs& in, const std::string& geo_origin) {
   const HtmlParts parts = HtmlParts::installed();
-  if (const std::string why = parts.missing(); !why.empty()) return "report.html not written: " + why;
+  if (const std::string why = parts.missing(); !why.empty())
+    return "report.html not written: " + why;
   const SumoNet net = SumoNet::read(in.net);
   MapFrame frame;
   std::optional<exports::GeoOrigin> origin;

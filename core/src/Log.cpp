@@ -54,7 +54,8 @@ std::string formatDuration(double secs) {
 
 std::string progressBar(const std::string& label, std::size_t done, std::size_t total,
                         double secs, int width) {
-  const double frac = total ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 1.0;
+  const double frac =
+      total ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 1.0;
   const int filled = static_cast<int>(frac * width);
   const double rate = secs > 0 ? static_cast<double>(done) / secs : 0.0;
   const double left = rate > 0 ? static_cast<double>(total - std::min(done, total)) / rate : NAN;

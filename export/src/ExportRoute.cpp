@@ -16,8 +16,8 @@ std::string routeDescription(const Route& route, const DrivenPath& path, const S
   char buf[96];
   std::snprintf(buf, sizeof(buf), "%.2f km over %zu SUMO edges", path.length_m / 1000.0,
                 route.sumo_edges.size());
-  return "slamroute " + route.planner + " route, seed " + std::to_string(route.seed) + ": " +
-         buf + " of " + net.source.filename().string();
+  return "slamroute " + route.planner + " route, seed " + std::to_string(route.seed) + ": " + buf +
+         " of " + net.source.filename().string();
 }
 
 }  // namespace

@@ -63,7 +63,8 @@ std::unique_ptr<GeoProjection::Handles> makeTransform(const std::string& source_
   }
   if (!h->pj)
     throw std::invalid_argument(where + ": PROJ cannot use the projection '" + source_def + "' (" +
-                                proj_context_errno_string(h->ctx, proj_context_errno(h->ctx)) + ")");
+                                proj_context_errno_string(h->ctx, proj_context_errno(h->ctx)) +
+                                ")");
   return h;
 }
 
@@ -76,7 +77,6 @@ std::string localTransverseMercator(const GeoOrigin& o) {
 }
 
 }  // namespace
-
 
 GeoOrigin parseGeoOrigin(const std::string& text, const std::string& what) {
   const auto comma = text.find(',');

@@ -38,7 +38,8 @@ std::vector<EdgeOnRoute> edgesOnRoute(const SumoNet& net, const std::vector<std:
     s.len_m = polylineLength(s.e->shape);
     s.roundabout = ring.count(id) > 0;
     s.driven_before = driven.count(s.e->from + ">" + s.e->to) > 0;
-    if (out.empty()) last_at[s.e->from] = 0.0;
+    if (out.empty())
+      last_at[s.e->from] = 0.0;
     else if (auto it = last_at.find(s.e->from); it != last_at.end() && it->second < dist)
       s.since_last_visit_m = dist - it->second;
     driven.insert(s.e->from + ">" + s.e->to);
@@ -63,8 +64,8 @@ double headingDeg(const Point3& a, const Point3& b) {
 /// the net has no <connection> for it).
 Manoeuvre manoeuvreByAngle(const SumoEdge& a, const SumoEdge& b) {
   if (a.shape.size() < 2 || b.shape.size() < 2) return Manoeuvre::Straight;
-  double d = headingDeg(b.shape[0], b.shape[1]) -
-             headingDeg(a.shape[a.shape.size() - 2], a.shape.back());
+  double d =
+      headingDeg(b.shape[0], b.shape[1]) - headingDeg(a.shape[a.shape.size() - 2], a.shape.back());
   while (d > 180.0) d -= 360.0;
   while (d <= -180.0) d += 360.0;
   const double m = std::abs(d);
@@ -137,24 +138,36 @@ bool continuesStep(const SumoNet& net, const std::vector<EdgeOnRoute>& r, std::s
 
 std::string manoeuvreName(Manoeuvre m) {
   switch (m) {
-    case Manoeuvre::Depart: return "depart";
-    case Manoeuvre::Straight: return "straight";
-    case Manoeuvre::SlightLeft: return "slight left";
-    case Manoeuvre::Left: return "left";
-    case Manoeuvre::SlightRight: return "slight right";
-    case Manoeuvre::Right: return "right";
-    case Manoeuvre::UTurn: return "U-turn";
-    case Manoeuvre::Roundabout: return "roundabout";
+    case Manoeuvre::Depart:
+      return "depart";
+    case Manoeuvre::Straight:
+      return "straight";
+    case Manoeuvre::SlightLeft:
+      return "slight left";
+    case Manoeuvre::Left:
+      return "left";
+    case Manoeuvre::SlightRight:
+      return "slight right";
+    case Manoeuvre::Right:
+      return "right";
+    case Manoeuvre::UTurn:
+      return "U-turn";
+    case Manoeuvre::Roundabout:
+      return "roundabout";
   }
   return "?";
 }
 
 std::string revisitReason(Revisit r) {
   switch (r) {
-    case Revisit::None: return "";
-    case Revisit::LoopClosure: return "loop-closure revisit";
-    case Revisit::Connection: return "coverage connection";
-    case Revisit::Return: return "return";
+    case Revisit::None:
+      return "";
+    case Revisit::LoopClosure:
+      return "loop-closure revisit";
+    case Revisit::Connection:
+      return "coverage connection";
+    case Revisit::Return:
+      return "return";
   }
   return "?";
 }
@@ -195,15 +208,18 @@ std::vector<Instruction> turnByTurn(const SumoNet& net, const std::vector<std::s
 std::string instructionText(const Instruction& in) {
   const std::string street = in.street.empty() ? "edge " + in.sumo_edges.back() : in.street;
   switch (in.manoeuvre) {
-    case Manoeuvre::Depart: return "Depart on " + street;
-    case Manoeuvre::Straight: return "Continue straight onto " + street;
-    case Manoeuvre::UTurn: return "Make a U-turn onto " + street;
+    case Manoeuvre::Depart:
+      return "Depart on " + street;
+    case Manoeuvre::Straight:
+      return "Continue straight onto " + street;
+    case Manoeuvre::UTurn:
+      return "Make a U-turn onto " + street;
     case Manoeuvre::Roundabout:
-      return in.roundabout_exit > 0
-                 ? "At the roundabout take exit " + std::to_string(in.roundabout_exit) + " onto " +
-                       street
-                 : "Enter the roundabout";
-    default: return "Turn " + manoeuvreName(in.manoeuvre) + " onto " + street;
+      return in.roundabout_exit > 0 ? "At the roundabout take exit " +
+                                          std::to_string(in.roundabout_exit) + " onto " + street
+                                    : "Enter the roundabout";
+    default:
+      return "Turn " + manoeuvreName(in.manoeuvre) + " onto " + street;
   }
 }
 

@@ -56,20 +56,30 @@ std::string xmlEscape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
 }
 
-GeoRoute geoRoute(const std::string& name, const std::string& description,
-                  const DrivenPath& path, const std::vector<Instruction>& steps,
-                  const GeoProjection& proj) {
+GeoRoute geoRoute(const std::string& name, const std::string& description, const DrivenPath& path,
+                  const std::vector<Instruction>& steps, const GeoProjection& proj) {
   GeoRoute g;
   g.name = name;
   g.description = description;
@@ -125,7 +135,8 @@ std::string kmlText(const GeoRoute& r) {
 std::string instructionsMarkdown(const std::string& title, const std::vector<Instruction>& steps,
                                  double route_length_m, const GeoProjection* proj) {
   std::ostringstream o;
-  o << "# " << title << "\n\n" << steps.size() << " steps, " << fixed(route_length_m / 1000.0, 2)
+  o << "# " << title << "\n\n"
+    << steps.size() << " steps, " << fixed(route_length_m / 1000.0, 2)
     << " km. \"Driven again\" says why the route comes back onto a street it drove before.\n\n"
     << "| step | at [km] | instruction | then drive [m] | driven again |"
     << (proj ? " lat, lon |" : "") << "\n|---|---|---|---|---|" << (proj ? "---|" : "") << "\n";
@@ -150,8 +161,8 @@ std::string instructionsCsv(const std::vector<Instruction>& steps, const GeoProj
   for (const auto& in : steps) {
     o << in.step << "," << fixed(in.at_m, 1) << "," << csvField(manoeuvreName(in.manoeuvre)) << ","
       << in.roundabout_exit << "," << csvField(in.street) << "," << fixed(in.drive_m, 1) << ","
-      << csvField(joined(in.sumo_edges, " ")) << "," << (in.revisit != Revisit::None ? 1 : 0)
-      << "," << csvField(revisitReason(in.revisit)) << "," << csvField(in.revisit_detail) << ","
+      << csvField(joined(in.sumo_edges, " ")) << "," << (in.revisit != Revisit::None ? 1 : 0) << ","
+      << csvField(revisitReason(in.revisit)) << "," << csvField(in.revisit_detail) << ","
       << fixed(in.at_xy.x(), 2) << "," << fixed(in.at_xy.y(), 2) << ",";
     if (proj) {
       const LonLat ll = proj->toLonLat(in.at_xy);

@@ -20,15 +20,17 @@ const std::string kPlus = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/pl
 
 TEST(CrewFilesCli, PlanOnASyntheticNetNotesTheMissingGeoReference) {
   const fs::path dir = cliTempDir("synthetic");
-  const auto r = runCli("plan --net " + kPlus + " --planner postman --out " + (dir / "r.json").string());
+  const auto r =
+      runCli("plan --net " + kPlus + " --planner postman --out " + (dir / "r.json").string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("no geo-reference"), std::string::npos) << r.out;
   EXPECT_EQ(countLines(r.out.substr(r.out.find("note:"))), 1);
   EXPECT_FALSE(fs::exists(dir / "r.gpx"));
   EXPECT_TRUE(fs::exists(dir / "r_instructions.md"));
   EXPECT_TRUE(fs::exists(dir / "r_instructions.csv"));
-  const auto placed = runCli("plan --net " + kPlus + " --planner postman --geo-origin 52.52,13.405 --out " +
-                             (dir / "p.json").string());
+  const auto placed =
+      runCli("plan --net " + kPlus + " --planner postman --geo-origin 52.52,13.405 --out " +
+             (dir / "p.json").string());
   ASSERT_EQ(placed.code, 0) << placed.out;
   EXPECT_TRUE(fs::exists(dir / "p.gpx"));
   EXPECT_TRUE(fs::exists(dir / "p.kml"));
@@ -60,7 +62,8 @@ TEST(CrewFilesCli, PlanOnAGeoReferencedNetWritesGpxAndKml) {
     const auto at = line.find("<trkpt lat=\"");
     if (at == std::string::npos) continue;
     double lat = 0, lon = 0;
-    ASSERT_EQ(std::sscanf(line.c_str() + at, "<trkpt lat=\"%lf\" lon=\"%lf\"", &lat, &lon), 2) << line;
+    ASSERT_EQ(std::sscanf(line.c_str() + at, "<trkpt lat=\"%lf\" lon=\"%lf\"", &lat, &lon), 2)
+        << line;
     EXPECT_TRUE(lat > 52.4983 && lat < 52.5017 && lon > 13.3972 && lon < 13.4028) << line;
     ++points;
   }

@@ -4,9 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <regex>
-
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "CliTestUtil.hpp"
 #include "HtmlReport.hpp"
@@ -25,17 +24,21 @@ struct Browser {
 /// Opens `page` in headless Chromium with every network request sent to a dead proxy (so a page
 /// that fetched anything would log the failure); returns the DOM after the scripts ran and the
 /// browser's log. With `screenshot`, also writes a PNG of the page.
-Browser openInChromium(const fs::path& page, const fs::path& work, const fs::path& screenshot = {}) {
-  const std::string common = "chromium --headless --disable-gpu --no-sandbox --no-first-run "
-                             "--proxy-server=127.0.0.1:9 --window-size=1400,1000 "
-                             "--virtual-time-budget=8000 --enable-logging=stderr --v=0 --user-data-dir=" +
-                             (work / "profile").string() + " ";
+Browser openInChromium(const fs::path& page, const fs::path& work,
+                       const fs::path& screenshot = {}) {
+  const std::string common =
+      "chromium --headless --disable-gpu --no-sandbox --no-first-run "
+      "--proxy-server=127.0.0.1:9 --window-size=1400,1000 "
+      "--virtual-time-budget=8000 --enable-logging=stderr --v=0 --user-data-dir=" +
+      (work / "profile").string() + " ";
   const std::string url = "file://" + fs::absolute(page).string();
   std::system((common + "--dump-dom " + url + " > " + (work / "dom.html").string() + " 2> " +
-               (work / "chromium.log").string()).c_str());
+               (work / "chromium.log").string())
+                  .c_str());
   if (!screenshot.empty())
     std::system((common + "--screenshot=" + screenshot.string() + " " + url + " > /dev/null 2>> " +
-                 (work / "chromium.log").string()).c_str());
+                 (work / "chromium.log").string())
+                    .c_str());
   return {readFile(work / "dom.html"), readFile(work / "chromium.log")};
 }
 
@@ -63,8 +66,9 @@ TEST(HtmlReport, RunWritesAPageThatChromiumDrawsOffline) {
   const fs::path dir = cliTempDir("html");
   std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\n";
   const std::string net = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml";
-  const auto r = runCli("--config " + (dir / "fast.yaml").string() + " run --net " + net + " --out " +
-                        (dir / "out").string() + " --planners postman --geo-origin 52.52,13.405");
+  const auto r =
+      runCli("--config " + (dir / "fast.yaml").string() + " run --net " + net + " --out " +
+             (dir / "out").string() + " --planners postman --geo-origin 52.52,13.405");
   ASSERT_EQ(r.code, 0) << r.out;
   const fs::path page = dir / "out" / "report.html";
   ASSERT_TRUE(fs::exists(page)) << r.out;

@@ -1,9 +1,9 @@
 // Progress: the terminal bar (rate, time left) and the one-line-per-update form of a log file.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cstdio>
-#include <fcntl.h>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -20,7 +20,8 @@ TEST(Progress, BarShowsShareCountRateAndTimeLeft) {
             "survey [#####...............]  25.0% 250/1000  25/s  30s left");
   EXPECT_EQ(progressBar("slam", 0, 10, 3.0, 4), "slam [....]   0.0% 0/10  0/s  ? left");
   EXPECT_EQ(progressBar("x", 10, 10, 2.0, 4), "x [####] 100.0% 10/10  5/s  0s left");
-  EXPECT_EQ(progressBar("q", 15873, 20000, 1.0, 4), "q [###.]  79.4% 15873/20000  15873/s  0s left");
+  EXPECT_EQ(progressBar("q", 15873, 20000, 1.0, 4),
+            "q [###.]  79.4% 15873/20000  15873/s  0s left");
   EXPECT_EQ(formatDuration(187.0), "3m07s");
   EXPECT_EQ(formatDuration(7500.0), "2h05m");
   EXPECT_EQ(formatDuration(-1.0), "?");

@@ -45,8 +45,9 @@ TEST(GeoProjection, OsmNetRoundTripsWithinACentimetreAndStaysInItsOrigBoundary) 
   const auto proj = GeoProjection::forNet(net, std::nullopt);
   ASSERT_TRUE(proj);
   double lon0, lat0, lon1, lat1;
-  ASSERT_EQ(std::sscanf(net.location.orig_boundary.c_str(), "%lf,%lf,%lf,%lf", &lon0, &lat0,
-                        &lon1, &lat1), 4);
+  ASSERT_EQ(std::sscanf(net.location.orig_boundary.c_str(), "%lf,%lf,%lf,%lf", &lon0, &lat0, &lon1,
+                        &lat1),
+            4);
   ASSERT_GT(net.junctions.size(), 1000u);
   // origBoundary is written with 6 decimals: a junction on its edge may be 5e-7 deg outside.
   const double eps = 1e-6;
@@ -54,7 +55,8 @@ TEST(GeoProjection, OsmNetRoundTripsWithinACentimetreAndStaysInItsOrigBoundary) 
   for (const auto& j : net.junctions) {
     const LonLat ll = proj->toLonLat(j.pos.head<2>());
     EXPECT_TRUE(ll.lon_deg >= lon0 - eps && ll.lon_deg <= lon1 + eps && ll.lat_deg >= lat0 - eps &&
-                ll.lat_deg <= lat1 + eps) << j.id << " at " << ll.lon_deg << "," << ll.lat_deg;
+                ll.lat_deg <= lat1 + eps)
+        << j.id << " at " << ll.lon_deg << "," << ll.lat_deg;
     worst = std::max(worst, (proj->toNet(ll) - j.pos.head<2>()).norm());
   }
   EXPECT_LT(worst, 0.01);
@@ -84,7 +86,8 @@ TEST(GeoProjection, OsmNetStreetsLieWhereTheyAreInBerlinAdlershof) {
 }
 
 TEST(GeoProjection, NetWithoutGeoReferenceNeedsAnOrigin) {
-  const SumoNet net = SumoNet::read(std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml");
+  const SumoNet net =
+      SumoNet::read(std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml");
   EXPECT_FALSE(hasGeoReference(net));
   EXPECT_FALSE(GeoProjection::forNet(net, std::nullopt));
   const auto proj = GeoProjection::forNet(net, GeoOrigin{52.52, 13.405});

@@ -19,13 +19,11 @@ TEST(Instructions, PlusNetLeftRightStraightAndUTurns) {
   const SumoNet net = SumoNet::read(test::geoPlusNet(test::testTmp()));
   // North up: from the south arm right is east; back west from E, right is north; from N down
   // to S is straight on; from S up, left is west.
-  const std::vector<std::string> route = {"S_C", "C_E", "E_C", "C_N", "N_C",
-                                          "C_S", "S_C", "C_W"};
+  const std::vector<std::string> route = {"S_C", "C_E", "E_C", "C_N", "N_C", "C_S", "S_C", "C_W"};
   const auto steps = turnByTurn(net, route);
   ASSERT_EQ(steps.size(), 8u);
-  EXPECT_EQ(manoeuvres(steps),
-            (std::vector<std::string>{"depart", "right", "U-turn", "right", "U-turn", "straight",
-                                      "U-turn", "left"}));
+  EXPECT_EQ(manoeuvres(steps), (std::vector<std::string>{"depart", "right", "U-turn", "right",
+                                                         "U-turn", "straight", "U-turn", "left"}));
   EXPECT_EQ(steps[0].street, "South Street");
   EXPECT_EQ(steps[1].street, "East Street");
   EXPECT_EQ(steps[3].street, "North Street");
@@ -43,8 +41,7 @@ TEST(Instructions, PlusNetLeftRightStraightAndUTurns) {
 
 TEST(Instructions, SaysWhyAStreetIsDrivenAgain) {
   const SumoNet net = SumoNet::read(test::geoPlusNet(test::testTmp()));
-  const std::vector<std::string> route = {"S_C", "C_E", "E_C", "C_N", "N_C",
-                                          "C_S", "S_C", "C_W"};
+  const std::vector<std::string> route = {"S_C", "C_E", "E_C", "C_N", "N_C", "C_S", "S_C", "C_W"};
   const auto steps = turnByTurn(net, route, {.loop_min_travel_m = 50.0});
   EXPECT_EQ(steps[0].revisit, Revisit::None);
   EXPECT_EQ(steps[1].revisit, Revisit::None);
@@ -53,7 +50,8 @@ TEST(Instructions, SaysWhyAStreetIsDrivenAgain) {
   EXPECT_EQ(steps[3].revisit, Revisit::None);
   // South Street again from C, last left ~330 m before (C_N + N_C): a loop closure at C.
   EXPECT_EQ(steps[5].revisit, Revisit::LoopClosure);
-  EXPECT_NE(steps[5].revisit_detail.find("junction C"), std::string::npos) << steps[5].revisit_detail;
+  EXPECT_NE(steps[5].revisit_detail.find("junction C"), std::string::npos)
+      << steps[5].revisit_detail;
   EXPECT_EQ(steps[7].revisit, Revisit::None);
   // With a loop needing more driving than that, the same stretch is only a connection.
   const auto strict = turnByTurn(net, route, {.loop_min_travel_m = 5000.0});
@@ -79,7 +77,8 @@ TEST(Instructions, RoundaboutExitIsCountedFromTheEntry) {
 }
 
 TEST(Instructions, UnknownEdgeNamesTheNet) {
-  const SumoNet net = SumoNet::read(std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml");
+  const SumoNet net =
+      SumoNet::read(std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml");
   try {
     turnByTurn(net, {"S_C", "nosuchedge"});
     FAIL();

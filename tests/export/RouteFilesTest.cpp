@@ -73,9 +73,11 @@ TEST_F(RouteFiles, GpxOfAGeoNetIsValidGpx11WithTrackAndTurnPoints) {
   // Every point lies in the box of the plus's junctions (+- 20 m).
   const std::regex pt("lat=\"([-0-9.]+)\" lon=\"([-0-9.]+)\"");
   int points = 0;
-  for (auto it = std::sregex_iterator(gpx.begin(), gpx.end(), pt); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(gpx.begin(), gpx.end(), pt); it != std::sregex_iterator();
+       ++it) {
     const double lat = std::stod((*it)[1]), lon = std::stod((*it)[2]);
-    EXPECT_TRUE(lat > 52.4983 && lat < 52.5017 && lon > 13.3972 && lon < 13.4028) << lat << "," << lon;
+    EXPECT_TRUE(lat > 52.4983 && lat < 52.5017 && lon > 13.3972 && lon < 13.4028)
+        << lat << "," << lon;
     ++points;
   }
   EXPECT_EQ(points, 8 + static_cast<int>(path.points.size()));
@@ -99,7 +101,8 @@ TEST_F(RouteFiles, TheSchemaRejectsWhatGpx11Forbids) {
   EXPECT_NE(broken("lat95.gpx", lat_out), 0);
   std::string order = gpx;  // <trk> before <rte>
   const auto rte = order.find("  <rte>"), trk = order.find("  <trk>"), end = order.find("</gpx>");
-  order = order.substr(0, rte) + order.substr(trk, end - trk) + order.substr(rte, trk - rte) + "</gpx>\n";
+  order = order.substr(0, rte) + order.substr(trk, end - trk) + order.substr(rte, trk - rte) +
+          "</gpx>\n";
   EXPECT_NE(broken("order.gpx", order), 0);
   std::string version = gpx;
   version.replace(version.find("version=\"1.1\""), 13, "version=\"1.0\"");
@@ -108,7 +111,8 @@ TEST_F(RouteFiles, TheSchemaRejectsWhatGpx11Forbids) {
 
 TEST_F(RouteFiles, NetWithoutGeoReferenceGetsANoteAndNoGpxUnlessPlaced) {
   const fs::path dir = test::testTmp();
-  const SumoNet net = SumoNet::read(std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml");
+  const SumoNet net =
+      SumoNet::read(std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml");
   const Route route = plusRoute();
   const auto res = exportRoute(net, route, dir / "a.json", {});
   EXPECT_NE(res.note.find("no geo-reference"), std::string::npos) << res.note;

@@ -9,7 +9,7 @@
 namespace slamroute::exports {
 
 struct DrivenPath {
-  Polyline points;                    ///< net x/y/z, consecutive duplicates dropped
+  Polyline points;                      ///< net x/y/z, consecutive duplicates dropped
   std::vector<std::size_t> edge_first;  ///< per route edge: index of its first point in `points`
   std::vector<double> edge_start_m;     ///< per route edge: distance driven before it [m]
   std::vector<double> edge_length_m;    ///< per route edge: its shape's length [m]

@@ -17,10 +17,10 @@ std::string manoeuvreName(Manoeuvre m);
 
 /// Why a street is driven again.
 enum class Revisit {
-  None,          ///< first time on this street
-  LoopClosure,   ///< comes back to a junction after a loop long enough for a SLAM loop closure
-  Connection,    ///< crosses driven streets to reach streets not yet driven
-  Return,        ///< no street after it is new: the way to the end of the route
+  None,         ///< first time on this street
+  LoopClosure,  ///< comes back to a junction after a loop long enough for a SLAM loop closure
+  Connection,   ///< crosses driven streets to reach streets not yet driven
+  Return,       ///< no street after it is new: the way to the end of the route
 };
 
 std::string revisitReason(Revisit r);
@@ -32,16 +32,16 @@ struct InstructionConfig {
 };
 
 struct Instruction {
-  int step = 0;                    ///< 1-based
+  int step = 0;  ///< 1-based
   Manoeuvre manoeuvre = Manoeuvre::Depart;
-  int roundabout_exit = 0;         ///< for Roundabout: the exit taken, counted from the entry
-  std::string street;              ///< edge name of the street driven after the manoeuvre
+  int roundabout_exit = 0;              ///< for Roundabout: the exit taken, counted from the entry
+  std::string street;                   ///< edge name of the street driven after the manoeuvre
   std::vector<std::string> sumo_edges;  ///< the edges driven until the next step
-  double at_m = 0.0;               ///< distance from the start to the manoeuvre [m]
-  double drive_m = 0.0;            ///< distance to the next step (or the end) [m]
-  Point2 at_xy = Point2::Zero();   ///< where the manoeuvre is (net x/y) [m]
+  double at_m = 0.0;                    ///< distance from the start to the manoeuvre [m]
+  double drive_m = 0.0;                 ///< distance to the next step (or the end) [m]
+  Point2 at_xy = Point2::Zero();        ///< where the manoeuvre is (net x/y) [m]
   Revisit revisit = Revisit::None;
-  std::string revisit_detail;      ///< e.g. "back at junction J after 640 m"
+  std::string revisit_detail;  ///< e.g. "back at junction J after 640 m"
 };
 
 /// Throws std::invalid_argument naming the net when an edge is not in it.

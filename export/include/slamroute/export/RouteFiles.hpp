@@ -13,17 +13,16 @@ namespace slamroute::exports {
 
 /// A route on the globe: the driven polyline and a point per instruction.
 struct GeoRoute {
-  std::string name;                 ///< e.g. "qlearning route"
-  std::string description;          ///< one line: length, edges, source net
-  std::vector<LonLat> track;        ///< the driven polyline
-  std::vector<LonLat> turn_points;  ///< one per instruction
-  std::vector<std::string> turn_names;  ///< instructionText of each
+  std::string name;                            ///< e.g. "qlearning route"
+  std::string description;                     ///< one line: length, edges, source net
+  std::vector<LonLat> track;                   ///< the driven polyline
+  std::vector<LonLat> turn_points;             ///< one per instruction
+  std::vector<std::string> turn_names;         ///< instructionText of each
   std::vector<std::string> turn_descriptions;  ///< distance, street, revisit reason
 };
 
-GeoRoute geoRoute(const std::string& name, const std::string& description,
-                  const DrivenPath& path, const std::vector<Instruction>& steps,
-                  const GeoProjection& proj);
+GeoRoute geoRoute(const std::string& name, const std::string& description, const DrivenPath& path,
+                  const std::vector<Instruction>& steps, const GeoProjection& proj);
 
 /// GPX 1.1: <rte> with a <rtept> at every instruction, <trk> with the driven polyline.
 std::string gpxText(const GeoRoute& r);
