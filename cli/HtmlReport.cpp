@@ -166,6 +166,28 @@ json stepTable(const ReportInputs& in) {
   return {{"title", "Step times"}, {"head", {"step", "seconds"}}, {"rows", rows}};
 }
 
+/// `bytes` as base64 (RFC 4648), for a data: URI.
+std::string base64(const std::string& bytes) {
+  static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    for (int k = 18; k >= 0; k -= 6) out += abc[(v >> k) & 63];
+  }
+  if (const std::size_t rest = bytes.size() - i; rest > 0) {
+    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += abc[(v >> 18) & 63];
+    out += abc[(v >> 12) & 63];
+    out += rest == 2 ? abc[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
 json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& net,
                  const MapFrame& f) {
   json pd = {{"name", p}};
@@ -173,6 +195,9 @@ json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& ne
   pd["route"] = fs::exists(rj) ? routeLayer(net, Route::readJson(rj), f) : json::array();
   pd["drift"] = driftLayer(net, in.out / "eval" / p / "per_edge.csv", f);
   pd["drive"] = driveLayer(in.out / "drives" / p, in.out / "eval" / p, f);
+  // The map from above coloured by its distance to the world surface (evaluate's picture).
+  if (const fs::path png = in.out / "eval" / p / "map_error_top.png"; fs::exists(png))
+    pd["map_error_png"] = "data:image/png;base64," + base64(readFile(png));
   const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
   pd["metrics"] = json::object();
   for (const char* k : {"ate_rmse_m", "ate_max_m", "rpe_trans_pct", "map_median_dist_m",

@@ -249,6 +249,15 @@ function showSummary(q) {
       .forEach(function(r) {
         summary.appendChild(el('div', {}, r[0] + ': ' + r[1]));
       });
+  if (q.p.map_error_png) {
+    summary.appendChild(el('h2', {}, 'Map error from above'));
+    summary.appendChild(el('img', {
+      id: 'map-error',
+      src: q.p.map_error_png,
+      alt: q.p.name + ': SLAM map coloured by its distance to the world surface',
+      style: 'width:100%'
+    }));
+  }
 }
 
 function refresh() {

@@ -59,6 +59,8 @@ void expectPageDrawn(const Browser& b, const std::string& route_features, std::s
   EXPECT_EQ(b.log.find("Uncaught"), std::string::npos) << b.log;
   EXPECT_NE(b.dom.find("<th>ATE RMSE [m]</th>"), std::string::npos);
   EXPECT_NE(b.dom.find("leaflet-container"), std::string::npos);
+  EXPECT_NE(b.dom.find("<img id=\"map-error\" src=\"data:image/png;base64,iVBORw0KGgo"),
+            std::string::npos);
 }
 
 TEST(HtmlReport, RunWritesAPageThatChromiumDrawsOffline) {
