@@ -5,8 +5,10 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "Commands.hpp"
+#include "CrewFiles.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/Route.hpp"
@@ -28,7 +30,7 @@ int nodeOfJunction(const RoadGraph& g, const std::string& junction) {
 
 void registerPlan(CLI::App& app, Context& ctx) {
   struct Opts {
-    std::string graph, net, planner, out, start_junction, reward, goal;
+    std::string graph, net, planner, out, start_junction, reward, goal, geo_origin;
     int start = -1;
     double max_length_m = -1.0;
   };
@@ -44,6 +46,10 @@ void registerPlan(CLI::App& app, Context& ctx) {
       ->excludes(s_opt);
   sub->add_option("--reward", o->reward, "qlearning reward: full | accuracy (default: rl.reward)");
   sub->add_option("--goal", o->goal, "coverage goal: nodes | edges (default: rl.goal)");
+  sub->add_option("--geo-origin", o->geo_origin,
+                  "LAT,LON: with --net, places a net without geo-reference (its centre there) for "
+                  "ROUTE.gpx / ROUTE.kml")
+      ->check(checkGeoOrigin);
   sub->add_option("--max-length", o->max_length_m,
                   "random: stop at this driven length [m] (default: rl.random.budget_m)")
       ->check(CLI::NonNegativeNumber);
@@ -58,8 +64,10 @@ void registerPlan(CLI::App& app, Context& ctx) {
     if (o->max_length_m >= 0.0) cfg.random.budget_m = o->max_length_m;
     RoadGraph g;
     std::string where;
+    std::optional<SumoNet> net;
     if (!o->net.empty()) {
-      g = RoadGraph::fromSumoNet(SumoNet::read(o->net), /*lscc_only=*/false);
+      net = SumoNet::read(o->net);
+      g = RoadGraph::fromSumoNet(*net, /*lscc_only=*/false);
       where = o->net;
     } else {
       g = RoadGraph::readJson(o->graph);
@@ -89,6 +97,9 @@ void registerPlan(CLI::App& app, Context& ctx) {
     if (const int n = extra.value("edges_without_sumo", 0); n > 0 && !rou.empty())
       std::cout << n << " route edge(s) have no SUMO edges (links SUMO models inside junctions); "
                 << "`drive` joins their neighbours by legal SUMO paths\n";
+    if (net)
+      if (const std::string note = writeCrewFiles(ctx, *net, out, o->geo_origin); !note.empty())
+        logInfo("note: " + note);
   });
 }
 

@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "Commands.hpp"
+#include "CrewFiles.hpp"
+#include "HtmlReport.hpp"
 #include "Pipeline.hpp"
 #include "Report.hpp"
 #include "Resume.hpp"
@@ -36,7 +38,7 @@ std::vector<std::string> splitList(const std::string& s) {
 
 void registerRun(CLI::App& app, Context& ctx) {
   struct Opts {
-    std::string net, out, planners = "qlearning,random,postman";
+    std::string net, out, planners = "qlearning,random,postman", geo_origin;
     int jobs = 2;
     int slam_jobs = 0;
     bool save_scans = false, resume = false;
@@ -54,6 +56,10 @@ void registerRun(CLI::App& app, Context& ctx) {
                   "the total work is done, not when the longest route's queue is; a run peaks at ~0.7 GB for "
                   "a 15 km drive, 2.8 GB for 75 km; fewer run at once when the memory is short)")
       ->capture_default_str()->check(CLI::Range(0, 64));
+  sub->add_option("--geo-origin", o->geo_origin,
+                  "LAT,LON: places a net without geo-reference (its centre there) for the routes' "
+                  ".gpx / .kml")
+      ->check(checkGeoOrigin);
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->add_option("--status-every", o->status_every,
                   "seconds between progress lines of the running steps (0 = only start/finish)")
@@ -123,7 +129,12 @@ void registerRun(CLI::App& app, Context& ctx) {
       const double budget = routeLength(out / "routes" / "qlearning.json");
       stage({planStep("random", {"--max-length", std::to_string(budget)})}, 1);
     }
-    for (const auto& p : planners) makeRouteDrivable(net, out / "routes" / (p + ".json"));
+    std::string geo_note;
+    for (const auto& p : planners) {
+      makeRouteDrivable(net, out / "routes" / (p + ".json"));
+      geo_note = writeCrewFiles(ctx, net, out / "routes" / (p + ".json"), o->geo_origin);
+    }
+    if (!geo_note.empty()) logInfo("  note: " + geo_note);
 
     logInfo("[4/6] driving each route in SUMO with traffic");
     std::vector<Step> s4;
@@ -175,6 +186,13 @@ void registerRun(CLI::App& app, Context& ctx) {
     in.step_seconds = times;
     writeReport(in);
     logInfo("report: " + (out / "report.md").string());
+    try {  // the interactive page is an extra: a run whose page cannot be written still succeeds
+      const std::string why = writeHtmlReport(in, o->geo_origin);
+      if (why.empty()) logInfo("report: " + (out / "report.html").string());
+      else logWarn(why);
+    } catch (const std::exception& e) {
+      logWarn("report.html not written: " + std::string(e.what()));
+    }
   });
 }
 

@@ -10,7 +10,13 @@ PACKAGES=(
   libeigen3-dev libboost-graph-dev libpcl-dev libopencv-dev libembree-dev liblemon-dev
   libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   libtbb-dev libpugixml-dev libnanoflann-dev zlib1g-dev mpi-default-dev
+  libproj-dev                           # net x/y -> WGS84 lon/lat for GPX / KML
+  libxml2-utils                         # xmllint: tests validate GPX against its schema
+  chromium                              # headless browser: the report.html test opens the page
 )
+# npm vendors Leaflet into the build for report.html (scripts/vendor_js.sh). A Node.js from
+# elsewhere (one that brings its own npm) is kept; otherwise Debian's nodejs and npm.
+command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -1,6 +1,8 @@
 #include "slamroute/core/Log.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -40,21 +42,47 @@ Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()),
       last_(start_) {}
 
+std::string formatDuration(double secs) {
+  char buf[32];
+  if (!std::isfinite(secs) || secs < 0) return "?";
+  const long s = std::lround(secs);
+  if (s < 60) std::snprintf(buf, sizeof(buf), "%lds", s);
+  else if (s < 3600) std::snprintf(buf, sizeof(buf), "%ldm%02lds", s / 60, s % 60);
+  else std::snprintf(buf, sizeof(buf), "%ldh%02ldm", s / 3600, (s % 3600) / 60);
+  return buf;
+}
+
+std::string progressBar(const std::string& label, std::size_t done, std::size_t total,
+                        double secs, int width) {
+  const double frac =
+      total ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 1.0;
+  const int filled = static_cast<int>(frac * width);
+  const double rate = secs > 0 ? static_cast<double>(done) / secs : 0.0;
+  const double left = rate > 0 ? static_cast<double>(total - std::min(done, total)) / rate : NAN;
+  char buf[160];
+  // Three significant digits, never an exponent: "0.25/s", "25/s", "15873/s".
+  std::snprintf(buf, sizeof(buf), rate >= 100 ? "] %5.1f%% %zu/%zu  %.0f/s  %s left"
+                                              : "] %5.1f%% %zu/%zu  %.3g/s  %s left",
+                100.0 * frac, done, total, rate, done ? formatDuration(left).c_str() : "?");
+  return label + " [" + std::string(static_cast<std::size_t>(filled), '#') +
+         std::string(static_cast<std::size_t>(width - filled), '.') + buf;
+}
+
 void Progress::update(std::size_t done) {
   if (g_level.load() > LogLevel::Info) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_ < std::chrono::milliseconds(500) && done < total_) return;
   last_ = now;
   const double secs = std::chrono::duration<double>(now - start_).count();
-  const double pct = total_ ? 100.0 * static_cast<double>(done) / static_cast<double>(total_) : 100.0;
   std::lock_guard<std::mutex> lock(g_mutex);
-  const bool tty = isatty(STDERR_FILENO);
-  char buf[256];
-  std::snprintf(buf, sizeof(buf), "%s %5.1f%% (%zu/%zu) %.1f s", label_.c_str(), pct, done, total_,
-                secs);
-  if (tty) {
-    std::cerr << "\r" << buf << std::flush;
+  if (isatty(STDERR_FILENO)) {
+    std::cerr << "\r" << progressBar(label_, done, total_, secs, 24) << "\033[K" << std::flush;
   } else {
+    const double pct =
+        total_ ? 100.0 * static_cast<double>(done) / static_cast<double>(total_) : 100.0;
+    char buf[256];
+    std::snprintf(buf, sizeof(buf), "%s %5.1f%% (%zu/%zu) %.1f s", label_.c_str(), pct, done,
+                  total_, secs);
     std::cerr << buf << "\n";
   }
   printed_ = true;

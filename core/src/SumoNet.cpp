@@ -137,6 +137,7 @@ SumoNet SumoNet::read(const std::filesystem::path& path) {
     edge.from = e.attribute("from").as_string();
     edge.to = e.attribute("to").as_string();
     edge.type = e.attribute("type").as_string();
+    edge.name = e.attribute("name").as_string();
     edge.priority = e.attribute("priority").as_int(-1);
     for (auto l : e.children("lane")) {
       SumoLane lane;
@@ -193,6 +194,10 @@ SumoNet SumoNet::read(const std::filesystem::path& path) {
     if (passenger) SumoNetBuilder::addTurn(net, con.from, con.to);
     net.connections.push_back(std::move(con));
   }
+
+  for (auto r : root.children("roundabout"))
+    net.roundabouts.push_back({splitWords(r.attribute("nodes").as_string()),
+                               splitWords(r.attribute("edges").as_string())});
 
   if (net.edges.empty() && net.junctions.empty())
     throw std::invalid_argument(name + ": SUMO network has no edges and no junctions");

@@ -18,8 +18,17 @@ void logInfo(const std::string& msg);
 void logWarn(const std::string& msg);
 void logError(const std::string& msg);
 
-/// Progress on stderr: "label  37% (370/1000) 12.3 s". Prints at most a few times per second,
-/// only at level Info or lower. Thread-compatible (call update from one thread).
+/// Progress on stderr, at most twice a second, only at level Info or lower. On a terminal one
+/// line redrawn in place: "label [#########...............]  37.0% 370/1000  30.1/s  21s left";
+/// otherwise (a log file) one line per update: "label  37.0% (370/1000) 12.3 s".
+/// Thread-compatible (call update from one thread).
+/// The terminal line of Progress: bar of `width` characters, share, count, rate and the time
+/// left at that rate ("?" before the first step is done).
+std::string progressBar(const std::string& label, std::size_t done, std::size_t total,
+                        double elapsed_s, int width);
+/// 42s, 3m07s, 2h05m ("?" when not finite or negative).
+std::string formatDuration(double secs);
+
 class Progress {
  public:
   Progress(std::string label, std::size_t total);

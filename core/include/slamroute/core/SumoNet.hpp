@@ -34,6 +34,7 @@ struct SumoEdge {
   std::string from, to;  ///< junction ids (empty for internal edges)
   std::string function;  ///< "" (normal), internal, connector, walkingarea, crossing
   std::string type;
+  std::string name;      ///< street name (netconvert's `name`, from OSM); may be empty
   int priority = -1;
   std::vector<SumoLane> lanes;
   Polyline shape;  ///< the centre lane's shape (travel direction)
@@ -50,6 +51,11 @@ struct SumoConnection {
   std::string via;    ///< internal lane id, may be empty
 };
 
+/// A <roundabout>: its junctions and the edges that circle it.
+struct SumoRoundabout {
+  std::vector<std::string> nodes, edges;
+};
+
 struct SumoLocation {
   Point2 net_offset = Point2::Zero();
   std::string conv_boundary, orig_boundary, proj_parameter;  ///< proj may be "!"
@@ -61,6 +67,7 @@ struct SumoNet {
   std::vector<SumoJunction> junctions;           ///< non-internal junctions
   std::vector<SumoEdge> edges;                   ///< non-internal edges only
   std::vector<SumoConnection> connections;       ///< between non-internal edges
+  std::vector<SumoRoundabout> roundabouts;
   std::unordered_map<std::string, std::size_t> junction_index, edge_index;
 
   const SumoEdge* findEdge(const std::string& id) const;

@@ -1,0 +1,232 @@
+// Gathers a run's results (net, graph, routes, drives, SLAM metrics) into report.html's data.
+#include "HtmlReport.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+#include "HtmlPage.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/RoadGraph.hpp"
+#include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/Trajectory.hpp"
+#include "slamroute/evaluate/Metrics.hpp"
+#include "slamroute/export/GeoProjection.hpp"
+
+namespace slamroute::cli {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr std::size_t kMaxDrivePoints = 2000;  // per drive: enough for the slider, small file
+
+double rounded(double v, double unit) { return std::round(v / unit) * unit; }
+
+/// Map coordinates: [lat, lon] on the globe, else [y, x] in metres (Leaflet's plain CRS).
+struct MapFrame {
+  std::optional<exports::GeoProjection> proj;
+  json at(const Point2& p) const {
+    if (!proj) return json::array({rounded(p.y(), 0.01), rounded(p.x(), 0.01)});
+    const exports::LonLat ll = proj->toLonLat(p);
+    return json::array({rounded(ll.lat_deg, 1e-7), rounded(ll.lon_deg, 1e-7)});
+  }
+  json line(const Polyline& pl) const {
+    json out = json::array();
+    for (const auto& p : pl) out.push_back(at(p.head<2>()));
+    return out;
+  }
+};
+
+json readJsonOr(const fs::path& p) {
+  try {
+    return fs::exists(p) ? json::parse(readFile(p)) : json::object();
+  } catch (const std::exception&) {
+    return json::object();
+  }
+}
+
+json streetsLayer(const SumoNet& net, const MapFrame& f) {
+  json out = json::array();
+  for (const auto& e : net.edges)
+    if (e.allowsPassenger())
+      out.push_back({{"id", e.id}, {"name", e.name}, {"pts", f.line(e.shape)}});
+  return out;
+}
+
+json weightLayer(const RoadGraph& g, const MapFrame& f) {
+  json out = json::array();
+  for (const auto& e : g.edges)
+    out.push_back({{"id", e.id}, {"w", rounded(e.weight, 1e-4)}, {"pts", f.line(e.polyline)}});
+  return out;
+}
+
+/// One feature per SUMO edge of the route, in driving order, with how often the route drives it.
+json routeLayer(const SumoNet& net, const Route& r, const MapFrame& f) {
+  std::map<std::string, int> times;
+  for (const auto& id : r.sumo_edges) ++times[id];
+  json out = json::array();
+  for (const auto& id : r.sumo_edges) {
+    const SumoEdge* e = net.findEdge(id);
+    out.push_back({{"edge", id},
+                   {"name", e ? e->name : ""},
+                   {"n", times[id]},
+                   {"pts", e ? f.line(e->shape) : json::array()}});
+  }
+  return out;
+}
+
+/// per_edge.csv (evaluate): measured drift on each SUMO edge driven.
+json driftLayer(const SumoNet& net, const fs::path& csv, const MapFrame& f) {
+  json out = json::array();
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header: edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,...
+  while (std::getline(in, line)) {
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) c.push_back(cell);
+    const SumoEdge* e = c.size() >= 7 ? net.findEdge(c[0]) : nullptr;
+    if (!e) continue;
+    const double drift = std::strtod(c[6].c_str(), nullptr),
+                 len = std::strtod(c[3].c_str(), nullptr);
+    if (!std::isfinite(drift)) continue;
+    out.push_back({{"edge", c[0]},
+                   {"pct", rounded(drift, 1e-3)},
+                   {"len", rounded(len, 0.1)},
+                   {"ate", rounded(std::strtod(c[4].c_str(), nullptr), 1e-3)},
+                   {"pts", f.line(e->shape)}});
+  }
+  return out;
+}
+
+/// Ground truth, the estimate aligned onto it like the ATE, and the error along the drive.
+json driveLayer(const fs::path& drive, const fs::path& eval, const MapFrame& f) {
+  if (!fs::exists(drive / "groundtruth.tum") || !fs::exists(eval / "estimate.tum")) return nullptr;
+  const auto m = evaluate::compareTrajectories(readTum(eval / "estimate.tum"),
+                                               readTum(drive / "groundtruth.tum"), {});
+  const std::size_t step =
+      std::max<std::size_t>(1, (m.pairs.size() + kMaxDrivePoints - 1) / kMaxDrivePoints);
+  json gt = json::array(), est = json::array(), d = json::array(), err = json::array(),
+       t = json::array();
+  for (std::size_t i = 0; i < m.pairs.size(); i += step) {
+    const auto& p = m.pairs[i];
+    gt.push_back(f.at(p.gt.translation().head<2>()));
+    est.push_back(f.at((m.T_gt_est * p.est).translation().head<2>()));
+    d.push_back(rounded(m.distance_m[i], 0.1));
+    err.push_back(rounded(m.errors_m[i], 1e-3));
+    t.push_back(rounded(p.t, 0.01));
+  }
+  return {{"gt", gt}, {"est", est}, {"d", d}, {"err", err}, {"t", t}};
+}
+
+std::string cell(const json& j, const char* key, int prec, double scale = 1.0) {
+  if (!j.contains(key) || !j[key].is_number()) return "–";
+  std::ostringstream o;
+  o.setf(std::ios::fixed);
+  o.precision(prec);
+  o << j[key].get<double>() * scale;
+  return o.str();
+}
+
+json resultsTable(const ReportInputs& in) {
+  json rows = json::array();
+  for (const auto& p : in.planners) {
+    const json r = readJsonOr(in.out / "routes" / (p + ".json"));
+    const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
+    rows.push_back({p, cell(r, "length_m", 2, 1e-3), cell(r, "edge_coverage_pct", 1),
+                    cell(r, "node_coverage_pct", 1), cell(r, "loop_closures", 0),
+                    cell(m, "ate_rmse_m", 3), cell(m, "ate_mean_m", 3), cell(m, "rpe_trans_pct", 2),
+                    cell(m, "loop_closures", 0), cell(m, "map_median_dist_m", 2),
+                    cell(m, "map_far_share", 1, 100.0), cell(m, "map_aligned_median_dist_m", 2),
+                    cell(m, "map_aligned_far_share", 1, 100.0)});
+  }
+  return {{"title", "Routes and SLAM results"},
+          {"head",
+           {"planner", "route [km]", "edge coverage [%]", "node coverage [%]",
+            "predicted loop closures", "ATE RMSE [m]", "ATE mean [m]", "RPE [%]",
+            "loop closures found", "map median distance [m]", "map farther than clamp [%]",
+            "aligned map median [m]", "aligned map farther [%]"}},
+          {"rows", rows}};
+}
+
+json stepTable(const ReportInputs& in) {
+  json rows = json::array();
+  for (const auto& [name, s] : in.step_seconds) {
+    std::ostringstream o;
+    o.setf(std::ios::fixed);
+    o.precision(1);
+    o << s;
+    rows.push_back({name, std::isnan(s) ? std::string("kept from an earlier run") : o.str()});
+  }
+  return {{"title", "Step times"}, {"head", {"step", "seconds"}}, {"rows", rows}};
+}
+
+/// `bytes` as base64 (RFC 4648), for a data: URI.
+std::string base64(const std::string& bytes) {
+  static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    for (int k = 18; k >= 0; k -= 6) out += abc[(v >> k) & 63];
+  }
+  if (const std::size_t rest = bytes.size() - i; rest > 0) {
+    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += abc[(v >> 18) & 63];
+    out += abc[(v >> 12) & 63];
+    out += rest == 2 ? abc[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& net,
+                 const MapFrame& f) {
+  json pd = {{"name", p}};
+  const fs::path rj = in.out / "routes" / (p + ".json");
+  pd["route"] = fs::exists(rj) ? routeLayer(net, Route::readJson(rj), f) : json::array();
+  pd["drift"] = driftLayer(net, in.out / "eval" / p / "per_edge.csv", f);
+  pd["drive"] = driveLayer(in.out / "drives" / p, in.out / "eval" / p, f);
+  // The map from above coloured by its distance to the world surface (evaluate's picture).
+  if (const fs::path png = in.out / "eval" / p / "map_error_top.png"; fs::exists(png))
+    pd["map_error_png"] = "data:image/png;base64," + base64(readFile(png));
+  const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
+  pd["metrics"] = json::object();
+  for (const char* k : {"ate_rmse_m", "ate_max_m", "rpe_trans_pct", "map_median_dist_m",
+                        "map_far_share", "map_aligned_median_dist_m", "loop_closures"})
+    if (m.contains(k)) pd["metrics"][k] = m[k];
+  return pd;
+}
+
+}  // namespace
+
+std::string writeHtmlReport(const ReportInputs& in, const std::string& geo_origin) {
+  const HtmlParts parts = HtmlParts::installed();
+  if (const std::string why = parts.missing(); !why.empty())
+    return "report.html not written: " + why;
+  const SumoNet net = SumoNet::read(in.net);
+  MapFrame frame;
+  std::optional<exports::GeoOrigin> origin;
+  if (!geo_origin.empty()) origin = exports::parseGeoOrigin(geo_origin, "--geo-origin");
+  frame.proj = exports::GeoProjection::forNet(net, origin);
+  json data = {{"title", "slamroute report: " + net.source.filename().string()},
+               {"net", in.net},
+               {"geo", frame.proj.has_value()},
+               {"streets", streetsLayer(net, frame)},
+               {"weights", weightLayer(RoadGraph::readJson(in.graph_json), frame)},
+               {"planners", json::array()},
+               {"tables", json::array({resultsTable(in), stepTable(in)})}};
+  for (const auto& p : in.planners) data["planners"].push_back(plannerData(in, p, net, frame));
+  writeFileAtomic(in.out / "report.html", selfContainedPage(data["title"], data, parts));
+  return "";
+}
+
+}  // namespace slamroute::cli

@@ -1,0 +1,333 @@
+// report.html's page: draws the run's data (the JSON in #report-data) with Leaflet. Works
+// offline: no tiles, no fetches. When done it writes what it drew into <body data-*> (status,
+// features per route, errors) for the headless-browser test and for anyone inspecting the page.
+(function() {
+'use strict';
+var body = document.body;
+var errors = [];
+window.addEventListener('error', function(e) {
+  errors.push(String(e.message));
+  body.setAttribute('data-errors', String(errors.length));
+  body.setAttribute('data-last-error', String(e.message));
+});
+body.setAttribute('data-errors', '0');
+
+var data = JSON.parse(document.getElementById('report-data').textContent);
+
+// Viridis-like ramp for 0..1.
+var STOPS = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+function ramp(t) {
+  t = Math.max(0, Math.min(1, isFinite(t) ? t : 0)) * (STOPS.length - 1);
+  var i = Math.min(Math.floor(t), STOPS.length - 2), f = t - i, a = STOPS[i], b = STOPS[i + 1];
+  return 'rgb(' +
+      [0, 1, 2]
+          .map(function(k) {
+            return Math.round(a[k] + f * (b[k] - a[k]));
+          })
+          .join(',') +
+      ')';
+}
+function range(values) {
+  var lo = Infinity, hi = -Infinity;
+  values.forEach(function(v) {
+    if (isFinite(v)) {
+      lo = Math.min(lo, v);
+      hi = Math.max(hi, v);
+    }
+  });
+  if (!isFinite(lo)) return [0, 1];
+  return hi > lo ? [lo, hi] : [lo, lo + 1];
+}
+function el(tag, attrs, text) {
+  var e = document.createElement(tag);
+  Object.keys(attrs || {}).forEach(function(k) {
+    e.setAttribute(k, attrs[k]);
+  });
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+function fmt(v, d) {
+  return isFinite(v) ? Number(v).toFixed(d) : '–';
+}
+
+// --- page skeleton
+var header = el('header');
+header.appendChild(el('h1', {}, data.title));
+header.appendChild(
+    el('div', {'class': 'sub'},
+       data.net + (data.geo ? ' (WGS84)' : ' (net x/y in metres: no geo-reference)')));
+body.appendChild(header);
+var main = el('div', {id: 'main'});
+var mapDiv = el('div', {id: 'map'});
+var side = el('div', {id: 'side'});
+main.appendChild(mapDiv);
+main.appendChild(side);
+body.appendChild(main);
+var tables = el('div', {id: 'tables'});
+body.appendChild(tables);
+
+var map = L.map(
+    mapDiv,
+    data.geo ? {preferCanvas: true} :
+               {preferCanvas: true, crs: L.CRS.Simple, minZoom: -6, maxZoom: 6, zoomSnap: 0.25});
+L.control.scale({imperial: false}).addTo(map);
+
+function polyline(pts, style, tip) {
+  var line = L.polyline(pts, style);
+  if (tip) line.bindTooltip(tip, {sticky: true});
+  return line;
+}
+
+// --- layers shared by every planner
+var streets = L.featureGroup(data.streets.map(function(s) {
+  return polyline(s.pts, {color: '#9a9a9a', weight: 2}, (s.name || 'unnamed') + ' (' + s.id + ')');
+}));
+var wr = range(data.weights.map(function(w) {
+  return w.w;
+}));
+var weights = L.featureGroup(data.weights.map(function(w) {
+  return polyline(
+      w.pts, {color: ramp((w.w - wr[0]) / (wr[1] - wr[0])), weight: 4},
+      'graph edge ' + w.id + ': weight ' + fmt(w.w, 3));
+}));
+
+// --- per planner: route (one feature per SUMO edge driven), drift, trajectories
+var featureCounts = [];
+var planners = data.planners.map(function(p) {
+  var nmax = 1;
+  p.route.forEach(function(r) {
+    nmax = Math.max(nmax, r.n);
+  });
+  var route = L.featureGroup(p.route.map(function(r, i) {
+    return polyline(
+        r.pts, {color: ramp(nmax > 1 ? (r.n - 1) / (nmax - 1) : 0.35), weight: 5, opacity: 0.85},
+        '#' + (i + 1) + ' ' + (r.name || r.edge) + ': driven ' + r.n + 'x');
+  }));
+  featureCounts.push(p.name + ':' + route.getLayers().length);
+  var dr = range(p.drift.map(function(d) {
+    return d.pct;
+  }));
+  var drift = L.featureGroup(p.drift.map(function(d) {
+    return polyline(
+        d.pts, {color: ramp((d.pct - dr[0]) / (dr[1] - dr[0])), weight: 5},
+        d.edge + ': drift ' + fmt(d.pct, 2) + ' %, ATE ' + fmt(d.ate, 2) + ' m over ' +
+            fmt(d.len, 0) + ' m');
+  }));
+  var traj = L.featureGroup();
+  if (p.drive) {
+    traj.addLayer(polyline(p.drive.gt, {color: '#111', weight: 2}, p.name + ' ground truth'));
+    traj.addLayer(polyline(
+        p.drive.est, {color: '#e0301e', weight: 2, dashArray: '4 4'},
+        p.name + ' SLAM estimate (aligned)'));
+  }
+  return {p: p, route: route, drift: drift, traj: traj, nmax: nmax, drange: dr};
+});
+
+// --- controls
+side.appendChild(el('h2', {}, 'Route'));
+var select = el('select', {id: 'planner'});
+planners.forEach(function(q, i) {
+  select.appendChild(el('option', {value: String(i)}, q.p.name));
+});
+side.appendChild(select);
+var toggles = {};
+side.appendChild(el('h2', {}, 'Layers'));
+[['streets', 'street network'], ['weights', 'streets by weight (depth-normal score)'],
+ ['route', 'route: times driven'], ['drift', 'measured drift per street'],
+ ['traj', 'trajectories: ground truth / estimate']]
+    .forEach(function(t) {
+      var label = el('label');
+      var box = el('input', {type: 'checkbox', id: 'show-' + t[0]});
+      box.checked = t[0] !== 'weights' && t[0] !== 'drift';
+      label.appendChild(box);
+      label.appendChild(document.createTextNode(' ' + t[1]));
+      side.appendChild(label);
+      toggles[t[0]] = box;
+    });
+var legend = el('div', {'class': 'legend'});
+side.appendChild(legend);
+side.appendChild(el('h2', {}, 'Along the drive'));
+var slider = el('input', {type: 'range', id: 'slider', min: '0', max: '0', value: '0'});
+side.appendChild(slider);
+var readout = el('div', {id: 'readout'});
+side.appendChild(readout);
+var chart = el('canvas', {id: 'chart', width: '300', height: '150'});
+side.appendChild(chart);
+var summary = el('div', {id: 'summary'});
+side.appendChild(summary);
+
+var gtMarker = L.circleMarker([0, 0], {radius: 6, color: '#111', fillOpacity: 0.9});
+var estMarker = L.circleMarker([0, 0], {radius: 6, color: '#e0301e', fillOpacity: 0.9});
+var errLine = L.polyline([[0, 0], [0, 0]], {color: '#e0301e', weight: 1});
+
+function current() {
+  return planners[Number(select.value) || 0];
+}
+
+function showLegend(q) {
+  legend.textContent = '';
+  var lo, hi, what;
+  if (toggles.drift.checked) {
+    lo = fmt(q.drange[0], 2) + ' %';
+    hi = fmt(q.drange[1], 2) + ' %';
+    what = 'drift';
+  } else if (toggles.weights.checked) {
+    lo = fmt(wr[0], 2);
+    hi = fmt(wr[1], 2);
+    what = 'weight';
+  } else {
+    lo = '1x';
+    hi = q.nmax + 'x';
+    what = 'driven';
+  }
+  var bar = el('div', {'class': 'bar'});
+  bar.style.background =
+      'linear-gradient(to right,' + [0, 0.25, 0.5, 0.75, 1].map(ramp).join(',') + ')';
+  legend.appendChild(el('span', {}, what + ' ' + lo));
+  legend.appendChild(bar);
+  legend.appendChild(el('span', {}, hi));
+}
+
+function drawChart(q, at) {
+  var ctx = chart.getContext('2d'), W = chart.width, H = chart.height, m = 24;
+  ctx.clearRect(0, 0, W, H);
+  var d = q.p.drive;
+  if (!d || d.d.length < 2) {
+    ctx.fillText('no evaluated drive', m, H / 2);
+    return;
+  }
+  var dmax = d.d[d.d.length - 1] || 1, emax = range(d.err)[1];
+  ctx.strokeStyle = '#999';
+  ctx.strokeRect(m, 4, W - m - 4, H - m - 4);
+  ctx.fillStyle = '#333';
+  ctx.font = '10px sans-serif';
+  ctx.fillText(fmt(emax, 2) + ' m', 2, 12);
+  ctx.fillText('0', 2, H - m);
+  ctx.fillText('error vs distance, ' + fmt(dmax / 1000, 2) + ' km', m + 4, H - 8);
+  ctx.strokeStyle = '#e0301e';
+  ctx.beginPath();
+  d.d.forEach(function(x, i) {
+    var px = m + (x / dmax) * (W - m - 4), py = H - m - (d.err[i] / emax) * (H - m - 8);
+    if (i === 0)
+      ctx.moveTo(px, py);
+    else
+      ctx.lineTo(px, py);
+  });
+  ctx.stroke();
+  var cx = m + (d.d[at] / dmax) * (W - m - 4);
+  ctx.strokeStyle = '#1f3a5f';
+  ctx.beginPath();
+  ctx.moveTo(cx, 4);
+  ctx.lineTo(cx, H - m);
+  ctx.stroke();
+}
+
+function moveTo(i) {
+  var q = current(), d = q.p.drive;
+  if (!d || !d.gt.length) {
+    readout.textContent = 'no evaluated drive';
+    return;
+  }
+  i = Math.max(0, Math.min(d.gt.length - 1, i));
+  gtMarker.setLatLng(d.gt[i]);
+  estMarker.setLatLng(d.est[i]);
+  errLine.setLatLngs([d.gt[i], d.est[i]]);
+  readout.textContent = 't ' + fmt(d.t[i], 1) + ' s   driven ' + fmt(d.d[i] / 1000, 3) + ' km\n' +
+      'trajectory error ' + fmt(d.err[i], 3) + ' m';
+  drawChart(q, i);
+}
+
+function showSummary(q) {
+  var m = q.p.metrics || {};
+  summary.textContent = '';
+  summary.appendChild(el('h2', {}, q.p.name + ': SLAM'));
+  [['ATE RMSE', fmt(m.ate_rmse_m, 3) + ' m'], ['ATE max', fmt(m.ate_max_m, 3) + ' m'],
+   ['drift (RPE)', fmt(m.rpe_trans_pct, 2) + ' %'],
+   ['map error, median', fmt(m.map_median_dist_m, 2) + ' m'],
+   ['map error, aligned median', fmt(m.map_aligned_median_dist_m, 2) + ' m'],
+   ['loop closures found', fmt(m.loop_closures, 0)]]
+      .forEach(function(r) {
+        summary.appendChild(el('div', {}, r[0] + ': ' + r[1]));
+      });
+  if (q.p.map_error_png) {
+    summary.appendChild(el('h2', {}, 'Map error from above'));
+    summary.appendChild(el('img', {
+      id: 'map-error',
+      src: q.p.map_error_png,
+      alt: q.p.name + ': SLAM map coloured by its distance to the world surface',
+      style: 'width:100%'
+    }));
+  }
+}
+
+function refresh() {
+  var q = current();
+  [[streets, 'streets'], [weights, 'weights']].forEach(function(l) {
+    if (toggles[l[1]].checked)
+      l[0].addTo(map);
+    else
+      map.removeLayer(l[0]);
+  });
+  planners.forEach(function(o) {
+    ['route', 'drift', 'traj'].forEach(function(k) {
+      if (o === q && toggles[k].checked)
+        o[k].addTo(map);
+      else
+        map.removeLayer(o[k]);
+    });
+  });
+  var n = q.p.drive ? q.p.drive.gt.length : 0;
+  slider.max = String(Math.max(0, n - 1));
+  [gtMarker, estMarker, errLine].forEach(function(l) {
+    if (n)
+      l.addTo(map);
+    else
+      map.removeLayer(l);
+  });
+  showLegend(q);
+  showSummary(q);
+  moveTo(Number(slider.value));
+}
+
+select.addEventListener('change', function() {
+  slider.value = '0';
+  refresh();
+});
+Object.keys(toggles).forEach(function(k) {
+  toggles[k].addEventListener('change', refresh);
+});
+slider.addEventListener('input', function() {
+  moveTo(Number(slider.value));
+});
+
+// --- tables
+data.tables.forEach(function(t) {
+  tables.appendChild(el('h2', {}, t.title));
+  var table = el('table');
+  var tr = el('tr');
+  t.head.forEach(function(h) {
+    tr.appendChild(el('th', {}, h));
+  });
+  table.appendChild(tr);
+  t.rows.forEach(function(r) {
+    var row = el('tr');
+    r.forEach(function(c) {
+      row.appendChild(el('td', {}, String(c)));
+    });
+    table.appendChild(row);
+  });
+  tables.appendChild(table);
+});
+
+var bounds = streets.getBounds();
+if (bounds.isValid())
+  map.fitBounds(bounds, {padding: [10, 10]});
+else
+  map.setView([0, 0], 0);
+refresh();
+
+body.setAttribute('data-streets', String(streets.getLayers().length));
+body.setAttribute('data-route-features', featureCounts.join(','));
+body.setAttribute('data-status', 'ok');
+document.title = document.title + ' (ready)';
+})();

@@ -1,0 +1,106 @@
+// report.html in a real headless browser (Debian's chromium): a one-planner `run` on the plus
+// net, placed on the globe with --geo-origin, then the same run's page drawn in the net's own
+// metres. The page must load offline without errors and draw one route feature per SUMO edge.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "CliTestUtil.hpp"
+#include "HtmlReport.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute::test {
+namespace {
+namespace fs = std::filesystem;
+
+bool haveChromium() { return std::system("command -v chromium > /dev/null 2>&1") == 0; }
+
+struct Browser {
+  std::string dom, log;
+};
+
+/// Opens `page` in headless Chromium with every network request sent to a dead proxy (so a page
+/// that fetched anything would log the failure); returns the DOM after the scripts ran and the
+/// browser's log. With `screenshot`, also writes a PNG of the page.
+Browser openInChromium(const fs::path& page, const fs::path& work,
+                       const fs::path& screenshot = {}) {
+  const std::string common =
+      "chromium --headless --disable-gpu --no-sandbox --no-first-run "
+      "--proxy-server=127.0.0.1:9 --window-size=1400,1000 "
+      "--virtual-time-budget=8000 --enable-logging=stderr --v=0 --user-data-dir=" +
+      (work / "profile").string() + " ";
+  const std::string url = "file://" + fs::absolute(page).string();
+  std::system((common + "--dump-dom " + url + " > " + (work / "dom.html").string() + " 2> " +
+               (work / "chromium.log").string())
+                  .c_str());
+  if (!screenshot.empty())
+    std::system((common + "--screenshot=" + screenshot.string() + " " + url + " > /dev/null 2>> " +
+                 (work / "chromium.log").string())
+                    .c_str());
+  return {readFile(work / "dom.html"), readFile(work / "chromium.log")};
+}
+
+std::string bodyAttr(const std::string& dom, const std::string& name) {
+  const std::regex re("<body[^>]*\\s" + name + "=\"([^\"]*)\"");
+  std::smatch m;
+  return std::regex_search(dom, m, re) ? m[1].str() : std::string("(absent)");
+}
+
+void expectPageDrawn(const Browser& b, const std::string& route_features, std::size_t streets) {
+  EXPECT_EQ(bodyAttr(b.dom, "data-status"), "ok") << b.log;
+  EXPECT_EQ(bodyAttr(b.dom, "data-errors"), "0") << bodyAttr(b.dom, "data-last-error");
+  EXPECT_EQ(bodyAttr(b.dom, "data-route-features"), route_features);
+  EXPECT_EQ(bodyAttr(b.dom, "data-streets"), std::to_string(streets));
+  EXPECT_NE(b.dom.find("<title>slamroute report: plus.net.xml (ready)</title>"), std::string::npos);
+  // Console messages (page errors, failed loads) show in the log as "CONSOLE(line)".
+  EXPECT_EQ(b.log.find("CONSOLE"), std::string::npos) << b.log;
+  EXPECT_EQ(b.log.find("Uncaught"), std::string::npos) << b.log;
+  EXPECT_NE(b.dom.find("<th>ATE RMSE [m]</th>"), std::string::npos);
+  EXPECT_NE(b.dom.find("leaflet-container"), std::string::npos);
+  EXPECT_NE(b.dom.find("<img id=\"map-error\" src=\"data:image/png;base64,iVBORw0KGgo"),
+            std::string::npos);
+}
+
+TEST(HtmlReport, RunWritesAPageThatChromiumDrawsOffline) {
+  if (!haveChromium()) GTEST_SKIP() << "chromium not installed (scripts/setup.sh installs it)";
+  const fs::path dir = cliTempDir("html");
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\n";
+  const std::string net = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml";
+  const auto r =
+      runCli("--config " + (dir / "fast.yaml").string() + " run --net " + net + " --out " +
+             (dir / "out").string() + " --planners postman --geo-origin 52.52,13.405");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const fs::path page = dir / "out" / "report.html";
+  ASSERT_TRUE(fs::exists(page)) << r.out;
+  const std::string html = readFile(page);
+  // Self-contained: no script, style or image comes from elsewhere.
+  for (const char* ref : {"<script src", "<link ", "url(http", "src=\"http"})
+    EXPECT_EQ(html.find(ref), std::string::npos) << ref;
+  const auto route = nlohmann::json::parse(readFile(dir / "out" / "routes" / "postman.json"));
+  const std::size_t edges = route["sumo_edges"].size();
+  ASSERT_GT(edges, 4u);
+  const std::string features = "postman:" + std::to_string(edges);
+  // The plus has 8 passenger edges; the page is on the globe (WGS84).
+  EXPECT_NE(html.find("\"geo\":true"), std::string::npos);
+  const Browser geo = openInChromium(page, dir, dir / "report.png");
+  expectPageDrawn(geo, features, 8);
+  ASSERT_TRUE(fs::exists(dir / "report.png"));
+  EXPECT_GT(fs::file_size(dir / "report.png"), 20000u);
+  EXPECT_EQ(readFile(dir / "report.png").substr(1, 3), "PNG");
+
+  // The same run drawn in the net's own metres (Leaflet's plain CRS), as without --geo-origin.
+  cli::ReportInputs in;
+  in.net = net;
+  in.out = dir / "out";
+  in.graph_json = dir / "out" / "graph" / "graph.json";
+  in.planners = {"postman"};
+  ASSERT_EQ(cli::writeHtmlReport(in, ""), "");
+  EXPECT_NE(readFile(page).find("\"geo\":false"), std::string::npos);
+  fs::remove_all(dir / "profile");
+  expectPageDrawn(openInChromium(page, dir), features, 8);
+}
+
+}  // namespace
+}  // namespace slamroute::test
