@@ -96,6 +96,21 @@ inline Scene cityScene(double extent_m = 120.0) {
   return s;
 }
 
+/// Boxes of random footprint (2-16 m) and height (1-21 m) scattered over 200 x 200 m around
+/// the origin, none within 9 m of it: an irregular place, a different one per seed.
+inline Scene scatteredScene(std::uint64_t seed, int boxes = 70) {
+  Scene s;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  while (static_cast<int>(s.boxes.size()) < boxes) {
+    const double cx = -100 + 200 * u(rng), cy = -100 + 200 * u(rng);
+    const double w = 2 + 14 * u(rng), d = 2 + 14 * u(rng), h = 1 + 20 * u(rng);
+    if (std::hypot(cx, cy) < 9.0 + 0.5 * std::hypot(w, d)) continue;
+    s.boxes.push_back({{cx - w / 2, cy - d / 2, 0.0}, {cx + w / 2, cy + d / 2, h}});
+  }
+  return s;
+}
+
 inline Pose3 poseXYZYaw(double x, double y, double z, double yaw_rad) {
   Pose3 T = Pose3::Identity();
   T.linear() = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
