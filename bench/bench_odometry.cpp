@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
     }
   }
   Config cfg;
-  cfg.loop_closure = !no_lc;
+  cfg.loop.enabled = !no_lc;
   if (std::getenv("BENCH_DEBUG")) setLogLevel(LogLevel::Debug);
   if (!config_file.empty()) config::loadYaml(YAML::LoadFile(config_file), cfg, config_file);
   if (!drive.empty()) {

@@ -13,9 +13,9 @@ bin="$build/cli/slamroute"
 mkdir -p "$out"
 # Noise-free: LiDAR and wheel odometry + gyro without noise.
 printf 'simulate:\n  lidar:\n    range_sigma_m: 0.0\n    dropout_prob: 0.0\n  drive:\n    odometry_scale_sigma: 0.0\n    odometry_speed_noise_mps: 0.0\n    gyro_bias_sigma_deg_s: 0.0\n    gyro_noise_deg_s: 0.0\n    tilt_bias_sigma_deg: 0.0\n    tilt_noise_deg: 0.0\n' > "$out/noisefree.yaml"
-printf 'evaluate:\n  use_odometry: false\n' > "$out/lidar_only.yaml"
-printf 'evaluate:\n  loop_closure: false\n' > "$out/nolc.yaml"
-printf 'evaluate:\n  loop_closure: false\n  use_odometry: false\n' > "$out/nolc_lidar_only.yaml"
+printf 'evaluate:\n  odometry:\n    use_wheel_odometry: false\n' > "$out/lidar_only.yaml"
+printf 'evaluate:\n  loop:\n    enabled: false\n' > "$out/nolc.yaml"
+printf 'evaluate:\n  loop:\n    enabled: false\n  odometry:\n    use_wheel_odometry: false\n' > "$out/nolc_lidar_only.yaml"
 
 drive() {  # name route [extra args]
   local name=$1 route=$2; shift 2

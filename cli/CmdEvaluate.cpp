@@ -94,7 +94,7 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
   sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")->required();
   sub->add_option("--segment", o->segment_m, "extra RPE segment length [m] (default: config)");
   sub->add_flag("--no-loop-closure", o->no_loop_closure, "disable loop closure");
-  sub->add_option("--scan-stride", o->scan_stride, "use every n-th scan (default: evaluate.scan_stride)")
+  sub->add_option("--scan-stride", o->scan_stride, "use every n-th scan (default: evaluate.input.scan_stride)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--from", o->from_s, "evaluate only from this drive time on [s] (default: start)")
       ->check(CLI::NonNegativeNumber);
@@ -103,16 +103,13 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
   sub->callback([&ctx, o] {
     ctx.load();
     evaluate::Config cfg = ctx.cfg.evaluate;
-    if (o->segment_m > 0) cfg.rpe_segment_m = o->segment_m;
-    if (o->no_loop_closure) cfg.loop_closure = false;
-    if (o->scan_stride > 0) cfg.scan_stride = o->scan_stride;
-    if (o->from_s >= 0) cfg.start_s = o->from_s;
-    if (o->to_s > 0) cfg.end_s = o->to_s;
-    if (cfg.end_s > 0 && cfg.end_s <= cfg.start_s)
+    if (o->segment_m > 0) cfg.metrics.rpe_segment_m = o->segment_m;
+    if (o->no_loop_closure) cfg.loop.enabled = false;
+    if (o->scan_stride > 0) cfg.input.scan_stride = o->scan_stride;
+    if (o->from_s >= 0) cfg.input.start_s = o->from_s;
+    if (o->to_s > 0) cfg.input.end_s = o->to_s;
+    if (cfg.input.end_s > 0 && cfg.input.end_s <= cfg.input.start_s)
       throw std::invalid_argument("--to must be later than --from");
-    if (!(cfg.map_tile_m > 0))  // checked before the scans are read or made
-      throw std::invalid_argument((ctx.config_file.empty() ? std::string("config") : ctx.config_file) +
-                                  ": evaluate.map_tile_m must be positive");
     if (o->drive.empty() == o->kitti.empty())
       throw std::invalid_argument("evaluate needs --drive DIR or --kitti SEQ_DIR");
     const nlohmann::json j = o->drive.empty()

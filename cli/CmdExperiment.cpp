@@ -195,7 +195,7 @@ void registerExperiment(CLI::App& app, Context& ctx) {
         for (const auto& id : eval_ids) lengths.push_back(routeLength(out / "routes" / (id + ".json")));
         const auto left = todo(evals);
         std::string mem;
-        const int fit = slamJobsThatFit(lengths, o->jobs, ctx.cfg.evaluate.keyframe_clouds_on_disk, &mem);
+        const int fit = slamJobsThatFit(lengths, o->jobs, ctx.cfg.evaluate.output.keyframe_clouds_on_disk, &mem);
         if (fit < std::min<int>(o->jobs, static_cast<int>(left.size())))
           logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory (" + mem + ")");
         runSteps(left, fit, o->status_every);

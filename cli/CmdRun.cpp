@@ -155,7 +155,7 @@ void registerRun(CLI::App& app, Context& ctx) {
     std::vector<double> lengths;
     for (const auto& [neg_len, p] : by_length) lengths.push_back(-neg_len);
     std::string mem;
-    const int fit = slamJobsThatFit(lengths, static_cast<int>(s5.size()), ctx.cfg.evaluate.keyframe_clouds_on_disk, &mem);
+    const int fit = slamJobsThatFit(lengths, static_cast<int>(s5.size()), ctx.cfg.evaluate.output.keyframe_clouds_on_disk, &mem);
     if (o->slam_jobs > fit)
       logWarn("--slam-jobs " + std::to_string(o->slam_jobs) + " may exceed the memory (" + mem + ")");
     else if (o->slam_jobs == 0 && fit < static_cast<int>(s5.size()))

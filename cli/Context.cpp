@@ -19,6 +19,11 @@ void Context::load() {
       throw std::runtime_error(config_file + ": not valid YAML (" + e.msg + ")");
     }
     config::loadYaml(root, cfg, config_file);
+    try {
+      cfg.evaluate.validate();
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(config_file + ": " + e.what());
+    }
   }
   if (seed) cfg.seed = *seed;
 }

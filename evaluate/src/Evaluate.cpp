@@ -124,10 +124,10 @@ LidarSpec readSensorSpec(const fs::path& path) {
 
 MetricsOptions metricsOptions(const Config& cfg) {
   MetricsOptions o;
-  o.max_dt_s = cfg.assoc_max_dt_s;
-  o.rpe_lengths_m = cfg.rpe_lengths_m;
-  o.segment_m = cfg.rpe_segment_m;
-  o.step_frames = cfg.rpe_step_frames;
+  o.max_dt_s = cfg.metrics.assoc_max_dt_s;
+  o.rpe_lengths_m = cfg.metrics.rpe_lengths_m;
+  o.segment_m = cfg.metrics.rpe_segment_m;
+  o.step_frames = cfg.metrics.rpe_step_frames;
   return o;
 }
 
@@ -188,7 +188,7 @@ double evaluationDiskGb(double route_km, const Config& cfg) {
   // map.pcd's size until map.pcd is written (PcdWriter), by when the clouds' file is gone: the
   // peak is the clouds + the map, or twice the map with the clouds in memory.
   const double map = 0.0066, clouds = 0.023;
-  return std::max(0.0, route_km) * (cfg.keyframe_clouds_on_disk ? clouds + map : 2 * map) * 1.1;
+  return std::max(0.0, route_km) * (cfg.output.keyframe_clouds_on_disk ? clouds + map : 2 * map) * 1.1;
 }
 
 namespace {
@@ -202,7 +202,7 @@ void warnIfShortOfDisk(const fs::path& dir, const fs::path& out, double km, cons
   char buf[200];
   std::snprintf(buf, sizeof buf, "evaluate: %s has %.2f GB free; a %.1f km drive needs ~%.2f GB there", out.c_str(),
                 static_cast<double>(sp.available) / 1e9, km, need);
-  logWarn(std::string(buf) + " (map.pcd" + (cfg.keyframe_clouds_on_disk ? ", the keyframe clouds while the SLAM runs)" : ")"));
+  logWarn(std::string(buf) + " (map.pcd" + (cfg.output.keyframe_clouds_on_disk ? ", the keyframe clouds while the SLAM runs)" : ")"));
 }
 
 }  // namespace
@@ -218,14 +218,14 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
                              const fs::path& out, const Config& cfg,
                              const std::map<std::string, std::string>& edge_labels) {
   // The window here; the stride (with denser sampling in turns) inside runSlam.
-  const StridedScanSource source(all_scans, 1, cfg.start_s, cfg.end_s);
+  const StridedScanSource source(all_scans, 1, cfg.input.start_s, cfg.input.end_s);
   if (source.size() == 0)
     throw std::runtime_error(drive.string() + (all_scans.size() == 0 ? ": the drive has no scans"
                                                                      : ": no scans in the time window"));
   // Initial pose = the ground-truth pose at the first scan (documented in metrics.json).
   // Initial motion = the ground-truth motion between the first two scans (SUMO vehicles depart
   // at speed; a real crew would take it from wheel odometry).
-  const double tol = 0.5 * std::max(cfg.assoc_max_dt_s, 0.1);
+  const double tol = 0.5 * std::max(cfg.metrics.assoc_max_dt_s, 0.1);
   Trajectory first = {StampedPose{source.time(0), Pose3::Identity()}};
   if (source.size() > 1) first.push_back(StampedPose{source.time(1), Pose3::Identity()});
   const auto p0 = associate(first, gt, tol);
@@ -239,15 +239,15 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   // Wheel odometry + gyro, when the drive recorded them (slamroute drive does).
   WheelOdometry odometry;
   const fs::path odo_file = drive / drive_files::kOdometry;
-  if (cfg.use_odometry && fs::exists(odo_file)) odometry = readOdometryCsv(odo_file);
-  if (cfg.use_odometry && odometry.empty())
+  if (cfg.odometry.use_wheel_odometry && fs::exists(odo_file)) odometry = readOdometryCsv(odo_file);
+  if (cfg.odometry.use_wheel_odometry && odometry.empty())
     logInfo("evaluate: no " + odo_file.string() + ": predicting motion with a constant-velocity model");
   GyroBiasResult gyro;
-  if (!odometry.empty() && cfg.gyro_standstill_mps > 0) {
-    gyro = removeStandstillGyroBias(odometry, cfg.gyro_standstill_mps, cfg.gyro_min_standstill_s,
-                                    cfg.gyro_standstill_margin_s);
+  if (!odometry.empty() && cfg.odometry.gyro_standstill_mps > 0) {
+    gyro = removeStandstillGyroBias(odometry, cfg.odometry.gyro_standstill_mps, cfg.odometry.gyro_min_standstill_s,
+                                    cfg.odometry.gyro_standstill_margin_s);
     odometry = gyro.odometry;
-    if (gyro.standstill_s >= cfg.gyro_min_standstill_s)
+    if (gyro.standstill_s >= cfg.odometry.gyro_min_standstill_s)
       logInfo("evaluate: gyro bias " + std::to_string(gyro.final_bias_rad_s * 180.0 / std::numbers::pi) +
               " deg/s from " + std::to_string(static_cast<int>(gyro.standstill_s)) + " s of standstill");
   }
@@ -255,10 +255,10 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   // The gyro weighed by its own noise figures when the drive states them (odometry.yaml).
   Config slam_cfg = cfg;
   if (!odometry.empty()) {
-    slam_cfg.odometry_prior_sigma_deg =
+    slam_cfg.odometry.prior_sigma_deg =
         yawPriorSigmaDeg(cfg, readOdometrySpec(drive / drive_files::kOdometrySpec));
-    if (slam_cfg.odometry_prior_sigma_deg != cfg.odometry_prior_sigma_deg)
-      logInfo("evaluate: yaw prior " + std::to_string(slam_cfg.odometry_prior_sigma_deg) + " deg per 0.1 s from " +
+    if (slam_cfg.odometry.prior_sigma_deg != cfg.odometry.prior_sigma_deg)
+      logInfo("evaluate: yaw prior " + std::to_string(slam_cfg.odometry.prior_sigma_deg) + " deg per 0.1 s from " +
               (drive / drive_files::kOdometrySpec).string());
   }
 
@@ -266,7 +266,7 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   const fs::path mesh_path = drive / drive_files::kWorldMesh;
   std::optional<Mesh> mesh;
   if (fs::exists(mesh_path)) mesh = readPly(mesh_path);
-  if (!(cfg.map_tile_m > 0)) throw std::invalid_argument("evaluate.map_tile_m must be positive");
+  if (!(cfg.output.map_tile_m > 0)) throw std::invalid_argument("evaluate.output.map_tile_m must be positive");
 
   // Only now that every input file has been read: a bad one leaves no output folder behind. The
   // outputs are made in a staging folder beside `out` and replace it at the end, so a failed
@@ -276,11 +276,11 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   const fs::path dir = staging.path();
   warnIfShortOfDisk(dir, out, pathLength(gt) / 1000.0, slam_cfg);
   MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, gt.empty() ? nullptr : &gt,
-                cfg.assoc_max_dt_s, cfg.map_accuracy_max_m, cfg.plot_size_px);
+                cfg.metrics.assoc_max_dt_s, cfg.metrics.map_accuracy_max_m, cfg.metrics.plot_size_px);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry,
-                            slam_cfg.keyframe_clouds_on_disk ? dir : fs::path{}, &map);
+                            slam_cfg.output.keyframe_clouds_on_disk ? dir : fs::path{}, &map);
   progress.finish();
   writeTum(dir / "estimate.tum", slam.trajectory);
   map.commit();
@@ -295,9 +295,9 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   j["gyro_standstill_s"] = gyro.standstill_s;
   j["gyro_bias_deg_s"] = gyro.final_bias_rad_s * 180.0 / std::numbers::pi;
   j["motion_prior"] = odometry.empty() ? "constant velocity" : "wheel odometry + gyro (odometry.csv)";
-  if (!odometry.empty()) j["odometry_prior_sigma_deg"] = slam_cfg.odometry_prior_sigma_deg;
+  if (!odometry.empty()) j["odometry_prior_sigma_deg"] = slam_cfg.odometry.prior_sigma_deg;
   j["scans"] = slam.trajectory.size();
-  j["scan_stride"] = cfg.scan_stride;
+  j["scan_stride"] = cfg.input.scan_stride;
   j["keyframes"] = slam.keyframes;
   j["loop_closures"] = slam.loops.size();
   j["loop_candidates"] = slam.loop_candidates;
@@ -320,7 +320,7 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   if (fs::exists(pe_path)) {
     pose_edges = readPoseEdges(pe_path);
     if (m) {
-      const std::vector<EdgeError> per_edge = perEdgeErrors(*m, pose_edges, cfg.assoc_max_dt_s);
+      const std::vector<EdgeError> per_edge = perEdgeErrors(*m, pose_edges, cfg.metrics.assoc_max_dt_s);
       writePerEdgeCsv(dir / "per_edge.csv", per_edge);
       if (!edge_labels.empty()) j["drift_by_label"] = driftByLabel(per_edge, edge_labels);
     }
@@ -337,7 +337,7 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
     j["map_median_dist_m"] = acc.median_m;
     j["map_p95_dist_m"] = acc.p95_m;
     j["map_far_share"] = acc.clamped_share;
-    j["map_accuracy_max_m"] = cfg.map_accuracy_max_m;  // distances are clamped here
+    j["map_accuracy_max_m"] = cfg.metrics.map_accuracy_max_m;  // distances are clamped here
     // The same after the estimate's alignment onto the ground truth (the ATE's T_gt_est): what is
     // left is the map's own deformation, not where the run started drifting from.
     const MapAccuracy aligned = *map.alignedAccuracy();
@@ -359,8 +359,8 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   j["reliability"] = reliabilityJson(slam);
 
   if (m) {
-    plotTopView(dir / "trajectory_top.png", *m, cfg.plot_size_px);
-    plotErrorAlongDistance(dir / "error_along_distance.png", *m, cfg.plot_size_px);
+    plotTopView(dir / "trajectory_top.png", *m, cfg.metrics.plot_size_px);
+    plotErrorAlongDistance(dir / "error_along_distance.png", *m, cfg.metrics.plot_size_px);
   }
   writeFileAtomic(dir / "metrics.json", j.dump(2) + "\n");
   staging.commit();

@@ -19,7 +19,7 @@ struct RingPoint {
 
 void extractRing(const std::vector<RingPoint>& ring, const Config& cfg, FeatureSet& out,
                  Cloud& less_flat_all) {
-  const int w = cfg.curvature_half_window;
+  const int w = cfg.features.curvature_half_window;
   const int n = static_cast<int>(ring.size());
   if (n < 2 * w + 2) return;
   std::vector<float> curv(static_cast<std::size_t>(n), 0.0f);
@@ -32,7 +32,7 @@ void extractRing(const std::vector<RingPoint>& ring, const Config& cfg, FeatureS
     curv[i] = diff * diff;
   }
   // Occluded points and points on surfaces parallel to the beam are unreliable (LOAM §V-A).
-  const float gap = static_cast<float>(cfg.occlusion_gap_m);
+  const float gap = static_cast<float>(cfg.features.occlusion_gap_m);
   for (int i = w; i < n - w - 1; ++i) {
     const float d1 = ring[i].range, d2 = ring[i + 1].range;
     if (std::abs(ring[i + 1].col - ring[i].col) < 10) {
@@ -58,9 +58,9 @@ void extractRing(const std::vector<RingPoint>& ring, const Config& cfg, FeatureS
   };
   const int start = w, end = n - w - 1;
   std::vector<int> order;
-  for (int s = 0; s < cfg.feature_sectors; ++s) {
-    const int sp = start + (end - start) * s / cfg.feature_sectors;
-    const int ep = start + (end - start) * (s + 1) / cfg.feature_sectors - 1;
+  for (int s = 0; s < cfg.features.feature_sectors; ++s) {
+    const int sp = start + (end - start) * s / cfg.features.feature_sectors;
+    const int ep = start + (end - start) * (s + 1) / cfg.features.feature_sectors - 1;
     if (sp >= ep) continue;
     order.resize(static_cast<std::size_t>(ep - sp + 1));
     std::iota(order.begin(), order.end(), sp);
@@ -68,14 +68,14 @@ void extractRing(const std::vector<RingPoint>& ring, const Config& cfg, FeatureS
     int count = 0;
     for (auto it = order.rbegin(); it != order.rend(); ++it) {
       const int i = *it;
-      if (curv[i] <= cfg.edge_curvature) break;
+      if (curv[i] <= cfg.features.edge_curvature) break;
       if (picked[i] || ring[i].ground) continue;
       ++count;
-      if (count <= cfg.sharp_per_sector) {
+      if (count <= cfg.features.sharp_per_sector) {
         lbl[i] = 2;
         out.sharp.push_back(ring[i].p);
         out.less_sharp.push_back(ring[i].p);
-      } else if (count <= cfg.less_sharp_per_sector) {
+      } else if (count <= cfg.features.less_sharp_per_sector) {
         lbl[i] = 1;
         out.less_sharp.push_back(ring[i].p);
       } else {
@@ -85,11 +85,11 @@ void extractRing(const std::vector<RingPoint>& ring, const Config& cfg, FeatureS
     }
     count = 0;
     for (int i : order) {
-      if (curv[i] >= cfg.surf_curvature) break;
+      if (curv[i] >= cfg.features.surf_curvature) break;
       if (picked[i] || !ring[i].ground) continue;
       lbl[i] = -1;
       out.flat.push_back(ring[i].p);
-      if (++count >= cfg.flat_per_sector) break;
+      if (++count >= cfg.features.flat_per_sector) break;
       markNeighbours(i);
     }
     for (int i = sp; i <= ep; ++i)
@@ -103,7 +103,7 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg) {
   FeatureSet out;
   Cloud less_flat_all;
   std::vector<RingPoint> ring;
-  const int stride = std::max(1, cfg.ground_column_stride);
+  const int stride = std::max(1, cfg.features.ground_column_stride);
   for (int r = 0; r < img.rows; ++r) {
     ring.clear();
     for (int c = 0; c < img.cols; ++c) {
@@ -120,7 +120,7 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg) {
     }
     extractRing(ring, cfg, out, less_flat_all);
   }
-  out.less_flat = voxelFilter(less_flat_all, cfg.less_flat_voxel_m);
+  out.less_flat = voxelFilter(less_flat_all, cfg.features.less_flat_voxel_m);
   return out;
 }
 

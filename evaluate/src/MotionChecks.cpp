@@ -20,29 +20,29 @@ Pose3 scaledMotion(const Pose3& m, double f) {
 }
 
 double maxTurnRate(const Config& cfg, double speed_mps) {
-  const double cap = cfg.max_step_change_deg * std::numbers::pi / 180.0 / 0.1;
-  if (cfg.max_lateral_accel_mps2 <= 0) return cap;
-  return std::min(cap, cfg.max_lateral_accel_mps2 / std::max(speed_mps, 0.5));
+  const double cap = cfg.odometry.max_step_change_deg * std::numbers::pi / 180.0 / 0.1;
+  if (cfg.odometry.max_lateral_accel_mps2 <= 0) return cap;
+  return std::min(cap, cfg.odometry.max_lateral_accel_mps2 / std::max(speed_mps, 0.5));
 }
 
 bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps) {
   const Pose3 d = pred.inverse() * result;
   const double scale = std::max(1.0, dt / 0.1);
-  const double max_rot = maxTurnRate(cfg, speed_mps) * dt + cfg.rotation_slack_deg * std::numbers::pi / 180.0;
-  return d.translation().norm() <= scale * cfg.max_step_change_m && rotationAngle(d) <= max_rot;
+  const double max_rot = maxTurnRate(cfg, speed_mps) * dt + cfg.odometry.rotation_slack_deg * std::numbers::pi / 180.0;
+  return d.translation().norm() <= scale * cfg.odometry.max_step_change_m && rotationAngle(d) <= max_rot;
 }
 
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt) {
   const Pose3 d = pred.inverse() * result;
   const double scale = std::max(1.0, dt / 0.1);
   const double yaw = std::abs(std::atan2(d.rotation()(1, 0), d.rotation()(0, 0)));
-  return d.translation().head<2>().norm() <= scale * cfg.odometry_translation_slack_m &&
-         yaw <= scale * cfg.odometry_rotation_slack_deg * std::numbers::pi / 180.0;
+  return d.translation().head<2>().norm() <= scale * cfg.odometry.wheel_translation_slack_m &&
+         yaw <= scale * cfg.odometry.wheel_rotation_slack_deg * std::numbers::pi / 180.0;
 }
 
 bool plausibleLoopCorrection(double correction_m, double driven_m, const Config& cfg) {
-  if (cfg.loop_max_correction_m < 0) return true;
-  return correction_m <= cfg.loop_max_correction_m + cfg.loop_correction_per_m * std::max(0.0, driven_m);
+  if (cfg.loop.max_correction_m < 0) return true;
+  return correction_m <= cfg.loop.max_correction_m + cfg.loop.correction_per_m * std::max(0.0, driven_m);
 }
 
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
@@ -59,10 +59,10 @@ Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
 }
 
 double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec) {
-  const double ref = std::hypot(cfg.odometry_prior_ref_noise_deg_s, cfg.odometry_prior_ref_bias_deg_s);
-  if (cfg.odometry_prior_sigma_deg <= 0 || !spec || !(ref > 0)) return cfg.odometry_prior_sigma_deg;
+  const double ref = std::hypot(cfg.odometry.prior_ref_noise_deg_s, cfg.odometry.prior_ref_bias_deg_s);
+  if (cfg.odometry.prior_sigma_deg <= 0 || !spec || !(ref > 0)) return cfg.odometry.prior_sigma_deg;
   const double gyro = std::hypot(spec->gyro_noise_deg_s, spec->gyro_bias_sigma_deg_s);
-  return std::max(cfg.odometry_prior_min_sigma_deg, cfg.odometry_prior_sigma_deg * gyro / ref);
+  return std::max(cfg.odometry.prior_min_sigma_deg, cfg.odometry.prior_sigma_deg * gyro / ref);
 }
 
 }  // namespace slamroute::evaluate

@@ -24,14 +24,14 @@ RangeImage projectScan(const Scan& scan, const LidarSpec& spec, const Config& cf
   img.point.assign(n, Eigen::Vector3f::Zero());
   img.ground.assign(n, 0);
   img.label.assign(n, RangeImage::kNoLabel);
-  const double min_r = std::max(cfg.min_range_m, spec.min_range_m);
+  const double min_r = std::max(cfg.features.min_range_m, spec.min_range_m);
   for (const ScanPoint& p : scan.points) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
     const double r = std::sqrt(double(p.x) * p.x + double(p.y) * p.y + double(p.z) * p.z);
     if (r < min_r || r > spec.max_range_m) continue;
     int row;
-    if (cfg.use_ring_field && p.ring >= 0 && p.ring < img.rows) {
-      row = cfg.ring_zero_is_bottom ? p.ring : img.rows - 1 - p.ring;
+    if (cfg.features.use_ring_field && p.ring >= 0 && p.ring < img.rows) {
+      row = cfg.features.ring_zero_is_bottom ? p.ring : img.rows - 1 - p.ring;
     } else {
       const double elev = std::atan2(double(p.z), std::hypot(double(p.x), double(p.y)));
       row = static_cast<int>(std::lround((elev - img.vfov_down_rad) / img.vres_rad));
@@ -52,11 +52,11 @@ RangeImage projectScan(const Scan& scan, const LidarSpec& spec, const Config& cf
 void segmentGround(RangeImage& img, const Config& cfg) {
   // Beams below ground_max_elevation_deg can see the road (LeGO-LOAM groundScanInd).
   const int ground_rows = std::clamp(
-      static_cast<int>(std::floor((cfg.ground_max_elevation_deg * kDeg - img.vfov_down_rad) /
+      static_cast<int>(std::floor((cfg.features.ground_max_elevation_deg * kDeg - img.vfov_down_rad) /
                                   img.vres_rad)) + 1,
       0, img.rows - 1);
-  const double max_angle = cfg.ground_angle_deg * kDeg;
-  const double mount = cfg.sensor_mount_angle_deg * kDeg;
+  const double max_angle = cfg.features.ground_angle_deg * kDeg;
+  const double mount = cfg.features.sensor_mount_angle_deg * kDeg;
   for (int c = 0; c < img.cols; ++c) {
     for (int r = 0; r < ground_rows; ++r) {
       const int lo = img.idx(r, c), up = img.idx(r + 1, c);
@@ -69,7 +69,7 @@ void segmentGround(RangeImage& img, const Config& cfg) {
 }
 
 void clusterRangeImage(RangeImage& img, const Config& cfg) {
-  const double theta = cfg.segment_theta_deg * kDeg;
+  const double theta = cfg.features.segment_theta_deg * kDeg;
   const double sin_h = std::sin(img.hres_rad), cos_h = std::cos(img.hres_rad);
   const double sin_v = std::sin(img.vres_rad), cos_v = std::cos(img.vres_rad);
   std::vector<int> queue;
@@ -109,8 +109,8 @@ void clusterRangeImage(RangeImage& img, const Config& cfg) {
       int rows_spanned = 0;
       for (bool b : row_hit) rows_spanned += b ? 1 : 0;
       const int size = static_cast<int>(queue.size());
-      const bool keep = size >= cfg.min_cluster_points ||
-                        (size >= cfg.min_line_cluster_points && rows_spanned >= cfg.min_cluster_rings);
+      const bool keep = size >= cfg.features.min_cluster_points ||
+                        (size >= cfg.features.min_line_cluster_points && rows_spanned >= cfg.features.min_cluster_rings);
       if (keep) {
         ++next_label;
       } else {

@@ -29,7 +29,7 @@ std::string row(const std::string& tables, const std::string& heading, const std
 
 TEST(ExperimentCli, PaperTablesOnThePlusNetAndResume) {
   const auto dir = test::cliTempDir("experiment_plus");
-  std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\n";
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\n";
   const std::string net = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml";
   const std::string cmd = "--seed 42 --config " + (dir / "fast.yaml").string() + " experiment paper --net " + net +
                           " --seeds 1 --sizes 20,30 --status-every 0 --out " + (dir / "out").string();

@@ -66,7 +66,7 @@ TEST(KittiCli, ASequenceFromADriveGivesTheDrivesResult) {
                               " --save-scans --sensor vlp16 --no-mesh --log-level warn");
   ASSERT_EQ(d.code, 0) << d.out;
   writeKittiSequence(dir / "drive", dir / "seq");
-  std::ofstream(dir / "lidar_only.yaml") << "evaluate:\n  use_odometry: false\n";
+  std::ofstream(dir / "lidar_only.yaml") << "evaluate:\n  odometry:\n    use_wheel_odometry: false\n";
   // A few seconds of the drive.
   const double t0 = readTum(dir / "drive/groundtruth.tum").front().t;
   const std::string common = "--log-level warn --config " + (dir / "lidar_only.yaml").string() +

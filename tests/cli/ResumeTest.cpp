@@ -67,7 +67,7 @@ Step evaluateStep(const fs::path& dir, const std::string& seed, const std::strin
 
 TEST(Resume, StampChangesWithArgumentsAndInputsButNotWithTheOutputOrLogLevel) {
   const fs::path dir = test::testTmp();
-  put(dir / "c.yaml", "evaluate:\n  scan_stride: 5\n");
+  put(dir / "c.yaml", "evaluate:\n  input:\n    scan_stride: 5\n");
   put(dir / "drive" / "groundtruth.tum", "0 0 0 0 0 0 0 1\n");
   put(dir / "eval" / "metrics.json", "{}");
   const std::string s0 = stepStamp(evaluateStep(dir, "42", "info"));
@@ -80,7 +80,7 @@ TEST(Resume, StampChangesWithArgumentsAndInputsButNotWithTheOutputOrLogLevel) {
   put(dir / "eval" / "metrics.json", "{\"ate_rmse_m\": 1}");  // the step's own output
   EXPECT_EQ(s0, stepStamp(evaluateStep(dir, "42", "info")));
   EXPECT_NE(s0, stepStamp(evaluateStep(dir, "7", "info")));
-  put(dir / "c.yaml", "evaluate:\n  scan_stride: 4\n");  // config content, same path
+  put(dir / "c.yaml", "evaluate:\n  input:\n    scan_stride: 4\n");  // config content, same path
   const std::string s1 = stepStamp(evaluateStep(dir, "42", "info"));
   EXPECT_NE(s0, s1);
   put(dir / "drive" / "groundtruth.tum", "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");  // an input folder
@@ -89,7 +89,7 @@ TEST(Resume, StampChangesWithArgumentsAndInputsButNotWithTheOutputOrLogLevel) {
 
 TEST(Resume, KeepsOnlyStepsWithAnOutputAndTheSameStamp) {
   const fs::path dir = test::testTmp();
-  put(dir / "c.yaml", "evaluate:\n  scan_stride: 5\n");
+  put(dir / "c.yaml", "evaluate:\n  input:\n    scan_stride: 5\n");
   put(dir / "drive" / "groundtruth.tum", "0 0 0 0 0 0 0 1\n");
   const Step s = evaluateStep(dir, "42", "info");
   // Nothing done yet: it runs, stamped.
@@ -123,7 +123,7 @@ TEST(Resume, KeepsOnlyStepsWithAnOutputAndTheSameStamp) {
 
 TEST(Resume, ACopiedRunFolderKeepsItsSteps) {
   const fs::path dir = test::testTmp();
-  put(dir / "a" / "c.yaml", "evaluate:\n  scan_stride: 5\n");
+  put(dir / "a" / "c.yaml", "evaluate:\n  input:\n    scan_stride: 5\n");
   put(dir / "a" / "drive" / "groundtruth.tum", "0 0 0 0 0 0 0 1\n");
   put(dir / "a" / "eval" / "metrics.json", "{}");
   const Step s = evaluateStep(dir / "a", "42", "info");

@@ -51,7 +51,7 @@ bool processMentions(const std::string& text) {
 TEST(RunCli, WholePipelineOnThePlusNet) {
   const auto dir = test::cliTempDir("run_plus");
   // A gyro twice as noisy as the default: evaluate must take its figures from odometry.yaml.
-  std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
   const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
                           std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
                           (dir / "out").string() + " --status-every 0.2";

@@ -82,11 +82,11 @@ TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
 TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
   const auto dir = test::cliTempDir("evaluate_bad_tile");
   const fs::path cfg = dir / "tile.yaml";
-  std::ofstream(cfg) << "evaluate:\n  map_tile_m: 0\n";
+  std::ofstream(cfg) << "evaluate:\n  output:\n    map_tile_m: 0\n";
   // The drive need not exist: the config is checked before anything is read.
   expectCleanFailure("--config " + cfg.string() + " evaluate --drive " + (dir / "drive").string() + " --out " +
                          (dir / "eval").string(),
-                     cfg.string() + ": evaluate.map_tile_m must be positive", dir, 1);
+                     cfg.string() + ": evaluate.output.map_tile_m: 0 must be >= 10", dir, 1);
 }
 
 TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {

@@ -71,7 +71,7 @@ TEST(EvaluationDisk, EstimateCoversTheMeasuredFiles) {
   // Ingolstadt, postman, 74.5 km: 36,479 keyframes of ~47.4 kB + map.pcd 488,214,226 B.
   EXPECT_GT(evaluationDiskGb(74.5, cfg), 36479 * 47.4e-6 + 0.488);
   EXPECT_LT(evaluationDiskGb(74.5, cfg), 3.0);
-  cfg.keyframe_clouds_on_disk = false;  // map.pcd and its tiles waiting for it (PcdWriter)
+  cfg.output.keyframe_clouds_on_disk = false;  // map.pcd and its tiles waiting for it (PcdWriter)
   EXPECT_GT(evaluationDiskGb(74.5, cfg), 2 * 0.488);
   EXPECT_LT(evaluationDiskGb(74.5, cfg), 1.3);
   EXPECT_EQ(evaluationDiskGb(-1.0, cfg), 0.0);

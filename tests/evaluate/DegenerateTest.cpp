@@ -40,7 +40,7 @@ class StreetSource : public ScanSource {
 TEST(Degenerate, EmptyAndNaNScansArePredicted) {
   const test::Scene scene = test::cityScene(80.0);
   Config cfg;
-  cfg.loop_closure = false;
+  cfg.loop.enabled = false;
   LidarSlam slam(cfg, smallSpec(), StreetSource::pose(0));
   StreetSource src(scene, 6, -1);
   EXPECT_EQ(slam.addScan(src.scan(0)), FrameStatus::Ok);
@@ -71,8 +71,8 @@ TEST(Degenerate, EmptyAndNaNScansArePredicted) {
 TEST(Degenerate, MissingScanFileIsSkipped) {
   StreetSource src(test::cityScene(80.0), 5, 2);
   Config cfg;
-  cfg.scan_stride = 1;  // every scan: the test names scans by index
-  cfg.loop_closure = false;
+  cfg.input.scan_stride = 1;  // every scan: the test names scans by index
+  cfg.loop.enabled = false;
   const SlamResult r = runSlam(src, cfg, StreetSource::pose(0));
   ASSERT_EQ(r.trajectory.size(), 5u);
   EXPECT_EQ(r.status[2], FrameStatus::Missing);
@@ -83,8 +83,8 @@ TEST(Degenerate, FeaturePoorSceneIsFlagged) {
   test::Scene flat;  // ground only: x, y and yaw are unobservable
   StreetSource src(flat, 4, -1);
   Config cfg;
-  cfg.scan_stride = 1;
-  cfg.loop_closure = false;
+  cfg.input.scan_stride = 1;
+  cfg.loop.enabled = false;
   const SlamResult r = runSlam(src, cfg, StreetSource::pose(0));
   ASSERT_EQ(r.status.size(), 4u);
   for (std::size_t i = 1; i < 4; ++i) EXPECT_NE(r.status[i], FrameStatus::Ok) << "scan " << i;

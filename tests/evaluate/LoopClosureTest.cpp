@@ -42,15 +42,15 @@ class LoopSource : public ScanSource {
 TEST(LoopClosure, FiresOnALoopAndLowersAte) {
   const LoopSource src;
   Config cfg;
-  cfg.scan_stride = 1;  // every scan of the synthetic lap
-  cfg.loop_min_time_gap_s = 10.0;  // the synthetic lap takes 20 s
+  cfg.input.scan_stride = 1;  // every scan of the synthetic lap
+  cfg.loop.min_time_gap_s = 10.0;  // the synthetic lap takes 20 s
   // The synthetic path enters its corners with an instant yaw-rate step (0 -> 8.6 deg per scan),
   // which no car does; let the plausibility gate accept it.
-  cfg.max_step_change_deg = 15.0;
-  cfg.max_lateral_accel_mps2 = 0;  // 86 deg/s at 15 m/s: 22 m/s^2, no car does that
-  cfg.loop_closure = false;
+  cfg.odometry.max_step_change_deg = 15.0;
+  cfg.odometry.max_lateral_accel_mps2 = 0;  // 86 deg/s at 15 m/s: 22 m/s^2, no car does that
+  cfg.loop.enabled = false;
   const SlamResult open = runSlam(src, cfg, src.pose(0));
-  cfg.loop_closure = true;
+  cfg.loop.enabled = true;
   const SlamResult closed = runSlam(src, cfg, src.pose(0));
   EXPECT_EQ(open.loops.size(), 0u);
   std::printf("loop candidates %d, closures %zu, unreliable open %zu\n", closed.loop_candidates,
@@ -59,7 +59,7 @@ TEST(LoopClosure, FiresOnALoopAndLowersAte) {
                                                      [](FrameStatus s) { return s != FrameStatus::Ok; })));
 
   ASSERT_GE(closed.loops.size(), 1u);
-  EXPECT_LT(closed.loops[0].fitness_m2, cfg.loop_fitness_m2);
+  EXPECT_LT(closed.loops[0].fitness_m2, cfg.loop.fitness_m2);
   const Trajectory gt = src.groundTruth();
   const double ate_open = compareTrajectories(open.trajectory, gt, {}).ate.rmse_m;
   const double ate_closed = compareTrajectories(closed.trajectory, gt, {}).ate.rmse_m;
@@ -72,10 +72,10 @@ TEST(LoopClosure, KeyframeCloudsOnDiskGiveTheSameRunBitForBit) {
   // clouds in a file (evaluate's default) both must be exactly what they are in memory.
   const LoopSource src;
   Config cfg;
-  cfg.scan_stride = 1;
-  cfg.loop_min_time_gap_s = 10.0;
-  cfg.max_step_change_deg = 15.0;
-  cfg.max_lateral_accel_mps2 = 0;
+  cfg.input.scan_stride = 1;
+  cfg.loop.min_time_gap_s = 10.0;
+  cfg.odometry.max_step_change_deg = 15.0;
+  cfg.odometry.max_lateral_accel_mps2 = 0;
   const SlamResult memory = runSlam(src, cfg, src.pose(0));
   const auto dir = slamroute::test::testTmp();
   const SlamResult disk = runSlam(src, cfg, src.pose(0), {}, std::nullopt, nullptr, dir);

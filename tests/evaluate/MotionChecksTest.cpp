@@ -75,13 +75,13 @@ TEST(MotionChecks, LevelledMovesRollAndPitchTowardsTheImuAndKeepsHeading) {
 
 TEST(MotionChecks, LoopCorrectionIsBoundedByTheDriftSinceTheLastClosure) {
   Config cfg;
-  cfg.loop_max_correction_m = 1.0;
-  cfg.loop_correction_per_m = 0.002;
+  cfg.loop.max_correction_m = 1.0;
+  cfg.loop.correction_per_m = 0.002;
   EXPECT_TRUE(plausibleLoopCorrection(0.9, 0.0, cfg));
   EXPECT_FALSE(plausibleLoopCorrection(3.0, 50.0, cfg));   // a 3 m jump 50 m after a closure
   EXPECT_TRUE(plausibleLoopCorrection(3.0, 1500.0, cfg));  // ... after 1.5 km it may be drift
   EXPECT_FALSE(plausibleLoopCorrection(3.0, 900.0, cfg));
-  cfg.loop_max_correction_m = -1.0;                         // no bound
+  cfg.loop.max_correction_m = -1.0;                         // no bound
   EXPECT_TRUE(plausibleLoopCorrection(100.0, 0.0, cfg));
 }
 
@@ -94,10 +94,10 @@ TEST(MotionChecks, YawPriorFollowsTheGyroSpecOfTheDrive) {
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, OdometrySpec{}), 0.0002);
   EXPECT_NEAR(yawPriorSigmaDeg(cfg, OdometrySpec{0, 0, 0.5, 1.0}), 0.2, 1e-12);
   Config off = cfg;  // the prior switched off stays off
-  off.odometry_prior_sigma_deg = 0.0;
+  off.odometry.prior_sigma_deg = 0.0;
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(off, OdometrySpec{}), 0.0);
   Config fixed = cfg;  // no reference: the configured sigma whatever the drive says
-  fixed.odometry_prior_ref_noise_deg_s = fixed.odometry_prior_ref_bias_deg_s = 0.0;
+  fixed.odometry.prior_ref_noise_deg_s = fixed.odometry.prior_ref_bias_deg_s = 0.0;
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(fixed, OdometrySpec{}), 0.02);
 }
 

@@ -21,7 +21,7 @@ TEST(Odometry, RecoversKnownRigidMotion) {
   delta.linear() = delta.linear() * Eigen::AngleAxisd(0.004, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Pose3 T2 = T1 * delta;
   Config cfg;
-  cfg.loop_closure = false;
+  cfg.loop.enabled = false;
   LidarSlam slam(cfg, spec, T1);
   EXPECT_EQ(slam.addScan(test::scanScene(scene, T1, spec, 0.0)), FrameStatus::Ok);
   EXPECT_NE(slam.addScan(test::scanScene(scene, T2, spec, 0.1)), FrameStatus::Missing);

@@ -17,8 +17,8 @@ double runJump(bool relocalize, Pose3& err) {
   const test::Scene scene = test::cityScene(100.0);
   const LidarSpec spec;
   Config cfg;
-  cfg.loop_closure = false;
-  cfg.relocalize = relocalize;
+  cfg.loop.enabled = false;
+  cfg.relocalise.enabled = relocalize;
   std::vector<Pose3> poses;
   for (int i = 0; i < 4; ++i) poses.push_back(test::poseXYZYaw(-10.0 + 0.8 * i, 0.3, 1.8, 0.0));
   poses.push_back(test::poseXYZYaw(-10.0 + 0.8 * 3 + 0.3, 0.3, 1.8, 95.0 * kDeg));  // the jump

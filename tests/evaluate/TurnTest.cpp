@@ -50,8 +50,8 @@ double finalYawErrorDeg(const SlamResult& r) {
 TEST(Turn, EveryScanWhileTurningFast) {
   const UTurnSource src;
   Config cfg;
-  cfg.loop_closure = false;
-  ASSERT_EQ(cfg.scan_stride, 2);
+  cfg.loop.enabled = false;
+  ASSERT_EQ(cfg.input.scan_stride, 2);
   const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
   // Every scan of the turn (t = 2.1 ... 4.0) is used; fewer than all 60 overall.
   int in_turn = 0;
@@ -66,9 +66,9 @@ TEST(Turn, EveryScanWhileTurningFast) {
 TEST(Turn, FixedStrideTakesHalfTheScans) {
   const UTurnSource src;
   Config cfg;
-  cfg.loop_closure = false;
-  cfg.dense_turn_rate_deg_s = 0;  // off
-  cfg.dense_after_failure_s = 0;
+  cfg.loop.enabled = false;
+  cfg.input.dense_turn_rate_deg_s = 0;  // off
+  cfg.input.dense_after_failure_s = 0;
   const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
   EXPECT_EQ(r.trajectory.size(), 30u);
 }
@@ -91,7 +91,7 @@ TEST(Turn, UTurnInAnOpenFieldFollowsTheWheelOdometry) {
   test::Scene field;  // ground only
   const UTurnSource src(field);
   Config cfg;
-  cfg.loop_closure = false;
+  cfg.loop.enabled = false;
   const Pose3 T0 = UTurnSource::pose(0), V0 = T0.inverse() * UTurnSource::pose(1);
   const SlamResult blind = runSlam(src, cfg, T0, {}, V0);
   EXPECT_GT(finalYawErrorDeg(blind), 90.0);
@@ -103,7 +103,7 @@ TEST(Turn, UTurnInAnOpenFieldFollowsTheWheelOdometry) {
                  UTurnSource::pose(static_cast<std::size_t>(std::lround(last.t / 0.1))).translation();
   EXPECT_LT(d.norm(), 0.2) << d.transpose();
   // use_odometry: false ignores it.
-  cfg.use_odometry = false;
+  cfg.odometry.use_wheel_odometry = false;
   EXPECT_GT(finalYawErrorDeg(runSlam(src, cfg, T0, {}, V0, &odo)), 90.0);
 }
 
@@ -111,7 +111,7 @@ TEST(Turn, UTurnInAnOpenFieldFollowsTheWheelOdometry) {
 TEST(Turn, OdometryKeepsTheUTurnInTheCityAccurate) {
   const UTurnSource src;
   Config cfg;
-  cfg.loop_closure = false;
+  cfg.loop.enabled = false;
   const WheelOdometry odo = uTurnOdometry();
   const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {},
                                UTurnSource::pose(0).inverse() * UTurnSource::pose(1), &odo);

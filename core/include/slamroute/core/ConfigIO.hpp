@@ -6,7 +6,8 @@
 //   template <class V> void visitFields(V& v, MyConfig& c) {
 //     v.field("inner_radius_m", c.inner_radius_m, "hollow cylinder inner radius [m]");
 //     v.section("lidar", c.lidar);   // nested struct with its own visitFields
-//   }
+//     v.moved("old_key", "lidar.new_key");  // a key that moved: loading it is an error naming
+//   }                                        // where it lives now
 //
 // dumpYaml() writes every field with its default and comment; loadYaml() overrides only the keys
 // present and rejects unknown keys (a typo in a config file is an error, not a silent default).
@@ -39,6 +40,7 @@ class Dumper {
     Dumper inner(os_, indent_ + 2);
     visitFields(inner, sub);
   }
+  void moved(const char*, const char*) {}
 
  private:
   void pad() { os_ << std::string(static_cast<std::size_t>(indent_), ' '); }
@@ -88,12 +90,17 @@ class Loader {
     visitFields(inner, sub);
     inner.checkUnknown();
   }
+  void moved(const char* old_key, const char* new_key) { moved_.emplace_back(old_key, new_key); }
   void checkUnknown() const {
     for (const auto& kv : node_) {
       const auto k = kv.first.as<std::string>();
       bool known = false;
       for (const auto& s : seen_) known = known || s == k;
-      if (!known) throw std::invalid_argument(where_ + ": unknown key '" + k + "'");
+      if (known) continue;
+      for (const auto& [old_key, new_key] : moved_)
+        if (old_key == k)
+          throw std::invalid_argument(where_ + ": key '" + k + "' is now '" + new_key + "'");
+      throw std::invalid_argument(where_ + ": unknown key '" + k + "'");
     }
   }
 
@@ -101,6 +108,7 @@ class Loader {
   YAML::Node node_;
   std::string where_;
   std::vector<std::string> seen_;
+  std::vector<std::pair<std::string, std::string>> moved_;
 };
 
 /// Full YAML text of a config struct with its current values and comments.

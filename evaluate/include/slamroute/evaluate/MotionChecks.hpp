@@ -17,7 +17,7 @@ double rotationAngle(const Pose3& T);
 Pose3 scaledMotion(const Pose3& m, double f);
 
 /// Highest turn rate a car can drive at `speed_mps` [rad/s]: lateral acceleration over speed,
-/// capped by cfg.max_step_change_deg per 0.1 s.
+/// capped by cfg.odometry.max_step_change_deg per 0.1 s.
 double maxTurnRate(const Config& cfg, double speed_mps);
 
 /// A registration that moves the pose far from the prediction within one frame interval `dt` [s]
@@ -27,13 +27,13 @@ bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double
 
 /// With wheel odometry + gyro the prediction itself is a measurement, good to centimetres and a
 /// fraction of a degree over one scan interval: a registration may move it at most
-/// cfg.odometry_translation_slack_m in x/y and cfg.odometry_rotation_slack_deg in yaw per 0.1 s,
+/// cfg.odometry.wheel_translation_slack_m in x/y and cfg.odometry.wheel_rotation_slack_deg in yaw per 0.1 s,
 /// or it slid along a featureless street or locked onto a few stray edges.
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt);
 
 /// A loop closure that moves the new keyframe by `correction_m` after `driven_m` metres since the
 /// last accepted closure is believable when the odometry can have drifted that far:
-/// correction <= cfg.loop_max_correction_m + cfg.loop_correction_per_m * driven (always true when
+/// correction <= cfg.loop.max_correction_m + cfg.loop.correction_per_m * driven (always true when
 /// loop_max_correction_m < 0).
 bool plausibleLoopCorrection(double correction_m, double driven_m, const Config& cfg);
 
@@ -44,9 +44,9 @@ bool plausibleLoopCorrection(double correction_m, double driven_m, const Config&
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w);
 
 /// Yaw sigma of the scan-to-map's prior towards the odometry, per 0.1 s [deg]: from the gyro's
-/// noise figures when the drive states them (cfg.odometry_prior_sigma_deg scaled by the root sum
+/// noise figures when the drive states them (cfg.odometry.prior_sigma_deg scaled by the root sum
 /// of squares of the gyro's noise and bias over that of the reference gyro it was tuned for, at
-/// least cfg.odometry_prior_min_sigma_deg), else cfg.odometry_prior_sigma_deg. A configured 0
+/// least cfg.odometry.prior_min_sigma_deg), else cfg.odometry.prior_sigma_deg. A configured 0
 /// (prior off) stays 0.
 double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec);
 

@@ -8,6 +8,7 @@
 // Unlike the plain Scan Context each cell also takes its neighbouring rings' heights, discounted
 // by a Gaussian (ring_spread): a wall a few metres away otherwise changes ring with a 1 m shift
 // of the vehicle and the column no longer meets itself (1 - cos = 1).
+#include <string>
 #include <vector>
 
 #include "slamroute/evaluate/Features.hpp"
@@ -21,8 +22,8 @@ struct PlaceRecognitionConfig {
   double ring_spread = 1.0;       ///< Gaussian width of the spread over rings [rings], 0 = none
   double max_distance = 0.3;      ///< a candidate matches below this descriptor distance (0..1)
   int ring_key_candidates = 10;   ///< nearest ring keys that get the full rotation search
-  /// Throws std::invalid_argument naming the first bad field ("place_recognition.<key>").
-  void validate() const;
+  /// Throws std::invalid_argument naming the first bad field ("WHERE.rings: 0 must be ...").
+  void validate(const std::string& where = "place_recognition") const;
 };
 template <class V>
 void visitFields(V& v, PlaceRecognitionConfig& c) {

@@ -30,7 +30,7 @@ RangeImage projectScan(const Scan& scan, const LidarSpec& spec, const Config& cf
 /// cfg.ground_angle_deg (LeGO-LOAM groundRemoval).
 void segmentGround(RangeImage& img, const Config& cfg);
 /// BFS clustering of non-ground cells (LeGO-LOAM labelComponents): neighbours join when the
-/// angle beta = atan2(d2 sin a, d1 - d2 cos a) exceeds cfg.segment_theta_deg. Small clusters are
+/// angle beta = atan2(d2 sin a, d1 - d2 cos a) exceeds cfg.features.segment_theta_deg. Small clusters are
 /// labelled kOutlier.
 void clusterRangeImage(RangeImage& img, const Config& cfg);
 

@@ -47,7 +47,7 @@ struct SlamResult {
   int loops_ambiguous = 0;              ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
   StageTimes times;
-  Cloud map;                            ///< world frame, voxel-filtered (cfg.map_voxel_m); empty when a MapSink took it
+  Cloud map;                            ///< world frame, voxel-filtered (cfg.output.map_voxel_m); empty when a MapSink took it
   std::size_t map_points = 0;           ///< points of the map (also when a MapSink took it)
 };
 
@@ -79,9 +79,9 @@ class LidarSlam {
   /// Turn rate [deg/s]: the gyro's at the last frame with odometry, else the current motion
   /// estimate's (0 before any motion is known).
   double turnRateDegPerS() const;
-  /// True while the vehicle turns faster than cfg.dense_turn_rate_deg_s or within
-  /// cfg.dense_after_failure_s of a failed or relocalised scan: the caller should then feed every
-  /// scan instead of every cfg.scan_stride-th.
+  /// True while the vehicle turns faster than cfg.input.dense_turn_rate_deg_s or within
+  /// cfg.input.dense_after_failure_s of a failed or relocalised scan: the caller should then feed every
+  /// scan instead of every cfg.input.scan_stride-th.
   bool wantsEveryScan() const;
   /// Ends the run and returns its results (trajectory, map, loops); call once: the keyframes'
   /// clouds are released as they are merged into the map.
@@ -92,9 +92,9 @@ class LidarSlam {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Runs the pipeline over a scan source: every cfg.scan_stride-th scan, and every scan while the
+/// Runs the pipeline over a scan source: every cfg.input.scan_stride-th scan, and every scan while the
 /// vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the motion from the
-/// source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when cfg.use_odometry). `progress(done, total)` is called after each scan.
+/// source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when cfg.odometry.use_wheel_odometry). `progress(done, total)` is called after each scan.
 /// A scan the source cannot produce is recorded as Missing and the run continues. `cloud_dir`:
 /// where the keyframe clouds go (LidarSlam::keepCloudsOnDisk; empty: memory). `map_sink`: where
 /// the map goes (LidarSlam::setMapSink; null: SlamResult::map).

@@ -12,7 +12,7 @@ class StridedScanSource : public ScanSource {
   /// Scans with start_s <= time <= end_s (end_s <= 0: to the end), every `stride`-th of them.
   StridedScanSource(const ScanSource& base, int stride, double start_s = 0.0, double end_s = 0.0)
       : base_(base), stride_(static_cast<std::size_t>(stride)) {
-    if (stride < 1) throw std::invalid_argument("evaluate.scan_stride must be >= 1");
+    if (stride < 1) throw std::invalid_argument("evaluate.input.scan_stride must be >= 1");
     std::size_t first = 0, last = base.size();
     while (first < last && base.time(first) < start_s) ++first;
     if (end_s > 0)

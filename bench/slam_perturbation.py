@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+# How stable a drive's SLAM result is: re-evaluates each drive with one weight or noise parameter
+# of the evaluate config changed by -1 % and +1 % and prints, per drive, the baseline ATE RMSE, the
+# largest relative change and the parameter that caused it (bench/RESULTS.md "Stability").
+# Usage: bench/slam_perturbation.py [--bin build/cli/slamroute] [--jobs 2]
+#        [--set SECTION.KEY=VALUE ...] [--seed 42] OUT_DIR DRIVE_DIR [DRIVE_DIR ...]
+# (--set evaluate settings every run starts from, e.g. --set odometry.use_wheel_odometry=false)
+# Evaluations go to OUT_DIR/<drive>/<param>_<sign>/ (kept, so a rerun resumes). Standard library only.
+import argparse, concurrent.futures, json, os, subprocess, sys
+
+# (section, key): the weights and noise figures of the SLAM (sigmas, robust kernel, blending).
+PARAMS = [
+    ("odometry", "prior_sigma_deg"), ("odometry", "prior_registration_sigma_m"),
+    ("odometry", "imu_tilt_weight"), ("odometry", "wheel_translation_slack_m"),
+    ("odometry", "wheel_rotation_slack_deg"), ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"),
+    ("loop", "graph_odom_sigma_m"), ("loop", "graph_odom_sigma_rad"), ("loop", "graph_loop_sigma_m"),
+    ("loop", "graph_loop_sigma_rad"), ("loop", "fitness_m2"),
+]
+
+
+def defaults(binary):
+    """Numeric evaluate defaults from `slamroute config --dump` (two-level YAML)."""
+    out = subprocess.run([binary, "config", "--dump"], check=True, capture_output=True, text=True).stdout
+    vals, top, sec = {}, None, None
+    for line in out.splitlines():
+        body = line.split("#")[0].rstrip()
+        if not body.strip():
+            continue
+        indent = len(body) - len(body.lstrip())
+        key, _, val = body.strip().partition(":")
+        if indent == 0:
+            top = key
+        elif indent == 2:
+            sec = key
+        elif indent == 4 and top == "evaluate" and val.strip():
+            try:
+                vals[(sec, key)] = float(val)
+            except ValueError:
+                pass
+    return vals
+
+
+def to_yaml(cfg):
+    lines = ["evaluate:"] + [f"  {sec}:\n" + "\n".join(f"    {k}: {v}" for k, v in kv.items())
+                              for sec, kv in cfg.items()]
+    return "\n".join(lines) + ("\n" if cfg else " {}\n")
+
+
+def evaluate(binary, seed, drive, out, yaml_text):
+    metrics = os.path.join(out, "metrics.json")
+    if not os.path.exists(metrics):
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        cfg = out + ".yaml"
+        with open(cfg, "w") as f:
+            f.write(yaml_text)
+        r = subprocess.run([binary, "--seed", str(seed), "--log-level", "warn", "--config", cfg, "evaluate",
+                            "--drive", drive, "--out", out], capture_output=True, text=True)
+        if r.returncode != 0:
+            sys.exit(f"{drive}: evaluate failed: {r.stderr.strip().splitlines()[-1:]}")
+    return json.load(open(metrics))["ate_rmse_m"]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--bin", default="build/cli/slamroute")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                    help="an evaluate setting every run starts from")
+    ap.add_argument("--seed", type=int, default=42)
+    ap.add_argument("out")
+    ap.add_argument("drives", nargs="+")
+    a = ap.parse_args()
+    base = {}
+    for item in a.set:
+        path, _, val = item.partition("=")
+        sec, _, key = path.partition(".")
+        if not (sec and key and val):
+            sys.exit(f"--set {item}: expected SECTION.KEY=VALUE")
+        base.setdefault(sec, {})[key] = val
+    dflt = defaults(a.bin)
+    missing = [p for p in PARAMS if p not in dflt]
+    if missing:
+        sys.exit(f"{a.bin}: config --dump lacks {missing}")
+    jobs = []
+    for d in a.drives:
+        name = os.path.basename(os.path.normpath(d))
+        jobs.append((d, name, "base", to_yaml(base)))
+        for sec, key in PARAMS:
+            for sign, f in (("minus", 0.99), ("plus", 1.01)):
+                cfg = {k: dict(v) for k, v in base.items()}
+                cfg.setdefault(sec, {})[key] = repr(dflt[(sec, key)] * f)
+                jobs.append((d, name, f"{sec}.{key}_{sign}", to_yaml(cfg)))
+    with concurrent.futures.ThreadPoolExecutor(a.jobs) as ex:
+        futs = {ex.submit(evaluate, a.bin, a.seed, d, os.path.join(a.out, n, tag), y): (n, tag)
+                for d, n, tag, y in jobs}
+        ate = {futs[f]: f.result() for f in concurrent.futures.as_completed(futs)}
+    print("| drive | ATE RMSE [m] | ATE range over +-1 % [m] | largest change [%] | caused by |")
+    print("|---|---|---|---|---|")
+    for d in a.drives:
+        n = os.path.basename(os.path.normpath(d))
+        base = ate[(n, "base")]
+        runs = {t: v for (dn, t), v in ate.items() if dn == n and t != "base"}
+        worst = max(runs, key=lambda t: abs(runs[t] - base))
+        lo, hi = min(runs.values()), max(runs.values())
+        print(f"| {n} | {base:.3f} | {lo:.3f} - {hi:.3f} | {100 * abs(runs[worst] - base) / base:.1f} | {worst} |")
+
+
+if __name__ == "__main__":
+    main()

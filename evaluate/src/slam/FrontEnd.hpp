@@ -1,0 +1,31 @@
+#pragma once
+// The SLAM's front end (LeGO-LOAM "imageProjection" + "featureAssociation", paper §3.3): motion
+// compensation of the sweep, range image, ground, clusters, edge and planar features, and the
+// feature clouds the keyframe and the scan-to-map take from them.
+#include "slamroute/core/Scan.hpp"
+#include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/Features.hpp"
+#include "slamroute/evaluate/Slam.hpp"
+
+namespace slamroute::evaluate::slam {
+
+struct PreparedScan {
+  FrameStatus status = FrameStatus::Ok;  ///< Empty / Invalid: nothing else is set
+  FeatureSet features;
+  Cloud kf_edges, kf_planes;    ///< voxel-filtered features a keyframe keeps (the local map)
+  Cloud src_edges, src_planes;  ///< the scan-to-map source, thinned to a fixed budget
+};
+
+/// The scan with each point moved from its firing time to the sweep's start (Scan::t):
+/// p_start = M(dt) p, with M(dt) the share dt / sweep_s of `sweep_motion`, the body's motion over
+/// sweep_s seconds (constant turn rate and speed within one sweep). Scans without point times are
+/// returned as they are.
+Scan deskewed(const Scan& scan, const Pose3& sweep_motion, double sweep_s);
+
+/// Steps 1-2 of the pipeline on one scan; accumulates the stage times.
+PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg, StageTimes& times);
+
+/// At most `max_n` points of `c`, evenly strided (voxel-sorted input: thins space uniformly).
+Cloud capped(Cloud c, int max_n);
+
+}  // namespace slamroute::evaluate::slam

@@ -1,0 +1,54 @@
+#include "KeyframeGraph.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace slamroute::evaluate::slam {
+
+void KeyframeGraph::keepCloudsOnDisk(const std::filesystem::path& dir) {
+  if (!kfs_.empty()) throw std::logic_error("KeyframeGraph::keepCloudsOnDisk: call it before the first keyframe");
+  clouds_ = std::make_unique<CloudStore>(dir);
+}
+
+void KeyframeGraph::add(double t, int frame, const Pose3& T_world, const Cloud& edges, const Cloud& planes,
+                        const Cloud& segmented) {
+  Keyframe kf;
+  kf.t = t;
+  kf.frame = frame;
+  kf.T_world = T_world;
+  kf.edges = edges;
+  kf.planes = planes;
+  kf.cloud = clouds_->add(voxelFilter(segmented, cfg_.output.map_voxel_m));
+  if (!kfs_.empty()) {
+    driven_since_loop_ += (T_world.translation() - kfs_.back().T_world.translation()).norm();
+    PoseGraphEdge e;
+    e.from = static_cast<int>(kfs_.size()) - 1;
+    e.to = e.from + 1;
+    e.T_from_to = kfs_.back().T_world.inverse() * T_world;
+    e.sigma_m = cfg_.loop.graph_odom_sigma_m;
+    e.sigma_rad = cfg_.loop.graph_odom_sigma_rad;
+    odom_edges_.push_back(e);
+  }
+  kfs_.push_back(std::move(kf));
+  // Only the recent keyframes feed the local map: free the features of older ones.
+  const std::size_t keep = static_cast<std::size_t>(std::max(cfg_.mapping.local_map_keyframes, 1));
+  if (kfs_.size() > keep) {
+    Keyframe& old = kfs_[kfs_.size() - 1 - keep];
+    Cloud().swap(old.edges);
+    Cloud().swap(old.planes);
+  }
+}
+
+void KeyframeGraph::closeLoop(const PoseGraphEdge& edge) {
+  loop_edges_.push_back(edge);
+  driven_since_loop_ = 0.0;
+  std::vector<Pose3> poses;
+  poses.reserve(kfs_.size());
+  for (const auto& kf : kfs_) poses.push_back(kf.T_world);
+  std::vector<PoseGraphEdge> edges = odom_edges_;
+  edges.insert(edges.end(), loop_edges_.begin(), loop_edges_.end());
+  optimizePoseGraph(poses, edges, 0);
+  for (std::size_t k = 0; k < kfs_.size(); ++k) kfs_[k].T_world = poses[k];
+}
+
+}  // namespace slamroute::evaluate::slam

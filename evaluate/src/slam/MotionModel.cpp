@@ -1,0 +1,101 @@
+#include "MotionModel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "slamroute/evaluate/MotionChecks.hpp"
+
+namespace slamroute::evaluate::slam {
+
+void MotionModel::setInitialMotion(const Pose3& T_first_second, double dt_s) {
+  if (!(dt_s > 0)) throw std::invalid_argument("initial motion: time step must be positive");
+  velocity_ = T_first_second;
+  velocity_dt_ = dt_s;
+  have_velocity_ = true;
+}
+
+void MotionModel::recordFrame(double t, const Pose3& T_world) {
+  T_world_last_ = T_world;
+  t_last_ = t;
+  started_ = true;
+}
+
+Pose3 MotionModel::predict(double t) const {
+  if (!started_) return T_world_last_;
+  const Pose3 v = scaledMotion(velocity_, (t - t_last_) / velocity_dt_);
+  if (odometry_.empty()) return T_world_last_ * v;
+  Pose3 m = odometry_.motion(t_last_, t);
+  if (have_velocity_) m.translation().z() = v.translation().z();
+  return T_world_last_ * m;
+}
+
+Prediction MotionModel::predictStep(double t) const {
+  Prediction p;
+  p.t = t;
+  p.T_world = predict(t);
+  p.dt = t - t_last_;
+  p.scale = std::max(1.0, p.dt / 0.1);
+  p.speed_mps = have_velocity_ ? velocity_.translation().norm() / velocity_dt_ : 0.0;
+  return p;
+}
+
+Pose3 MotionModel::motionOver(double t, double duration) const {
+  if (!odometry_.empty()) {
+    Pose3 m = odometry_.motion(t, t + duration);
+    if (have_velocity_) m.translation().z() = scaledMotion(velocity_, duration / velocity_dt_).translation().z();
+    return m;
+  }
+  if (!have_velocity_) return Pose3::Identity();
+  return scaledMotion(velocity_, duration / velocity_dt_);
+}
+
+bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const {
+  return plausible(pred, result, cfg_, step.dt, step.speed_mps) &&
+         (odometry_.empty() || plausibleWithOdometry(pred, result, cfg_, step.dt));
+}
+
+void MotionModel::addOdometryPrior(AlignOptions& o, const Prediction& step) const {
+  if (odometry_.empty()) return;
+  const OdometryConfig& c = cfg_.odometry;
+  o.prior = step.T_world;
+  // Sigmas grow with the frame interval like the slack; weight = (LiDAR sigma / prior sigma)^2.
+  const auto w = [&](double sigma) {
+    return sigma > 0 ? std::pow(c.prior_registration_sigma_m / (sigma * step.scale), 2) : 0.0;
+  };
+  o.prior_weight.setZero();
+  o.prior_weight(2) = w(c.prior_sigma_deg * std::numbers::pi / 180.0);
+  o.prior_weight(3) = o.prior_weight(4) = w(c.prior_sigma_m);
+}
+
+Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {
+  if (cfg_.odometry.imu_tilt_weight <= 0) return T_world;
+  const auto a = odometry_.attitude(t);
+  if (!a) return T_world;
+  return evaluate::levelled(T_world, a->roll_rad, a->pitch_rad, cfg_.odometry.imu_tilt_weight);
+}
+
+void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world, double dt) {
+  if (outcome == Outcome::Failed && have_velocity_) {
+    velocity_.linear() = scaledMotion(velocity_, cfg_.odometry.failed_turn_decay).linear();
+  } else if (outcome == Outcome::Relocalised && have_velocity_) {
+    velocity_.linear().setIdentity();
+  } else if (consecutive) {
+    velocity_ = T_good.inverse() * T_world;
+    velocity_dt_ = std::max(1e-3, dt);
+    have_velocity_ = true;
+    // A wrong pose must not make the prediction spin on: clamp to what a car can turn.
+    const double angle = rotationAngle(velocity_);
+    const double max_angle = maxTurnRate(cfg_, velocity_.translation().norm() / velocity_dt_) * velocity_dt_;
+    if (angle > max_angle) velocity_.linear() = scaledMotion(velocity_, max_angle / angle).linear();
+  }
+}
+
+double MotionModel::turnRateDegPerS() const {
+  if (!odometry_.empty() && started_) return std::abs(odometry_.yawRate(t_last_)) * 180.0 / std::numbers::pi;
+  if (!have_velocity_) return 0.0;
+  return rotationAngle(velocity_) / velocity_dt_ * 180.0 / std::numbers::pi;
+}
+
+}  // namespace slamroute::evaluate::slam

@@ -1,0 +1,71 @@
+#pragma once
+// The SLAM's motion model: where the vehicle is expected at the next scan (wheel odometry + gyro
+// when the drive has them, else constant velocity), what motion a registration may claim, and
+// the IMU's roll / pitch. It owns the last pose and the velocity estimate.
+#include "slamroute/core/Odometry.hpp"
+#include "slamroute/core/Types.hpp"
+#include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/Registration.hpp"
+
+namespace slamroute::evaluate::slam {
+
+/// What the motion model expects of the next scan.
+struct Prediction {
+  double t = 0.0;                     ///< time of the scan [s]
+  Pose3 T_world = Pose3::Identity();  ///< predicted pose
+  double dt = 0.1;                    ///< time since the last frame [s]
+  double scale = 1.0;                 ///< dt in units of 0.1 s, at least 1 (slacks grow with it)
+  double speed_mps = 0.0;             ///< current speed estimate (0 before any motion is known)
+};
+
+class MotionModel {
+ public:
+  /// Before the first frame the model stands at `T_world_first`.
+  MotionModel(const Config& cfg, const Pose3& T_world_first) : cfg_(cfg), T_world_last_(T_world_first) {}
+
+  void setOdometry(WheelOdometry odometry) { odometry_ = std::move(odometry); }
+  void setInitialMotion(const Pose3& T_first_second, double dt_s);
+  bool hasOdometry() const { return !odometry_.empty(); }
+  bool hasVelocity() const { return have_velocity_; }
+
+  /// Pose at time t: the odometry's planar motion (height from the velocity) or constant velocity.
+  Pose3 predict(double t) const;
+  Prediction predictStep(double t) const;
+  /// Motion from t over `duration` in the body frame at t (what a sweep moves while it spins).
+  Pose3 motionOver(double t, double duration) const;
+
+  /// `result` is a motion a car can make from `pred` within the step (and, with odometry, within
+  /// its slack).
+  bool plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const;
+  /// Prior of a scan-to-map towards the odometry's prediction (x, y, yaw); no-op without odometry.
+  void addOdometryPrior(AlignOptions& o, const Prediction& step) const;
+  /// Roll and pitch moved towards the IMU's at time t (OdometryConfig::imu_tilt_weight).
+  Pose3 levelled(const Pose3& T_world, double t) const;
+
+  /// How the last scan went, for the next prediction.
+  enum class Outcome { Registered, Failed, Relocalised };
+  /// Updates the velocity from a registered scan that directly follows the last good one
+  /// (`consecutive`): T_good -> T_world over dt; a failed scan keeps the speed and lets the turn
+  /// fade; a relocalised one is a correction, not motion (straight ahead at the same speed).
+  void update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world, double dt);
+  /// Records the pose the frame at t ended with (the next prediction starts there).
+  void recordFrame(double t, const Pose3& T_world);
+
+  Pose3 lastPose() const { return T_world_last_; }
+  double lastTime() const { return t_last_; }
+  bool started() const { return started_; }
+  /// Turn rate [deg/s]: the gyro's at the last frame with odometry, else the velocity's.
+  double turnRateDegPerS() const;
+
+ private:
+  const Config& cfg_;
+  WheelOdometry odometry_;
+  Pose3 T_world_last_;
+  double t_last_ = 0.0;
+  bool started_ = false;
+  Pose3 velocity_ = Pose3::Identity();  ///< motion over velocity_dt_, body frame
+  double velocity_dt_ = 0.1;            ///< [s]
+  bool have_velocity_ = false;          ///< measured (or given), not the initial guess
+};
+
+}  // namespace slamroute::evaluate::slam

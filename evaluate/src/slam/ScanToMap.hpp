@@ -1,0 +1,44 @@
+#pragma once
+// Scan-to-map registration (LeGO-LOAM "mapOptimization"): the scan's features against a local
+// map of the recent keyframes' features near the vehicle, rebuilt as the vehicle moves.
+#include "FrontEnd.hpp"
+#include "KeyframeGraph.hpp"
+#include "MotionModel.hpp"
+#include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/Registration.hpp"
+
+namespace slamroute::evaluate::slam {
+
+class ScanToMap {
+ public:
+  explicit ScanToMap(const Config& cfg) : cfg_(cfg) {}
+
+  /// Rebuilds the local map around the newest keyframe after mapping.local_map_update_m of
+  /// motion, or at once with `force` (after a loop closure moved the keyframes).
+  void rebuild(const KeyframeGraph& graph, bool force);
+  const FeatureMap& localMap() const { return map_; }
+
+  /// Registration options of the fine stage, with the odometry prior when there is odometry.
+  AlignOptions options(const MotionModel& motion, const Prediction& step) const;
+  /// Where the fine registration starts: `init`, or a coarse registration with a wide radius
+  /// from it when scans are far apart and the speed is known (a stride-2 turn can leave the
+  /// prediction several degrees off) and its result is plausible.
+  Pose3 coarse(const PreparedScan& scan, const Pose3& init, const AlignOptions& fine,
+               const MotionModel& motion, const Prediction& step) const;
+  /// The fine registration from `start`.
+  AlignResult align(const PreparedScan& scan, const Pose3& start, const AlignOptions& fine) const {
+    return alignFeatures(map_, scan.src_edges, scan.src_planes, start, fine);
+  }
+  /// The planar features alone (an open street: they still fix height, roll and pitch).
+  AlignResult alignPlanes(const PreparedScan& scan, const Pose3& start, const AlignOptions& o) const {
+    return alignFeatures(map_, {}, scan.src_planes, start, o);
+  }
+
+ private:
+
+  const Config& cfg_;
+  FeatureMap map_;                           ///< world frame
+  Vec3 built_at_ = Vec3::Constant(1e18);     ///< where the local map was last rebuilt
+};
+
+}  // namespace slamroute::evaluate::slam

@@ -1,0 +1,95 @@
+// The keyframe graph and the loop closer of the SLAM (evaluate/src/slam/) on known geometry.
+#include <gtest/gtest.h>
+
+#include "SyntheticScene.hpp"
+#include "slam/KeyframeGraph.hpp"
+#include "slam/LoopCloser.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+Pose3 at(double x, double y) {
+  Pose3 T = Pose3::Identity();
+  T.translation() = Vec3(x, y, 1.8);
+  return T;
+}
+
+Cloud cloudOf(const Scan& s) {
+  Cloud c;
+  for (const auto& p : s.points) c.emplace_back(p.x, p.y, p.z);
+  return c;
+}
+
+test::Scene townBlock() {
+  test::Scene scene;
+  scene.boxes = {{{8, 4, 0}, {20, 9, 12}},   {{-15, 6, 0}, {-4, 14, 7}},  {{5, -12, 0}, {9, -6, 20}},
+                 {{-9, -10, 0}, {-7, -8, 4}}, {{25, -3, 0}, {26, 3, 9}},   {{-30, -20, 0}, {-18, -14, 15}}};
+  return scene;
+}
+
+TEST(KeyframeGraph, OdometryEdgesChainTheKeyframesAndALoopPullsThemBack) {
+  Config cfg;
+  cfg.mapping.local_map_keyframes = 2;
+  slam::KeyframeGraph g(cfg);
+  const Cloud some = {{1, 0, 0}, {0, 1, 0}};
+  for (int k = 0; k < 4; ++k) g.add(10.0 * k, k, at(10.0 * k, 0.0), some, some, some);
+  EXPECT_EQ(g.size(), 4u);
+  EXPECT_NEAR(g.drivenSinceLoop(), 30.0, 1e-9);
+  EXPECT_TRUE(g.at(1).edges.empty());  // beyond the local map's reach: features freed
+  EXPECT_FALSE(g.at(3).edges.empty());
+  // The loop says keyframe 3 sits 27 m from keyframe 0, not 30: the graph spreads the 3 m.
+  PoseGraphEdge loop;
+  loop.from = 0;
+  loop.to = 3;
+  loop.T_from_to = at(27.0, 0.0);
+  loop.T_from_to.translation().z() = 0;
+  loop.sigma_m = 0.01;
+  loop.sigma_rad = 0.001;
+  g.closeLoop(loop);
+  EXPECT_NEAR(g.at(3).T_world.translation().x(), 27.0, 0.05);
+  EXPECT_NEAR(g.at(0).T_world.translation().x(), 0.0, 1e-9);  // the first keyframe is held
+  EXPECT_EQ(g.drivenSinceLoop(), 0.0);
+}
+
+TEST(LoopCloser, ARevisitWithDriftClosesAndCorrectsIt) {
+  Config cfg;
+  const test::Scene scene = townBlock();
+  const LidarSpec spec = lidarPreset("vlp16");
+  slam::KeyframeGraph g(cfg);
+  slam::LoopCloser closer(cfg);
+  StageTimes times;
+  // Out along the street and back: the last keyframe is at the first place, estimated 0.6 m off.
+  const double xs[] = {0, 10, 20, 30, 0};
+  for (int k = 0; k < 5; ++k) {
+    const Cloud c = cloudOf(test::scanScene(scene, at(xs[k], 0), spec));
+    const Pose3 estimate = k == 4 ? at(0.6, 0.2) : at(xs[k], 0);
+    g.add(20.0 * k, k, estimate, c, c, c);
+    EXPECT_EQ(closer.tryClose(g, times), k == 4) << "keyframe " << k;
+  }
+  ASSERT_EQ(closer.stats().loops.size(), 1u);
+  const LoopClosure& l = closer.stats().loops.front();
+  EXPECT_EQ(l.from_keyframe, 0);
+  EXPECT_EQ(l.to_keyframe, 4);
+  EXPECT_NEAR(l.correction_m, std::hypot(0.6, 0.2), 0.1);
+  EXPECT_LT(l.T_old_new.translation().norm(), 0.1);  // the measured relative pose: same place
+  EXPECT_LT((g.back().T_world.translation() - at(0, 0).translation()).norm(), 0.35);
+}
+
+TEST(LoopCloser, NothingOldEnoughOrNearEnoughIsNoCandidate) {
+  Config cfg;
+  const test::Scene scene = townBlock();
+  const LidarSpec spec = lidarPreset("vlp16");
+  slam::KeyframeGraph g(cfg);
+  slam::LoopCloser closer(cfg);
+  StageTimes times;
+  const Cloud c = cloudOf(test::scanScene(scene, at(0, 0), spec));
+  g.add(0.0, 0, at(0, 0), c, c, c);
+  g.add(10.0, 1, at(0.5, 0), c, c, c);  // near, but only 10 s later
+  EXPECT_FALSE(closer.tryClose(g, times));
+  g.add(100.0, 2, at(40, 0), c, c, c);  // old enough, but 40 m away in the estimate
+  EXPECT_FALSE(closer.tryClose(g, times));
+  EXPECT_EQ(closer.stats().candidates, 0);
+}
+
+}  // namespace
+}  // namespace slamroute::evaluate

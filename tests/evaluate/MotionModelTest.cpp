@@ -1,0 +1,101 @@
+// The SLAM's motion model (evaluate/src/slam/MotionModel): prediction, velocity updates and
+// plausibility with known motions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "slam/MotionModel.hpp"
+#include "slamroute/evaluate/MotionChecks.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+Pose3 forward(double x, double yaw_deg = 0.0) {
+  Pose3 T = Pose3::Identity();
+  T.translation() = Vec3(x, 0, 0);
+  T.linear() = Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  return T;
+}
+
+TEST(MotionModel, ConstantVelocityExtrapolatesTheGivenMotion) {
+  const Config cfg;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setInitialMotion(forward(1.0), 0.1);  // 10 m/s
+  m.recordFrame(0.0, Pose3::Identity());
+  EXPECT_NEAR(m.predict(0.25).translation().x(), 2.5, 1e-12);
+  const slam::Prediction p = m.predictStep(0.2);
+  EXPECT_NEAR(p.speed_mps, 10.0, 1e-12);
+  EXPECT_NEAR(p.scale, 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(p.t, 0.2);
+}
+
+TEST(MotionModel, WheelOdometryPredictsInsteadOfTheVelocity) {
+  const Config cfg;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setInitialMotion(forward(1.0), 0.1);
+  m.setOdometry(WheelOdometry({{0.0, 5.0, 0.0}, {10.0, 5.0, 0.0}}));  // 5 m/s straight
+  m.recordFrame(0.0, Pose3::Identity());
+  EXPECT_NEAR(m.predict(1.0).translation().x(), 5.0, 1e-9);
+  EXPECT_NEAR(m.motionOver(2.0, 0.1).translation().x(), 0.5, 1e-9);
+}
+
+TEST(MotionModel, BeforeTheFirstFrameItStandsAtTheStartPose) {
+  const Config cfg;
+  const Pose3 start = forward(7.0, 30.0);
+  slam::MotionModel m(cfg, start);
+  EXPECT_FALSE(m.started());
+  EXPECT_TRUE(m.predict(5.0).isApprox(start));
+}
+
+TEST(MotionModel, ARegisteredStepSetsTheVelocityButNotAnImpossibleTurnRate) {
+  const Config cfg;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.recordFrame(0.0, Pose3::Identity());
+  // 1 m and 45 deg in 0.1 s: 450 deg/s, far beyond a car at 10 m/s.
+  m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(1.0, 45.0), 0.1);
+  EXPECT_TRUE(m.hasVelocity());
+  const double rate = m.turnRateDegPerS();
+  EXPECT_NEAR(rate, maxTurnRate(cfg, 10.0) * 180.0 / std::numbers::pi, 1e-6);
+  EXPECT_LT(rate, 450.0);
+}
+
+TEST(MotionModel, AFailedStepKeepsTheSpeedAndLetsTheTurnFade) {
+  const Config cfg;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.recordFrame(0.0, Pose3::Identity());
+  m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(1.0, 1.0), 0.1);
+  const double before = m.turnRateDegPerS();
+  m.update(slam::MotionModel::Outcome::Failed, false, Pose3::Identity(), forward(9.0, 90.0), 0.1);
+  EXPECT_NEAR(m.turnRateDegPerS(), before * cfg.odometry.failed_turn_decay, 1e-9);
+  EXPECT_NEAR(m.predictStep(0.1).speed_mps, 10.0, 1e-9);
+  m.update(slam::MotionModel::Outcome::Relocalised, false, Pose3::Identity(), forward(9.0, 90.0), 0.1);
+  EXPECT_NEAR(m.turnRateDegPerS(), 0.0, 1e-9);
+}
+
+TEST(MotionModel, AJumpOfMetresInOneScanIsNotPlausible) {
+  const Config cfg;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setInitialMotion(forward(1.0), 0.1);
+  m.recordFrame(0.0, Pose3::Identity());
+  const slam::Prediction p = m.predictStep(0.1);
+  EXPECT_TRUE(m.plausibleStep(p.T_world, p.T_world * forward(0.3), p));
+  EXPECT_FALSE(m.plausibleStep(p.T_world, p.T_world * forward(5.0), p));
+}
+
+TEST(MotionModel, TheOdometryPriorWeighsYawOnlyByDefault) {
+  const Config cfg;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  AlignOptions o;
+  slam::Prediction p;
+  m.addOdometryPrior(o, p);
+  EXPECT_EQ(o.prior_weight.norm(), 0.0);  // no odometry: no prior
+  m.setOdometry(WheelOdometry({{0.0, 5.0, 0.0}, {10.0, 5.0, 0.0}}));
+  m.addOdometryPrior(o, p);
+  const double sigma = cfg.odometry.prior_sigma_deg * std::numbers::pi / 180.0;
+  EXPECT_NEAR(o.prior_weight(2), std::pow(cfg.odometry.prior_registration_sigma_m / sigma, 2), 1e-6);
+  EXPECT_EQ(o.prior_weight(3), 0.0);
+}
+
+}  // namespace
+}  // namespace slamroute::evaluate
