@@ -23,7 +23,8 @@ def evaluations(path):  # (name, eval dir, drive dir) for one command-line PATH
             found.append((os.path.basename(path.rstrip('/')) + '/' + name, ev,
                           os.path.join(path, 'drives', name)))
     if not found:
-        sys.exit('false_closures.py: %s: no eval/*/metrics.json (and not EVAL_DIR:DRIVE_DIR)' % path)
+        sys.exit('false_closures.py: %s: no eval/*/metrics.json (and not EVAL_DIR:DRIVE_DIR)'
+                 % path)
     return found
 
 
@@ -51,12 +52,13 @@ def main():
           '| largest yaw error [deg] |' % a.max_error_m)
     print('|---|---|---|---|---|---|')
     for name, n, unknown, false, worst, worst_yaw in rows:
-        print('| %s | %d | %d | %d | %s | %s |' % (name, n, unknown, false, fmt(worst), fmt(worst_yaw)))
+        print('| %s | %d | %d | %d | %s | %s |'
+              % (name, n, unknown, false, fmt(worst), fmt(worst_yaw)))
     total = lambda i: sum(r[i] for r in rows)
     worst = max((r[4] for r in rows if r[4] is not None), default=None)
     worst_yaw = max((r[5] for r in rows if r[5] is not None), default=None)
-    print('| **all %d** | %d | %d | **%d** | %s | %s |' % (len(rows), total(1), total(2), total(3), fmt(worst),
-                                                         fmt(worst_yaw)))
+    print('| **all %d** | %d | %d | **%d** | %s | %s |'
+          % (len(rows), total(1), total(2), total(3), fmt(worst), fmt(worst_yaw)))
 
 
 if __name__ == '__main__':

@@ -45,7 +45,8 @@ nlohmann::json evaluateDriveFolder(const std::string& drive_dir, const std::stri
   const fs::path drive(drive_dir);
   if (!fs::is_directory(drive)) throw std::invalid_argument(drive_dir + ": not a drive folder");
   if (!fs::exists(drive / drive_files::kGroundTruth))
-    throw std::invalid_argument(drive_dir + ": no " + drive_files::kGroundTruth + " (not a drive folder?)");
+    throw std::invalid_argument(drive_dir + ": no " + drive_files::kGroundTruth +
+                                " (not a drive folder?)");
   const LidarSpec spec = evaluate::readSensorSpec(drive / drive_files::kSensor);
   std::unique_ptr<ScanSource> source;
   if (fs::is_directory(drive / drive_files::kScanDir)) {
@@ -81,7 +82,8 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
     bool no_loop_closure = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* sub = app.add_subcommand("evaluate", "Run LiDAR SLAM on a drive or a KITTI sequence and measure the error (paper 3.3)");
+  auto* sub = app.add_subcommand(
+      "evaluate", "Run LiDAR SLAM on a drive or a KITTI sequence and measure the error (paper 3.3)");
   auto* drive = sub->add_option("--drive", o->drive, "drive folder written by `slamroute drive`");
   auto* kitti = sub->add_option("--kitti", o->kitti,
                                 "KITTI odometry sequence folder (velodyne/*.bin, times.txt; "
@@ -116,8 +118,8 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
                                  ? evaluateKittiSequence(o->kitti, o->sensor, o->out, cfg)
                                  : evaluateDriveFolder(o->drive, o->out, cfg);
     if (!j.contains("ate_rmse_m")) {
-      std::cout << "no ground truth: trajectory metrics skipped; " << j["scans"] << " scans, loop closures "
-                << j["loop_closures"] << " -> " << o->out << "\n";
+      std::cout << "no ground truth: trajectory metrics skipped; " << j["scans"]
+                << " scans, loop closures " << j["loop_closures"] << " -> " << o->out << "\n";
       return;
     }
     std::cout << "ATE rmse " << j["ate_rmse_m"] << " m, RPE " << j["rpe_trans_pct"] << " %, loop closures "

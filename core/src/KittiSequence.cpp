@@ -43,8 +43,10 @@ void checkScanFiles(const fs::path& velodyne, const fs::path& times, std::size_t
   for (std::size_t i = 0; i < n; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "%06zu.bin", i);
-    if (!fs::exists(velodyne / name)) throw bad(velodyne / name, "missing (scans are numbered "
-                                                "000000.bin on, one per line of times.txt)");
+    if (!fs::exists(velodyne / name))
+      throw bad(velodyne / name,
+                "missing (scans are numbered "
+                "000000.bin on, one per line of times.txt)");
   }
 }
 
@@ -52,8 +54,9 @@ void checkScanFiles(const fs::path& velodyne, const fs::path& times, std::size_t
 Trajectory lidarGroundTruth(const fs::path& dir, const ScanSource& scans) {
   const fs::path poses = dir / kitti_files::kPoses, calib = dir / kitti_files::kCalib;
   if (!fs::exists(calib))
-    throw bad(calib, "not found; the ground truth in poses.txt is in the camera frame and "
-                     "calib.txt's Tr brings it into the LiDAR's");
+    throw bad(calib,
+              "not found; the ground truth in poses.txt is in the camera frame and "
+              "calib.txt's Tr brings it into the LiDAR's");
   const Pose3 Tr = readKittiCalibTr(calib);
   Trajectory gt = readKittiPoses(poses);
   if (gt.size() != scans.size())
@@ -81,7 +84,8 @@ Pose3 readKittiCalibTr(const fs::path& calib) {
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) m(r, c) = v[static_cast<std::size_t>(4 * r + c)];
     const Eigen::JacobiSVD<Mat3> svd(m.leftCols<3>(), Eigen::ComputeFullU | Eigen::ComputeFullV);
-    if ((svd.singularValues().array() - 1.0).abs().maxCoeff() > 1e-3 || m.leftCols<3>().determinant() < 0)
+    if ((svd.singularValues().array() - 1.0).abs().maxCoeff() > 1e-3 ||
+        m.leftCols<3>().determinant() < 0)
       throw bad(calib, "Tr: the 3x3 part is not a rotation");
     Pose3 T = Pose3::Identity();
     T.linear() = svd.matrixU() * svd.matrixV().transpose();  // KITTI prints ~9 digits

@@ -214,8 +214,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   return evaluateScans(drive, all_scans, gt, out, cfg, edge_labels);
 }
 
-nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans, const Trajectory& gt,
-                             const fs::path& out, const Config& cfg,
+nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
+                             const Trajectory& gt, const fs::path& out, const Config& cfg,
                              const std::map<std::string, std::string>& edge_labels) {
   // The window here; the stride (with denser sampling in turns) inside runSlam.
   const StridedScanSource source(all_scans, 1, cfg.input.start_s, cfg.input.end_s);
@@ -276,7 +276,8 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   const fs::path dir = staging.path();
   warnIfShortOfDisk(dir, out, pathLength(gt) / 1000.0, slam_cfg);
   MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, gt.empty() ? nullptr : &gt,
-                cfg.metrics.assoc_max_dt_s, cfg.metrics.map_accuracy_max_m, cfg.metrics.plot_size_px);
+                cfg.metrics.assoc_max_dt_s, cfg.metrics.map_accuracy_max_m,
+                cfg.metrics.plot_size_px);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
                             odometry.empty() ? nullptr : &odometry,
@@ -320,7 +321,8 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
   if (fs::exists(pe_path)) {
     pose_edges = readPoseEdges(pe_path);
     if (m) {
-      const std::vector<EdgeError> per_edge = perEdgeErrors(*m, pose_edges, cfg.metrics.assoc_max_dt_s);
+      const std::vector<EdgeError> per_edge =
+          perEdgeErrors(*m, pose_edges, cfg.metrics.assoc_max_dt_s);
       writePerEdgeCsv(dir / "per_edge.csv", per_edge);
       if (!edge_labels.empty()) j["drift_by_label"] = driftByLabel(per_edge, edge_labels);
     }

@@ -21,7 +21,8 @@ TEST(FalseClosuresScript, CountsClosuresFartherOffThanTheLimit) {
   fs::create_directories(root / "eval/d1");
   // (0,0) heading east; (10,0) heading north; (0.5,0) heading west
   std::ofstream(root / "drives/d1/groundtruth.tum")
-      << "# t x y z qx qy qz qw\n0 0 0 0 0 0 0 1\n10 10 0 0 0 0 0.7071067811865476 0.7071067811865476\n"
+      << "# t x y z qx qy qz qw\n0 0 0 0 0 0 0 1\n10 10 0 0 0 0 0.7071067811865476 "
+         "0.7071067811865476\n"
       << "20 0.5 0 0 0 0 1 0\n";
   // true: 0.2 m and 1 deg off; false: in the frame of the pose at t=10 the truth is (0, 9.5)
   std::ofstream(root / "eval/d1/metrics.json") << R"({"loops": [

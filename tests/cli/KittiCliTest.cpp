@@ -23,7 +23,8 @@ const std::string kGrid = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/gr
 Pose3 cameraFromVelodyne() {
   Pose3 T = Pose3::Identity();
   T.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
-  T.linear() = T.linear() * Eigen::AngleAxisd(0.02, Vec3(0.3, 0.5, 0.8).normalized()).toRotationMatrix();
+  T.linear() =
+      T.linear() * Eigen::AngleAxisd(0.02, Vec3(0.3, 0.5, 0.8).normalized()).toRotationMatrix();
   T.translation() = Vec3(-0.004, -0.076, -0.27);
   return T;
 }
@@ -43,7 +44,8 @@ std::string row12(const Pose3& T) {
 void writeKittiSequence(const fs::path& drive, const fs::path& seq) {
   fs::create_directories(seq / "velodyne");
   for (const auto& e : fs::directory_iterator(drive / "scans"))
-    if (e.path().filename() != "times.txt") fs::copy_file(e.path(), seq / "velodyne" / e.path().filename());
+    if (e.path().filename() != "times.txt")
+      fs::copy_file(e.path(), seq / "velodyne" / e.path().filename());
   fs::copy_file(drive / "scans/times.txt", seq / "times.txt");
   const Pose3 Tr = cameraFromVelodyne();
   std::string poses;
@@ -61,12 +63,13 @@ nlohmann::json metrics(const fs::path& eval) {
 TEST(KittiCli, ASequenceFromADriveGivesTheDrivesResult) {
   const auto dir = test::cliTempDir("kitti_sequence");
   std::ofstream(dir / "route.json") << R"(["g00_g01"])";
-  const auto d = test::runCli("--seed 3 drive --net " + kGrid + " --route " + (dir / "route.json").string() +
-                              " --out " + (dir / "drive").string() +
+  const auto d = test::runCli("--seed 3 drive --net " + kGrid + " --route " +
+                              (dir / "route.json").string() + " --out " + (dir / "drive").string() +
                               " --save-scans --sensor vlp16 --no-mesh --log-level warn");
   ASSERT_EQ(d.code, 0) << d.out;
   writeKittiSequence(dir / "drive", dir / "seq");
-  std::ofstream(dir / "lidar_only.yaml") << "evaluate:\n  odometry:\n    use_wheel_odometry: false\n";
+  std::ofstream(dir / "lidar_only.yaml")
+      << "evaluate:\n  odometry:\n    use_wheel_odometry: false\n";
   // A few seconds of the drive.
   const double t0 = readTum(dir / "drive/groundtruth.tum").front().t;
   const std::string common = "--log-level warn --config " + (dir / "lidar_only.yaml").string() +
@@ -87,15 +90,18 @@ TEST(KittiCli, ASequenceFromADriveGivesTheDrivesResult) {
   EXPECT_NEAR(a["ate_max_m"].get<double>(), b["ate_max_m"].get<double>(), 1e-6);
   EXPECT_NEAR(a["evaluated_length_m"].get<double>(), b["evaluated_length_m"].get<double>(), 1e-6);
   // Both estimates are in the drive's world frame: Tr^-1 (Tr T Tr^-1) Tr = T.
-  const Trajectory ea = readTum(dir / "eval_drive/estimate.tum"), eb = readTum(dir / "eval_kitti/estimate.tum");
+  const Trajectory ea = readTum(dir / "eval_drive/estimate.tum"),
+                   eb = readTum(dir / "eval_kitti/estimate.tum");
   ASSERT_EQ(ea.size(), eb.size());
-  EXPECT_LT((ea.back().T_world_body.translation() - eb.back().T_world_body.translation()).norm(), 1e-5);
+  EXPECT_LT((ea.back().T_world_body.translation() - eb.back().T_world_body.translation()).norm(),
+            1e-5);
 
   fs::remove(dir / "seq/poses.txt");  // no ground truth: the SLAM runs, the metrics are skipped
   const auto blind = test::runCli(common + "--kitti " + (dir / "seq").string() +
                                   " --sensor vlp16 --out " + (dir / "eval_blind").string());
   ASSERT_EQ(blind.code, 0) << blind.out;
-  EXPECT_NE(blind.out.find("no ground truth: trajectory metrics skipped"), std::string::npos) << blind.out;
+  EXPECT_NE(blind.out.find("no ground truth: trajectory metrics skipped"), std::string::npos)
+      << blind.out;
   const auto c = metrics(dir / "eval_blind");
   EXPECT_EQ(c["trajectory_metrics"], "skipped: no ground truth");
   EXPECT_FALSE(c.contains("ate_rmse_m"));
@@ -118,11 +124,13 @@ fs::path tinySequence(const fs::path& dir) {
 }
 
 void expectOneLineError(const fs::path& dir, const std::string& fragment) {
-  const auto r = test::runCli("evaluate --kitti " + (dir / "seq").string() + " --out " + (dir / "eval").string());
+  const auto r = test::runCli("evaluate --kitti " + (dir / "seq").string() + " --out " +
+                              (dir / "eval").string());
   EXPECT_NE(r.code, 0) << r.out;
   EXPECT_EQ(test::countLines(r.out), 1) << r.out;
   EXPECT_NE(r.out.find("slamroute: error: "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find(fragment), std::string::npos) << "expected '" << fragment << "' in " << r.out;
+  EXPECT_NE(r.out.find(fragment), std::string::npos)
+      << "expected '" << fragment << "' in " << r.out;
   EXPECT_FALSE(fs::exists(dir / "eval"));
 }
 
@@ -153,7 +161,8 @@ TEST(KittiCli, ABadSequenceFailsWithOneLineNamingTheFile) {
   EXPECT_NE(both.code, 0) << both.out;
   const auto neither = test::runCli("evaluate --out " + (dir / "eval").string());
   EXPECT_NE(neither.code, 0);
-  EXPECT_NE(neither.out.find("evaluate needs --drive DIR or --kitti SEQ_DIR"), std::string::npos) << neither.out;
+  EXPECT_NE(neither.out.find("evaluate needs --drive DIR or --kitti SEQ_DIR"), std::string::npos)
+      << neither.out;
 }
 
 }  // namespace
