@@ -5,12 +5,10 @@
 # counts) and does another closure within 15 s repeat its correction magnitude within 0.3 m?
 # Prints how many true and false closures such a neighbour would keep.
 # Usage: bench/loop_closure_consistency.py OUT_DIR [OUT_DIR ...]. Python 3 standard library only.
-import bisect, glob, json, math, os, sys
+import glob, json, math, os, sys
 
-here = os.path.dirname(os.path.abspath(__file__))
-ns = {}
-exec(open(os.path.join(here, 'loop_closure_check.py')).read().split('\nrows = []')[0], ns)
-tum, relative = ns['tum'], ns['relative']
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from loop_closure_check import ground_truth_at, relative  # noqa: E402
 
 true_rows, false_rows = [], []
 for root in sys.argv[1:]:
@@ -18,9 +16,7 @@ for root in sys.argv[1:]:
         if not os.path.exists(ev + '/metrics.json'):
             continue
         m = json.load(open(ev + '/metrics.json'))
-        gt = tum(root + '/drives/' + os.path.basename(ev) + '/groundtruth.tum')
-        ts = [x[0] for x in gt]
-        at = lambda t: gt[min(bisect.bisect_left(ts, t - 1e-6), len(gt) - 1)]
+        at = ground_truth_at(root + '/drives/' + os.path.basename(ev))
         loops = m['loops']
         for i, c in enumerate(loops):
             err = math.dist(relative(at(c['t_old']), at(c['t_new'])), c['t_old_new'])

@@ -1,5 +1,7 @@
 // `slamroute evaluate --drive DIR --out DIR2`: paper §3.3 — LeGO-LOAM-style SLAM on a drive's
 // scans, then ATE/RPE/per-edge/map metrics against the drive's ground truth.
+// `slamroute evaluate --kitti SEQ_DIR --out DIR2`: the same on a KITTI odometry sequence
+// (core/KittiSequence.hpp), against its poses.txt when it has one.
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -7,6 +9,7 @@
 
 #include "Commands.hpp"
 #include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/KittiSequence.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -15,18 +18,81 @@
 #include "slamroute/simulate/World.hpp"
 
 namespace slamroute::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Street kind (rich / wall / open) per SUMO edge of a simulated drive, so that metrics.json
+/// shows the drift per kind of street; empty for a drive without world.yaml.
+std::map<std::string, std::string> streetKinds(const fs::path& drive) {
+  std::map<std::string, std::string> kinds;
+  if (!fs::exists(drive / drive_files::kWorld)) return kinds;
+  const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
+  const SumoNet net = SumoNet::read(wf.net);
+  const simulate::World world = simulate::World::build(net, wf.world, wf.seed);
+  for (const auto& e : net.edges) {
+    if (e.isInternal()) continue;
+    try {
+      kinds[e.id] = simulate::streetKindName(world.streetKind(e.id));
+    } catch (const std::exception&) {
+    }
+  }
+  return kinds;
+}
+
+nlohmann::json evaluateDriveFolder(const std::string& drive_dir, const std::string& out,
+                                   const evaluate::Config& cfg) {
+  const fs::path drive(drive_dir);
+  if (!fs::is_directory(drive)) throw std::invalid_argument(drive_dir + ": not a drive folder");
+  if (!fs::exists(drive / drive_files::kGroundTruth))
+    throw std::invalid_argument(drive_dir + ": no " + drive_files::kGroundTruth +
+                                " (not a drive folder?)");
+  const LidarSpec spec = evaluate::readSensorSpec(drive / drive_files::kSensor);
+  std::unique_ptr<ScanSource> source;
+  if (fs::is_directory(drive / drive_files::kScanDir)) {
+    source = std::make_unique<KittiScanSource>(drive / drive_files::kScanDir, spec);
+  } else {
+    logInfo("evaluate: no scans/ in the drive, regenerating scans with the simulator");
+    source = std::make_unique<simulate::SimulatedScanSource>(drive);
+  }
+  logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + drive_dir);
+  return evaluate::evaluateDrive(drive, *source, out, cfg, streetKinds(drive));
+}
+
+/// A KITTI sequence has no wheel odometry; without poses.txt there is nothing to measure against.
+nlohmann::json evaluateKittiSequence(const std::string& seq_dir, const std::string& sensor,
+                                     const std::string& out, const evaluate::Config& cfg) {
+  const KittiSequence seq = readKittiSequence(seq_dir, lidarPreset(sensor));
+  logInfo("evaluate: " + std::to_string(seq.scans->size()) + " scans from " + seq_dir +
+          " (sensor " + sensor + ")");
+  if (seq.ground_truth.empty())
+    logInfo("evaluate: " + seq_dir + " has no " + kitti_files::kPoses +
+            ": trajectory metrics skipped, the estimate starts at the identity");
+  return evaluate::evaluateScans(seq_dir, *seq.scans, seq.ground_truth, out, cfg);
+}
+
+}  // namespace
 
 void registerEvaluate(CLI::App& app, Context& ctx) {
   struct Opts {
-    std::string drive, out;
+    std::string drive, kitti, sensor = "paper", out;
     double segment_m = -1.0;
     int scan_stride = 0;
     double from_s = -1.0, to_s = -1.0;
     bool no_loop_closure = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* sub = app.add_subcommand("evaluate", "Run LiDAR SLAM on a drive and measure the error (paper 3.3)");
-  sub->add_option("--drive", o->drive, "drive folder written by `slamroute drive`")->required();
+  auto* sub = app.add_subcommand(
+      "evaluate", "Run LiDAR SLAM on a drive or a KITTI sequence and measure the error (paper 3.3)");
+  auto* drive = sub->add_option("--drive", o->drive, "drive folder written by `slamroute drive`");
+  auto* kitti = sub->add_option("--kitti", o->kitti,
+                                "KITTI odometry sequence folder (velodyne/*.bin, times.txt; "
+                                "optional poses.txt + calib.txt as ground truth)");
+  drive->excludes(kitti);
+  sub->add_option("--sensor", o->sensor,
+                  "LiDAR of a --kitti sequence (rings come from the points' elevation)")
+      ->check(CLI::IsMember({"paper", "vlp16", "hdl32"}))
+      ->needs(kitti);
   sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")->required();
   sub->add_option("--segment", o->segment_m, "extra RPE segment length [m] (default: config)");
   sub->add_flag("--no-loop-closure", o->no_loop_closure, "disable loop closure");
@@ -38,7 +104,6 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
       ->check(CLI::PositiveNumber);
   sub->callback([&ctx, o] {
     ctx.load();
-    namespace fs = std::filesystem;
     evaluate::Config cfg = ctx.cfg.evaluate;
     if (o->segment_m > 0) cfg.metrics.rpe_segment_m = o->segment_m;
     if (o->no_loop_closure) cfg.loop.enabled = false;
@@ -47,35 +112,16 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
     if (o->to_s > 0) cfg.input.end_s = o->to_s;
     if (cfg.input.end_s > 0 && cfg.input.end_s <= cfg.input.start_s)
       throw std::invalid_argument("--to must be later than --from");
-    const fs::path drive(o->drive);
-    if (!fs::is_directory(drive)) throw std::invalid_argument(o->drive + ": not a drive folder");
-    if (!fs::exists(drive / drive_files::kGroundTruth))
-      throw std::invalid_argument(o->drive + ": no " + drive_files::kGroundTruth + " (not a drive folder?)");
-    const LidarSpec spec = evaluate::readSensorSpec(drive / drive_files::kSensor);
-    std::unique_ptr<ScanSource> source;
-    if (fs::is_directory(drive / drive_files::kScanDir)) {
-      source = std::make_unique<KittiScanSource>(drive / drive_files::kScanDir, spec);
-    } else {
-      logInfo("evaluate: no scans/ in the drive, regenerating scans with the simulator");
-      source = std::make_unique<simulate::SimulatedScanSource>(drive);
+    if (o->drive.empty() == o->kitti.empty())
+      throw std::invalid_argument("evaluate needs --drive DIR or --kitti SEQ_DIR");
+    const nlohmann::json j = o->drive.empty()
+                                 ? evaluateKittiSequence(o->kitti, o->sensor, o->out, cfg)
+                                 : evaluateDriveFolder(o->drive, o->out, cfg);
+    if (!j.contains("ate_rmse_m")) {
+      std::cout << "no ground truth: trajectory metrics skipped; " << j["scans"]
+                << " scans, loop closures " << j["loop_closures"] << " -> " << o->out << "\n";
+      return;
     }
-    logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + o->drive);
-    // Simulated drives: label each street with the kind the world lines it with (rich / wall /
-    // open), so metrics.json shows the drift per kind of street.
-    std::map<std::string, std::string> kinds;
-    if (fs::exists(drive / drive_files::kWorld)) {
-      const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
-      const SumoNet net = SumoNet::read(wf.net);
-      const simulate::World world = simulate::World::build(net, wf.world, wf.seed);
-      for (const auto& e : net.edges) {
-        if (e.isInternal()) continue;
-        try {
-          kinds[e.id] = simulate::streetKindName(world.streetKind(e.id));
-        } catch (const std::exception&) {
-        }
-      }
-    }
-    const nlohmann::json j = evaluate::evaluateDrive(drive, *source, o->out, cfg, kinds);
     std::cout << "ATE rmse " << j["ate_rmse_m"] << " m, RPE " << j["rpe_trans_pct"] << " %, loop closures "
               << j["loop_closures"] << ", " << j["evaluated_length_m"] << " m evaluated -> " << o->out << "\n";
   });

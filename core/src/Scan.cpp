@@ -85,18 +85,22 @@ Scan readKittiScan(const std::filesystem::path& path) {
 }
 
 KittiScanSource::KittiScanSource(std::filesystem::path dir, LidarSpec spec)
+    : KittiScanSource(dir, spec, dir / "times.txt") {}
+
+KittiScanSource::KittiScanSource(std::filesystem::path dir, LidarSpec spec,
+                                 const std::filesystem::path& times)
     : dir_(std::move(dir)), spec_(spec) {
-  std::istringstream in(readFile(dir_ / "times.txt"));
+  std::istringstream in(readFile(times));
   std::string line;
   while (std::getline(in, line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     try {
       times_.push_back(std::stod(line));
     } catch (const std::exception&) {
-      throw std::invalid_argument((dir_ / "times.txt").string() + ": bad time '" + line + "'");
+      throw std::invalid_argument(times.string() + ": bad time '" + line + "'");
     }
   }
-  if (times_.empty()) throw std::invalid_argument((dir_ / "times.txt").string() + ": no scans listed");
+  if (times_.empty()) throw std::invalid_argument(times.string() + ": no scans listed");
 }
 
 Scan KittiScanSource::scan(std::size_t i) const {

@@ -209,10 +209,16 @@ void warnIfShortOfDisk(const fs::path& dir, const fs::path& out, double km, cons
 
 nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans, const fs::path& out,
                              const Config& cfg, const std::map<std::string, std::string>& edge_labels) {
-  // The window here; the stride (with denser sampling in turns) inside runSlam.
-  const StridedScanSource source(all_scans, 1, cfg.input.start_s, cfg.input.end_s);
   const Trajectory gt = readTum(drive / drive_files::kGroundTruth);
   if (gt.empty()) throw std::runtime_error((drive / drive_files::kGroundTruth).string() + ": empty");
+  return evaluateScans(drive, all_scans, gt, out, cfg, edge_labels);
+}
+
+nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
+                             const Trajectory& gt, const fs::path& out, const Config& cfg,
+                             const std::map<std::string, std::string>& edge_labels) {
+  // The window here; the stride (with denser sampling in turns) inside runSlam.
+  const StridedScanSource source(all_scans, 1, cfg.input.start_s, cfg.input.end_s);
   if (source.size() == 0)
     throw std::runtime_error(drive.string() + (all_scans.size() == 0 ? ": the drive has no scans"
                                                                      : ": no scans in the time window"));
@@ -223,7 +229,10 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   Trajectory first = {StampedPose{source.time(0), Pose3::Identity()}};
   if (source.size() > 1) first.push_back(StampedPose{source.time(1), Pose3::Identity()});
   const auto p0 = associate(first, gt, tol);
-  const Pose3 T0 = p0.empty() ? gt.front().T_world_body : p0.front().gt;
+  // Without ground truth the estimate starts at the identity.
+  const Pose3 T0 = !p0.empty()   ? p0.front().gt
+                   : gt.empty() ? Pose3::Identity()
+                                : gt.front().T_world_body;
   std::optional<Pose3> V0;
   if (p0.size() == 2) V0 = p0[0].gt.inverse() * p0[1].gt;
 
@@ -266,7 +275,8 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   StagingDir staging(out, "metrics.json");
   const fs::path dir = staging.path();
   warnIfShortOfDisk(dir, out, pathLength(gt) / 1000.0, slam_cfg);
-  MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, &gt, cfg.metrics.assoc_max_dt_s, cfg.metrics.map_accuracy_max_m,
+  MapOutput map(dir / "map.pcd", mesh ? &*mesh : nullptr, gt.empty() ? nullptr : &gt,
+                cfg.metrics.assoc_max_dt_s, cfg.metrics.map_accuracy_max_m,
                 cfg.metrics.plot_size_px);
   Progress progress("evaluate: SLAM", source.size());
   SlamResult slam = runSlam(source, slam_cfg, T0, [&](std::size_t d, std::size_t) { progress.update(d); }, V0,
@@ -276,10 +286,13 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   writeTum(dir / "estimate.tum", slam.trajectory);
   map.commit();
 
-  const TrajectoryMetrics m = compareTrajectories(slam.trajectory, gt, metricsOptions(cfg));
-  nlohmann::json j = trajectoryJson(m);
-  j["initial_pose"] =
-      "ground-truth pose of the first scan and motion to the second (estimate is in the world frame)";
+  std::optional<TrajectoryMetrics> m;
+  if (!gt.empty()) m = compareTrajectories(slam.trajectory, gt, metricsOptions(cfg));
+  nlohmann::json j = m ? trajectoryJson(*m) : nlohmann::json::object();
+  if (!m) j["trajectory_metrics"] = "skipped: no ground truth";
+  j["initial_pose"] = m ? "ground-truth pose of the first scan and motion to the second (estimate "
+                          "is in the world frame)"
+                        : "identity (no ground truth)";
   j["gyro_standstill_s"] = gyro.standstill_s;
   j["gyro_bias_deg_s"] = gyro.final_bias_rad_s * 180.0 / std::numbers::pi;
   j["motion_prior"] = odometry.empty() ? "constant velocity" : "wheel odometry + gyro (odometry.csv)";
@@ -309,9 +322,12 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   const fs::path pe_path = drive / drive_files::kPoseEdges;
   if (fs::exists(pe_path)) {
     pose_edges = readPoseEdges(pe_path);
-    const std::vector<EdgeError> per_edge = perEdgeErrors(m, pose_edges, cfg.metrics.assoc_max_dt_s);
-    writePerEdgeCsv(dir / "per_edge.csv", per_edge);
-    if (!edge_labels.empty()) j["drift_by_label"] = driftByLabel(per_edge, edge_labels);
+    if (m) {
+      const std::vector<EdgeError> per_edge =
+          perEdgeErrors(*m, pose_edges, cfg.metrics.assoc_max_dt_s);
+      writePerEdgeCsv(dir / "per_edge.csv", per_edge);
+      if (!edge_labels.empty()) j["drift_by_label"] = driftByLabel(per_edge, edge_labels);
+    }
   }
   addCoverage(drive, pose_edges, j);
 
@@ -346,8 +362,10 @@ nlohmann::json evaluateDrive(const fs::path& drive, const ScanSource& all_scans,
   j["scans_per_s"] = t.total > 0 ? n / t.total : 0.0;
   j["reliability"] = reliabilityJson(slam);
 
-  plotTopView(dir / "trajectory_top.png", m, cfg.metrics.plot_size_px);
-  plotErrorAlongDistance(dir / "error_along_distance.png", m, cfg.metrics.plot_size_px);
+  if (m) {
+    plotTopView(dir / "trajectory_top.png", *m, cfg.metrics.plot_size_px);
+    plotErrorAlongDistance(dir / "error_along_distance.png", *m, cfg.metrics.plot_size_px);
+  }
   writeFileAtomic(dir / "metrics.json", j.dump(2) + "\n");
   staging.commit();
   return j;

@@ -2,9 +2,8 @@
 // every rotation (PlaceDatabase.hpp).
 #include "slamroute/evaluate/PlaceDatabase.hpp"
 
-#include <nanoflann.hpp>
-
 #include <algorithm>
+#include <nanoflann.hpp>
 #include <stdexcept>
 #include <string>
 

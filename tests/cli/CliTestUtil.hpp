@@ -16,8 +16,9 @@ struct CliResult {
   std::string out;  ///< stdout and stderr interleaved
 };
 
-inline CliResult runCli(const std::string& args) {
-  const std::string cmd = std::string(SLAMROUTE_BINARY) + " " + args + " 2>&1";
+/// Runs a shell command line with stderr joined to stdout.
+inline CliResult runCommand(const std::string& command) {
+  const std::string cmd = command + " 2>&1";
   CliResult r;
   FILE* p = ::popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -27,6 +28,10 @@ inline CliResult runCli(const std::string& args) {
   const int status = ::pclose(p);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+inline CliResult runCli(const std::string& args) {
+  return runCommand(std::string(SLAMROUTE_BINARY) + " " + args);
 }
 
 inline std::filesystem::path cliTempDir(const std::string& name) {

@@ -68,6 +68,9 @@ class KittiScanSource : public ScanSource {
  public:
   /// `dir` holds NNNNNN.bin and times.txt. Ring indices are recovered from the elevation angle.
   KittiScanSource(std::filesystem::path dir, LidarSpec spec);
+  /// The same with the times in another file (a KITTI odometry sequence keeps times.txt beside
+  /// its velodyne/ folder).
+  KittiScanSource(std::filesystem::path dir, LidarSpec spec, const std::filesystem::path& times);
   std::size_t size() const override { return times_.size(); }
   double time(std::size_t i) const override { return times_.at(i); }
   Scan scan(std::size_t i) const override;

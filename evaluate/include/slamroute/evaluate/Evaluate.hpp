@@ -32,13 +32,24 @@ nlohmann::json reliabilityJson(const SlamResult& r);
 /// when the folder has less free.
 double evaluationDiskGb(double route_km, const Config& cfg);
 
-/// Runs the whole evaluation of a drive folder and writes the outputs into `out`.
-/// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
-/// still computed after SE(3) alignment. Returns the metrics.json content.
-/// `edge_labels` (optional): a label per SUMO edge (e.g. the simulated world's street kind);
-/// metrics.json then gets "drift_by_label": the length-weighted mean drift per label.
+/// Runs the whole evaluation of a drive folder and writes the outputs into `out`: evaluateScans
+/// with the drive's groundtruth.tum (throws when it is missing or empty).
 nlohmann::json evaluateDrive(const std::filesystem::path& drive, const ScanSource& source,
                              const std::filesystem::path& out, const Config& cfg,
+                             const std::map<std::string, std::string>& edge_labels = {});
+
+/// Runs the whole evaluation of the scans of `folder` and writes the outputs into `out`.
+/// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
+/// still computed after SE(3) alignment. Returns the metrics.json content. An empty
+/// `ground_truth` (a recording without one): the estimate starts at the identity and
+/// metrics.json has no trajectory metrics ("trajectory_metrics": "skipped: ..."). The drive-folder
+/// files that `folder` holds are used: odometry.csv / odometry.yaml (motion prior), world.ply
+/// (map accuracy), pose_edges.csv (per-edge drift), world.yaml (coverage).
+/// `edge_labels` (optional): a label per SUMO edge (e.g. the simulated world's street kind);
+/// metrics.json then gets "drift_by_label": the length-weighted mean drift per label.
+nlohmann::json evaluateScans(const std::filesystem::path& folder, const ScanSource& source,
+                             const Trajectory& ground_truth, const std::filesystem::path& out,
+                             const Config& cfg,
                              const std::map<std::string, std::string>& edge_labels = {});
 
 }  // namespace slamroute::evaluate

@@ -19,9 +19,9 @@ struct LoopVerifyOptions {
 };
 
 struct LoopVerification {
-  IcpResult icp;                 ///< T_target_source: the query keyframe in the target's frame
-  double yaw_change_deg = 0.0;   ///< |ICP yaw - descriptor yaw| relative to the candidate [deg]
-  bool accepted = false;         ///< passes opt.accept and opt.max_yaw_change_deg
+  IcpResult icp;                ///< T_target_source: the query keyframe in the target's frame
+  double yaw_change_deg = 0.0;  ///< |ICP yaw - descriptor yaw| relative to the candidate [deg]
+  bool accepted = false;        ///< passes opt.accept and opt.max_yaw_change_deg
 };
 
 /// `target`: the candidate's cloud (or submap) in frame F; `T_F_candidate`: the candidate

@@ -8,6 +8,7 @@
 // Unlike the plain Scan Context each cell also takes its neighbouring rings' heights, discounted
 // by a Gaussian (ring_spread): a wall a few metres away otherwise changes ring with a 1 m shift
 // of the vehicle and the column no longer meets itself (1 - cos = 1).
+#include <string>
 #include <vector>
 
 #include "slamroute/evaluate/Features.hpp"
