@@ -139,11 +139,7 @@ void validateLoop(const LoopConfig& c) {
         c.place_gate_max_m, "must be >= radius_m");
   check(c.place_max_yaw_change_deg > 0 && c.place_max_yaw_change_deg <= 180, "place_max_yaw_change_deg",
         c.place_max_yaw_change_deg, "must be in (0, 180]");
-  try {
-    c.place.validate();
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("evaluate.loop.") + e.what());
-  }
+  c.place.validate("evaluate.loop.place");
 }
 
 void validateOutput(const OutputConfig& c, const MetricsConfig& m) {

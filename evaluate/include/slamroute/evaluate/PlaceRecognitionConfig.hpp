@@ -1,6 +1,7 @@
 #pragma once
 // Settings of the place descriptor and its database (PlaceDescriptor.hpp, PlaceDatabase.hpp).
 // YAML: evaluate.loop.place.
+#include <string>
 
 namespace slamroute::evaluate {
 
@@ -11,8 +12,8 @@ struct PlaceRecognitionConfig {
   double ring_spread = 1.0;       ///< Gaussian width of the spread over rings [rings], 0 = none
   double max_distance = 0.3;      ///< a candidate matches below this descriptor distance (0..1)
   int ring_key_candidates = 10;   ///< nearest ring keys that get the full rotation search
-  /// Throws std::invalid_argument naming the first bad field ("place.<key>").
-  void validate() const;
+  /// Throws std::invalid_argument naming the first bad field ("WHERE.rings: 0 must be ...").
+  void validate(const std::string& where = "place") const;
 };
 template <class V>
 void visitFields(V& v, PlaceRecognitionConfig& c) {
