@@ -8,6 +8,7 @@
 #include "Commands.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/DriveChecks.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/Drive.hpp"
@@ -62,6 +63,7 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
       logInfo("evaluate: no scans/ in the drive, regenerating scans with the simulator");
       source = std::make_unique<simulate::SimulatedScanSource>(drive);
     }
+    evaluate::checkDriveFiles(drive, *source);
     logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + o->drive);
     // Simulated drives: label each street with the kind the world lines it with (rich / wall /
     // open), so metrics.json shows the drift per kind of street.
