@@ -77,9 +77,10 @@ TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
 }
 
 TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
-  // pose_edges.csv is read after the SLAM, once estimate.tum and map.pcd are made: a bad one
-  // fails the evaluation, which then leaves no output folder, keeps an earlier evaluation in the
-  // same folder whole, and never writes into a folder that holds something else.
+  // A bad pose_edges.csv fails the evaluation (the drive checks find it before the SLAM; a
+  // failure after it unwinds the same staging folder, OutputSwapTest): no output folder is left,
+  // an earlier evaluation in the same folder stays whole, and a folder that holds something else
+  // is never written into.
   const auto dir = test::cliTempDir("evaluate_late_failure");
   ASSERT_TRUE(shortDrive(dir));
   auto evaluate = [&](const std::string& out) {
