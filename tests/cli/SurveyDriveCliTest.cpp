@@ -76,7 +76,7 @@ TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
                      cfg.string() + ": evaluate.map_tile_m must be positive", dir, 1);
 }
 
-TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
+TEST(SurveyDriveCli, AFailedEvaluateLeavesNoHalfOutput) {
   // A bad pose_edges.csv fails the evaluation (the drive checks find it before the SLAM; a
   // failure after it unwinds the same staging folder, OutputSwapTest): no output folder is left,
   // an earlier evaluation in the same folder stays whole, and a folder that holds something else
