@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "CliTestUtil.hpp"
 #include "slamroute/core/AtomicFile.hpp"
@@ -88,6 +89,27 @@ TEST(BadInputCli, NumbersNoFileCanHold) {
   test::expectCleanFailure("survey --net " + (dir / "far.net.xml").string() + " --out " +
                                (dir / "survey").string(),
                            "far.net.xml: edge 'g00_g01': bad shape point '1e8,0'", dir, 5);
+}
+
+TEST(BadInputCli, PlanReplacesRouteJsonAndRouXmlTogether) {
+  // A route on a graph without SUMO edges after one on the net: the older r.rou.xml must not stay
+  // beside an r.json it does not belong to.
+  const auto dir = test::cliTempDir("plan_file_set");
+  const auto first = test::runCli("--log-level warn plan --net " + kGrid +
+                                  " --planner postman --out " + (dir / "r.json").string());
+  ASSERT_EQ(first.code, 0) << first.out;
+  ASSERT_TRUE(fs::exists(dir / "r.rou.xml"));
+  put(dir / "g.json",
+      R"({"nodes":[{"id":0,"x":0,"y":0},{"id":1,"x":100,"y":0}],"edges":[)"
+      R"({"id":0,"u":0,"v":1,"length":100},{"id":1,"u":1,"v":0,"length":100}]})");
+  const auto second = test::runCli("--log-level warn plan --graph " + (dir / "g.json").string() +
+                                   " --planner postman --out " + (dir / "r.json").string());
+  ASSERT_EQ(second.code, 0) << second.out;
+  EXPECT_FALSE(fs::exists(dir / "r.rou.xml"));
+  EXPECT_TRUE(nlohmann::json::parse(readFile(dir / "r.json"))["sumo_edges"].empty());
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+  EXPECT_EQ(n, 2u);  // g.json and r.json: no staged file left
 }
 
 }  // namespace
