@@ -171,7 +171,7 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
     return -1;
   };
   const int cx = col("x"), cy = col("y"), cz = col("z"), cf = col("file"), ct = col("t"),
-            cv = col("vehicle"), cn = col("frame");
+            cv = col("vehicle"), cn = col("frame"), cw = col("width"), ch = col("height");
   if (cx < 0 || cy < 0 || cf < 0)
     throw std::invalid_argument(index_csv.string() + ": depth index needs columns x, y and file");
   std::vector<DepthFrame> frames;
@@ -190,6 +190,10 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
                       cz >= 0 ? std::stod(f[static_cast<std::size_t>(cz)]) : 0.0);
       if (ct >= 0) fr.t = std::stod(f[static_cast<std::size_t>(ct)]);
       if (cn >= 0) fr.frame = std::stol(f[static_cast<std::size_t>(cn)]);
+      if (cw >= 0 && ch >= 0) {
+        fr.width = std::stoi(f[static_cast<std::size_t>(cw)]);
+        fr.height = std::stoi(f[static_cast<std::size_t>(ch)]);
+      }
     } catch (const std::exception&) {
       throw std::invalid_argument(index_csv.string() + ":" + std::to_string(lineno) +
                                   ": unparsable number");
@@ -246,6 +250,11 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
       try {
         const DepthImage img = readDepthPng(frames[i].file);
         size[i] = {img.width, img.height};
+        if (frames[i].width > 0 && (img.width != frames[i].width || img.height != frames[i].height))
+          throw std::invalid_argument(frames[i].file.string() + ": " + std::to_string(img.width) +
+                                      " x " + std::to_string(img.height) + " px, the index says " +
+                                      std::to_string(frames[i].width) + " x " +
+                                      std::to_string(frames[i].height) + " px");
         score[i] = scoreDepthImage(img, cfg).score;
       } catch (const std::exception& e) {
         error[i] = e.what();
