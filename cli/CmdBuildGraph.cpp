@@ -38,6 +38,7 @@ void registerBuildGraph(CLI::App& app, Context& ctx) {
     if (!o->depth.empty()) in.depth_index = o->depth;
     if (o->no_depth) in.depth_index.clear();
     in.net = o->net;
+    roadgraph::checkOutputsAreNotInputs(in, o->out);
     const auto res = roadgraph::buildGraph(in, ctx.cfg.roadgraph);
     roadgraph::writeGraphOutputs(res.built.graph, o->out);
     const auto& st = res.built.stats;

@@ -11,6 +11,7 @@
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/KittiSequence.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/DriveChecks.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/Drive.hpp"
@@ -55,6 +56,7 @@ nlohmann::json evaluateDriveFolder(const std::string& drive_dir, const std::stri
     logInfo("evaluate: no scans/ in the drive, regenerating scans with the simulator");
     source = std::make_unique<simulate::SimulatedScanSource>(drive);
   }
+  evaluate::checkDriveFiles(drive, *source);
   logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + drive_dir);
   return evaluate::evaluateDrive(drive, *source, out, cfg, streetKinds(drive));
 }

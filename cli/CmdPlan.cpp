@@ -9,6 +9,7 @@
 
 #include "Commands.hpp"
 #include "CrewFiles.hpp"
+#include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/Route.hpp"
@@ -24,6 +25,23 @@ int nodeOfJunction(const RoadGraph& g, const std::string& junction) {
   for (const auto& n : g.nodes)
     if (n.sumo_junction == junction) return n.id;
   throw std::invalid_argument("--start-junction: no node for SUMO junction '" + junction + "'");
+}
+
+/// OUT and, when the route has SUMO edges, OUT.rou.xml, replaced together: an older OUT.rou.xml
+/// never stays beside a route it does not belong to. Returns the .rou.xml written (or empty).
+std::filesystem::path writeRouteFiles(const Route& r, const std::filesystem::path& out) {
+  std::filesystem::path rou = out;
+  rou.replace_extension(".rou.xml");
+  AtomicFileSet files;
+  r.writeJson(files.staged(out));
+  if (r.sumo_edges.empty()) {
+    files.dropAtCommit(rou);
+    rou.clear();
+  } else {
+    r.writeRouXml(files.staged(rou));
+  }
+  files.commit();
+  return rou;
 }
 
 }  // namespace
@@ -77,15 +95,9 @@ void registerPlan(CLI::App& app, Context& ctx) {
     if (!o->start_junction.empty()) cfg.start_node = nodeOfJunction(g, o->start_junction);
     const Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
     const std::filesystem::path out(o->out);
-    r.writeJson(out);
-    std::filesystem::path rou;
-    if (!r.sumo_edges.empty()) {
-      rou = out;
-      rou.replace_extension(".rou.xml");
-      r.writeRouXml(rou);
-    } else if (!o->net.empty()) {
+    if (r.sumo_edges.empty() && !o->net.empty())
       throw std::runtime_error("plan: the route has no SUMO edges; cannot write the .rou.xml");
-    }
+    const std::filesystem::path rou = writeRouteFiles(r, out);
     const auto extra = nlohmann::json::parse(r.extra_json);
     std::cout << std::fixed << std::setprecision(1) << r.planner << ": " << r.edges.size()
               << " edges, " << r.length_m / 1000.0 << " km, node coverage " << r.node_coverage_pct

@@ -21,6 +21,10 @@ struct Context {
   void load();
 };
 
+/// Overrides `cfg` with a YAML config file's keys; each section is validated as it is loaded.
+/// Throws std::runtime_error / std::invalid_argument with one line naming the file.
+void loadConfigFile(const std::string& file, AppConfig& cfg);
+
 /// Thrown by commands that do not exist yet; main() prints it and exits with code 2.
 struct NotImplemented : std::runtime_error {
   using std::runtime_error::runtime_error;

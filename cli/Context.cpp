@@ -2,29 +2,27 @@
 #include <filesystem>
 
 #include "Commands.hpp"
+#include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/ConfigIO.hpp"
 #include "slamroute/core/Log.hpp"
 
 namespace slamroute::cli {
 
+void loadConfigFile(const std::string& file, AppConfig& cfg) {
+  if (!std::filesystem::exists(file)) throw std::runtime_error(file + ": config file not found");
+  const std::string text = readFile(file);  // names a folder as such
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error(file + ": not valid YAML (" + e.msg + ")");
+  }
+  config::loadYaml(root, cfg, file);
+}
+
 void Context::load() {
   setLogLevel(parseLogLevel(log_level));
-  if (!config_file.empty()) {
-    if (!std::filesystem::exists(config_file))
-      throw std::runtime_error(config_file + ": config file not found");
-    YAML::Node root;
-    try {
-      root = YAML::LoadFile(config_file);
-    } catch (const YAML::Exception& e) {
-      throw std::runtime_error(config_file + ": not valid YAML (" + e.msg + ")");
-    }
-    config::loadYaml(root, cfg, config_file);
-    try {
-      cfg.evaluate.validate();
-    } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(config_file + ": " + e.what());
-    }
-  }
+  if (!config_file.empty()) loadConfigFile(config_file, cfg);
   if (seed) cfg.seed = *seed;
 }
 

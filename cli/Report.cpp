@@ -14,6 +14,7 @@
 #include <optional>
 #include <sstream>
 
+#include "ReportFigures.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/Route.hpp"
@@ -178,28 +179,16 @@ void writeReport(const ReportInputs& in) {
 
   // --- survey and graph
   md << "## Road graph (paper §3.1)\n\n";
-  // Scalar figures of a JSON object as a two-column table (arrays by their length).
-  auto scalarTable = [&md](const std::string& title, const json& obj, const std::string& listed_in) {
-    md << "| " << title << " | value |\n|---|---|\n";
-    for (const auto& [k, v] : obj.items()) {
-      if (v.is_number_float()) {
-        md << "| " << k << " | " << fmt(v.get<double>(), 3) << " |\n";
-      } else if (v.is_number() || v.is_boolean() || v.is_string()) {
-        md << "| " << k << " | " << v.dump() << " |\n";
-      } else if (v.is_array()) {
-        md << "| " << k << " | " << v.size() << " listed in " << listed_in << " |\n";
-      }
-    }
-    md << "\n";
-  };
-  if (survey.is_object() && !survey.empty()) scalarTable("survey", survey, "survey.json");
+  if (survey.is_object() && !survey.empty())
+    md << figureTable("survey", survey, surveyFigures(), "survey.json");
   md << "Extracted graph: " << graph.nodes.size() << " nodes, " << graph.edges.size()
      << " directed edges, " << fmt(graph.totalLength() / 1000.0, 2) << " km.\n\n";
   // The graph's metadata sections: validation against the net, extraction statistics, depth
   // weights, and how the graph maps onto the net's edges and turns.
   for (const char* section : {"validation", "stats", "weights", "sumo_mapping"})
     if (gmeta.contains(section) && gmeta[section].is_object())
-      scalarTable(section, gmeta[section], "graph.json");
+      md << figureTable(section, gmeta[section], graphFigures(section),
+                        "graph.json, metadata." + std::string(section));
   // The simulated 3D city the drives saw (rebuilt from the first drive's world.yaml: same net,
   // world config and seed for every drive of the run).
   std::optional<simulate::World> world;
@@ -230,9 +219,16 @@ void writeReport(const ReportInputs& in) {
     // The median and the share beyond the clamp (map_accuracy_max_m, 2 m): a mean or a p95 of
     // clamped distances says more about the clamp than about the map. As built (in the frame the
     // estimate starts in) and aligned (evaluate's map_aligned_*: the map's own deformation).
+    // With half the points or more beyond the clamp the median is the clamp, not a measurement:
+    // it is written as "> clamp".
     const auto mapCell = [&](const std::string& prefix) -> std::string {
       if (!m.contains(prefix + "median_dist_m") || !m.contains(prefix + "far_share")) return "–";
-      return num(m, (prefix + "median_dist_m").c_str(), 2) + " / " + num(m, (prefix + "far_share").c_str(), 1, 100.0) +
+      const bool saturated = m[prefix + "far_share"].is_number() &&
+                             m[prefix + "far_share"].get<double>() >= 0.5 &&
+                             m.contains("map_accuracy_max_m");
+      const std::string median = saturated ? "> " + num(m, "map_accuracy_max_m", 1)
+                                           : num(m, (prefix + "median_dist_m").c_str(), 2);
+      return median + " / " + num(m, (prefix + "far_share").c_str(), 1, 100.0) +
              (m.contains("map_accuracy_max_m") ? " (> " + num(m, "map_accuracy_max_m", 1) + " m)" : "");
     };
     const std::string map_err = mapCell("map_"), map_aligned = mapCell("map_aligned_");

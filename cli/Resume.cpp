@@ -101,16 +101,17 @@ std::vector<Step> stepsToRun(std::vector<Step> steps, bool resume) {
     if (resume && !st.output.empty() && fs::exists(st.output)) {
       const fs::path stamp = stampPath(st);
       if (!fs::exists(stamp)) {
-        // Made by a slamroute without stamps (or a copy without logs/): kept as before, unchecked.
-        logWarn("  kept     " + st.label + " (" + st.output.string() +
-                "), unchecked: no record of what it was made from (" + stamp.string() + ")");
-        continue;
-      }
-      if (readFile(stamp) == st.stamp) {
+        // A step stopped while running (its stamp is removed when it starts) or an orphan that
+        // finished after its run was killed: what it was made from is unknown.
+        logInfo("  again    " + st.label + ": no record of what " + st.output.string() +
+                " was made from (" + stamp.string() + ")");
+      } else if (readFile(stamp) == st.stamp) {
         logInfo("  kept     " + st.label + " (" + st.output.string() + ")");
         continue;
+      } else {
+        logInfo("  again    " + st.label + ": its settings or inputs changed since " +
+                stamp.string());
       }
-      logInfo("  again    " + st.label + ": its settings or inputs changed since " + stamp.string());
     }
     left.push_back(std::move(st));
   }

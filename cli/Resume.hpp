@@ -28,9 +28,9 @@ std::uint64_t folderHash(const std::filesystem::path& dir);
 std::string stepStamp(const Step& s);
 
 /// Stamps each step (stepStamp) and, with `resume`, leaves out those done before: output exists
-/// and the stamp beside its log equals the new one. An output without any stamp (made by an
-/// older slamroute) is kept with a warning that it is unchecked. Each kept step is logged, and so
-/// is the reason a step with an existing output runs again.
+/// and the stamp beside its log equals the new one. An output without a stamp is made again: its
+/// step was stopped, or finished as an orphan of a killed run, and may come from other inputs.
+/// Each kept step is logged, and so is the reason a step with an existing output runs again.
 std::vector<Step> stepsToRun(std::vector<Step> steps, bool resume);
 
 }  // namespace slamroute::cli

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -24,6 +26,19 @@ extern char** environ;
 namespace slamroute::cli {
 namespace {
 
+/// The child learns its parent's pid from here (stopWithParent).
+constexpr const char* kParentEnv = "SLAMROUTE_STEP_PARENT";
+
+/// This process's environment with kParentEnv set to its pid.
+std::vector<std::string> childEnvironment() {
+  std::vector<std::string> env;
+  const std::string prefix = std::string(kParentEnv) + "=";
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind(prefix, 0) != 0) env.emplace_back(*e);
+  env.push_back(prefix + std::to_string(::getpid()));
+  return env;
+}
+
 pid_t spawnStep(const Step& s) {
   std::filesystem::create_directories(s.log.parent_path());
   posix_spawn_file_actions_t fa;
@@ -37,10 +52,14 @@ pid_t spawnStep(const Step& s) {
   std::vector<char*> argv;
   for (auto& a : argv_s) argv.push_back(a.data());
   argv.push_back(nullptr);
+  std::vector<std::string> env_s = childEnvironment();
+  std::vector<char*> envp;
+  for (auto& e : env_s) envp.push_back(e.data());
+  envp.push_back(nullptr);
   pid_t pid = -1;
   // Exec this very image through /proc/self/exe: every step runs the same version as the parent,
   // even when the binary on disk is rebuilt (and replaced) during a long run.
-  const int rc = posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0)
     throw std::runtime_error("cannot start '" + s.label + "' (" + exe + "): " + std::strerror(rc));
@@ -74,6 +93,14 @@ class StopSignals {
 };
 
 }  // namespace
+
+void stopWithParent() {
+  const char* parent = std::getenv(kParentEnv);
+  if (!parent) return;
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  // The parent may have died before the prctl: then this process is someone else's child now.
+  if (std::to_string(::getppid()) != parent) ::raise(SIGTERM);
+}
 
 std::string lastLogLine(const std::filesystem::path& log, std::size_t max_bytes) {
   std::ifstream in(log, std::ios::binary | std::ios::ate);

@@ -35,6 +35,11 @@ struct Interrupted : std::runtime_error {
   int signal;  ///< the signal that stopped the run; the program exits with 128 + it
 };
 
+/// In a step started by runSteps: asks the kernel to send SIGTERM when the parent dies (SIGKILL
+/// of `run` included), so no step goes on as an orphan writing results nobody stamps; SIGTERM
+/// removes the step's staging folder. Does nothing in a process not started by runSteps.
+void stopWithParent();
+
 /// Path of the running slamroute binary (/proc/self/exe).
 std::string selfExe();
 

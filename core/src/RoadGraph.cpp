@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "JsonFile.hpp"
+#include "slamroute/core/Coordinates.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -39,10 +40,15 @@ double RoadGraph::totalLength() const {
 
 void RoadGraph::validate(const std::string& where) const {
   const int n = static_cast<int>(nodes.size()), m = static_cast<int>(edges.size());
-  for (int i = 0; i < n; ++i)
-    if (nodes[static_cast<std::size_t>(i)].id != i)
+  for (int i = 0; i < n; ++i) {
+    const RoadNode& node = nodes[static_cast<std::size_t>(i)];
+    if (node.id != i)
       throw std::invalid_argument(where + ": node ids must be 0..N-1 in order (node " +
                                   std::to_string(i) + ")");
+    if (!plausibleCoordinate(node.pos.x()) || !plausibleCoordinate(node.pos.y()) ||
+        !plausibleCoordinate(node.pos.z()))
+      throw std::invalid_argument(where + ": node " + std::to_string(i) + ": " + kCoordinateRule);
+  }
   for (int i = 0; i < m; ++i) {
     const RoadEdge& e = edges[static_cast<std::size_t>(i)];
     if (e.id != i)
@@ -50,8 +56,12 @@ void RoadGraph::validate(const std::string& where) const {
                                   std::to_string(i) + ")");
     if (e.u < 0 || e.u >= n || e.v < 0 || e.v >= n)
       throw std::invalid_argument(where + ": edge " + std::to_string(i) + " names a missing node");
-    if (!(e.length_m >= 0.0) || !std::isfinite(e.length_m) || !std::isfinite(e.weight))
+    if (!(e.length_m >= 0.0) || !(e.length_m <= kMaxCoordinateM) || !std::isfinite(e.weight))
       throw std::invalid_argument(where + ": edge " + std::to_string(i) + " has a bad length or weight");
+    for (const Point3& p : e.polyline)
+      if (!plausibleCoordinate(p.x()) || !plausibleCoordinate(p.y()) || !plausibleCoordinate(p.z()))
+        throw std::invalid_argument(where + ": edge " + std::to_string(i) + " polyline: " +
+                                    kCoordinateRule);
   }
   if (restricted_turns) {
     if (allowed_next.size() != edges.size())
@@ -157,7 +167,7 @@ RoadGraph RoadGraph::readJson(const std::filesystem::path& path) {
     }
     if (j.contains("metadata")) g.metadata_json = j.at("metadata").dump();
   } catch (const json::exception& e) {
-    throw std::invalid_argument(name + ": malformed road graph (" + std::string(e.what()) + ")");
+    throw std::invalid_argument(name + ": malformed road graph (" + detail::jsonErrorText(e) + ")");
   }
   // Streets default to one per edge when the file does not pair directions.
   for (auto& e : g.edges)
@@ -189,6 +199,7 @@ void RoadGraph::writeJson(const std::filesystem::path& path) const {
   }
   j["turns"] = restricted_turns ? json(allowed_next) : json(nullptr);
   j["metadata"] = json::parse(metadata_json.empty() ? "{}" : metadata_json);
+  detail::requireFiniteNumbers(j, path.string());
   writeFileAtomic(path, j.dump(1) + "\n");
 }
 

@@ -44,7 +44,7 @@ Route Route::readJson(const std::filesystem::path& path) {
       throw std::invalid_argument(name + ": a route must be a JSON object or a list of SUMO edges");
     }
   } catch (const json::exception& e) {
-    throw std::invalid_argument(name + ": malformed route (" + std::string(e.what()) + ")");
+    throw std::invalid_argument(name + ": malformed route (" + detail::jsonErrorText(e) + ")");
   }
   if (r.sumo_edges.empty() && r.edges.empty())
     throw std::invalid_argument(name + ": the route is empty");
@@ -71,6 +71,7 @@ void Route::writeJson(const std::filesystem::path& path) const {
             {"sumo_edges", sumo_edges},
             {"logdet_cov_along", logdet_cov_along},
             {"extra", json::parse(extra_json.empty() ? "{}" : extra_json)}};
+  detail::requireFiniteNumbers(j, path.string());
   writeFileAtomic(path, j.dump(1) + "\n");
 }
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/Coordinates.hpp"
 
 namespace slamroute {
 namespace {
@@ -20,6 +21,10 @@ std::vector<std::string> splitWords(const char* s) {
   while (in >> w) out.push_back(w);
   return out;
 }
+
+/// A straight lane piece longer than this is no road; the world covers each piece's bounding box
+/// with grid cells, so one such piece would take hours to build.
+constexpr double kMaxShapeSegmentM = 50'000.0;
 
 /// "x,y x,y,z …" (SUMO mixes 2D and 3D points); z defaults to 0.
 Polyline parseShape(const char* s, const std::string& where) {
@@ -41,11 +46,38 @@ Polyline parseShape(const char* s, const std::string& where) {
       if (comma == std::string::npos) break;
       start = comma + 1;
     }
-    if (n < 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
-      throw std::invalid_argument(where + ": bad shape point '" + tok + "'");
+    if (n < 2 || !plausibleCoordinate(v[0]) || !plausibleCoordinate(v[1]) ||
+        !plausibleCoordinate(v[2]))
+      throw std::invalid_argument(where + ": bad shape point '" + tok + "' (" + kCoordinateRule + ")");
     pl.emplace_back(v[0], v[1], v[2]);
   }
+  for (std::size_t i = 1; i < pl.size(); ++i)
+    if ((pl[i] - pl[i - 1]).head<2>().norm() > kMaxShapeSegmentM)
+      throw std::invalid_argument(where + ": shape segment of " +
+                                  std::to_string((pl[i] - pl[i - 1]).norm() / 1000.0) +
+                                  " km without a bend; not a road");
   return pl;
+}
+
+/// A lane's length or speed attribute: finite, >= 0 and within the coordinate range (NaN or a
+/// negative length gives NaN costs downstream and routes that cannot be read back).
+double laneNumber(const pugi::xml_node& lane, const char* attr, const std::string& where) {
+  const double v = lane.attribute(attr).as_double();
+  if (!std::isfinite(v) || v < 0.0 || v > kMaxCoordinateM)
+    throw std::invalid_argument(where + ": lane '" + lane.attribute("id").as_string() + "' has " +
+                                attr + " '" + lane.attribute(attr).as_string() +
+                                "' (needs a finite number >= 0)");
+  return v;
+}
+
+Point3 junctionPosition(const pugi::xml_node& j, const std::string& name) {
+  const Point3 p(j.attribute("x").as_double(), j.attribute("y").as_double(),
+                 j.attribute("z").as_double(0.0));
+  if (!plausibleCoordinate(p.x()) || !plausibleCoordinate(p.y()) || !plausibleCoordinate(p.z()))
+    throw std::invalid_argument(name + ": junction '" + j.attribute("id").as_string() +
+                                "' at (" + j.attribute("x").as_string() + ", " +
+                                j.attribute("y").as_string() + ") (" + kCoordinateRule + ")");
+  return p;
 }
 
 }  // namespace
@@ -143,8 +175,8 @@ SumoNet SumoNet::read(const std::filesystem::path& path) {
       SumoLane lane;
       lane.id = l.attribute("id").as_string();
       lane.index = l.attribute("index").as_int();
-      lane.length_m = l.attribute("length").as_double();
-      lane.speed_mps = l.attribute("speed").as_double();
+      lane.length_m = laneNumber(l, "length", where);
+      lane.speed_mps = laneNumber(l, "speed", where);
       lane.width_m = l.attribute("width").as_double(3.2);
       lane.allow = splitWords(l.attribute("allow").as_string());
       lane.disallow = splitWords(l.attribute("disallow").as_string());
@@ -165,8 +197,7 @@ SumoNet SumoNet::read(const std::filesystem::path& path) {
     jn.type = j.attribute("type").as_string();
     if (jn.type == "internal") continue;
     jn.id = j.attribute("id").as_string();
-    jn.pos = Point3(j.attribute("x").as_double(), j.attribute("y").as_double(),
-                    j.attribute("z").as_double(0.0));
+    jn.pos = junctionPosition(j, name);
     jn.inc_lanes = splitWords(j.attribute("incLanes").as_string());
     net.junction_index[jn.id] = net.junctions.size();
     net.junctions.push_back(std::move(jn));

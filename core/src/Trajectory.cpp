@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/Coordinates.hpp"
 
 namespace slamroute {
 namespace {
@@ -45,6 +46,22 @@ std::vector<std::vector<double>> readRows(const std::filesystem::path& path) {
   return rows;
 }
 
+std::string lineOf(const std::filesystem::path& path, const std::vector<double>& row) {
+  return path.string() + ":" + std::to_string(static_cast<int>(row.back()));
+}
+
+/// A pose file's time must increase (association by time and distance along the path assume
+/// it) and its positions be places on Earth (squared 1e300 metres are inf).
+void checkPose(const std::filesystem::path& path, const std::vector<double>& row,
+               const Trajectory& before, const StampedPose& p) {
+  if (!before.empty() && !(p.t > before.back().t))
+    throw std::invalid_argument(lineOf(path, row) + ": time " + std::to_string(p.t) +
+                                " s is not later than the pose before (poses must be in time order)");
+  const Vec3 t = p.T_world_body.translation();
+  if (!plausibleCoordinate(t.x()) || !plausibleCoordinate(t.y()) || !plausibleCoordinate(t.z()))
+    throw std::invalid_argument(lineOf(path, row) + ": " + kCoordinateRule);
+}
+
 }  // namespace
 
 double pathLength(const Trajectory& traj) {
@@ -69,6 +86,7 @@ Trajectory readTum(const std::filesystem::path& path) {
     p.T_world_body = Pose3::Identity();
     p.T_world_body.linear() = q.normalized().toRotationMatrix();
     p.T_world_body.translation() = Vec3(r[1], r[2], r[3]);
+    checkPose(path, r, traj, p);
     traj.push_back(p);
   }
   return traj;
@@ -98,11 +116,16 @@ Trajectory readKittiPoses(const std::filesystem::path& path, double dt) {
     p.t = static_cast<double>(i++) * dt;
     Eigen::Matrix3d R;
     R << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+    // Written with a few digits, a rotation is orthonormal to ~1e-6; a zero or scaled matrix
+    // is no rotation, whatever the re-orthonormalisation below would make of it.
+    if (!((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-2) || !(R.determinant() > 0))
+      throw std::invalid_argument(lineOf(path, r) + ": the 3x3 part is not a rotation matrix");
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::Matrix3d Ro = svd.matrixU() * svd.matrixV().transpose();  // re-orthonormalise
     p.T_world_body = Pose3::Identity();
     p.T_world_body.linear() = Ro;
     p.T_world_body.translation() = Vec3(r[3], r[7], r[11]);
+    checkPose(path, r, traj, p);
     traj.push_back(p);
   }
   return traj;

@@ -9,14 +9,14 @@
 namespace slamroute::evaluate {
 namespace {
 
-/// Throws "evaluate.SECTION.KEY: VALUE must be ..." when `ok` is false.
+/// Throws "SECTION.KEY: VALUE must be ..." (the config loader puts "FILE: evaluate." before it) when `ok` is false.
 struct Check {
   std::string section;
   template <class T>
   void operator()(bool ok, const char* key, T value, const char* what) const {
     if (ok) return;
     std::ostringstream os;
-    os << "evaluate." << section << "." << key << ": " << value << " " << what;
+    os << section << "." << key << ": " << value << " " << what;
     throw std::invalid_argument(os.str());
   }
 };
@@ -139,7 +139,7 @@ void validateLoop(const LoopConfig& c) {
         c.place_gate_max_m, "must be >= radius_m");
   check(c.place_max_yaw_change_deg > 0 && c.place_max_yaw_change_deg <= 180, "place_max_yaw_change_deg",
         c.place_max_yaw_change_deg, "must be in (0, 180]");
-  c.place.validate("evaluate.loop.place");
+  c.place.validate("loop.place");
 }
 
 void validateOutput(const OutputConfig& c, const MetricsConfig& m) {

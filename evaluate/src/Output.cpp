@@ -41,6 +41,61 @@ void drawScaleBar(cv::Mat& img, double scale, int margin) {
   cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
 }
 
+/// A TURBO colour bar 150 px wide at (x, y), labelled "0 UNIT" and ">= TOP UNIT"; `caption` above.
+void drawColourBar(cv::Mat& img, int x, int y, double top, const std::string& unit,
+                   const std::string& caption) {
+  const int bw = 150, bh = 10;
+  cv::Mat ramp(1, bw, CV_8UC1);
+  for (int i = 0; i < bw; ++i) ramp.at<uchar>(0, i) = static_cast<uchar>(255 * i / (bw - 1));
+  cv::Mat ramp_bgr;
+  cv::applyColorMap(ramp, ramp_bgr, cv::COLORMAP_TURBO);
+  cv::resize(ramp_bgr, ramp_bgr, {bw, bh}, 0, 0, cv::INTER_NEAREST);
+  ramp_bgr.copyTo(img(cv::Rect(x, y, bw, bh)));
+  const cv::Scalar black(0, 0, 0);
+  if (!caption.empty()) cv::putText(img, caption, {x, y - 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
+  cv::putText(img, "0 " + unit, {x, y + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
+  cv::putText(img, ">= " + fmt(top, 2) + " " + unit, {x + bw - 55, y + bh + 15},
+              cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
+}
+
+/// TURBO colour of `v` on a scale from 0 to `top`.
+cv::Scalar turboColour(double v, double top) {
+  cv::Mat level(1, 1, CV_8UC1, cv::Scalar(cv::saturate_cast<uchar>(255.0 * v / top))), bgr;
+  cv::applyColorMap(level, bgr, cv::COLORMAP_TURBO);
+  const cv::Vec3b c = bgr.at<cv::Vec3b>(0, 0);
+  return cv::Scalar(c[0], c[1], c[2]);
+}
+
+/// Tick spacing of 1, 2 or 5 times a power of ten giving about `ticks` intervals over `range`.
+double niceStep(double range, int ticks) {
+  const double raw = range / std::max(1, ticks);
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double f : {1.0, 2.0, 5.0})
+    if (f * p >= raw) return f * p;
+  return 10.0 * p;
+}
+
+/// Gridlines and labelled ticks at round values on both axes of a plot of [0, xmax] x [0, ymax];
+/// `px` maps a value pair to its pixel.
+template <class ToPixel>
+void drawTicks(cv::Mat& img, double xmax, double ymax, const ToPixel& px) {
+  const cv::Scalar grid(225, 225, 225), black(0, 0, 0);
+  const double dx = niceStep(xmax, 8), dy = niceStep(ymax, 5);
+  const int xprec = dx < 1 ? 1 : 0, yprec = dy < 0.01 ? 3 : dy < 0.1 ? 2 : dy < 1 ? 1 : 0;
+  for (double x = 0; x <= xmax * (1 + 1e-9); x += dx) {
+    cv::line(img, px(x, 0), px(x, ymax), grid, 1);
+    const std::string label = fmt(x, xprec);
+    cv::putText(img, label, px(x, 0) + cv::Point(-4 * static_cast<int>(label.size()), 18),
+                cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
+  }
+  for (double y = 0; y <= ymax * (1 + 1e-9); y += dy) {
+    cv::line(img, px(0, y), px(xmax, y), grid, 1);
+    const std::string label = fmt(y, yprec);
+    cv::putText(img, label, px(0, y) + cv::Point(-8 - 8 * static_cast<int>(label.size()), 4),
+                cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
+  }
+}
+
 std::string pcdHeader(std::size_t points) {
   std::ostringstream os;
   os << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\n"
@@ -146,17 +201,7 @@ void MapErrorImage::write(const std::filesystem::path& path, const std::string& 
   cv::applyColorMap(level, img, cv::COLORMAP_TURBO);
   img.setTo(cv::Scalar(255, 255, 255), empty);
   cv::putText(img, title, {margin_, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
-  // colour bar, top right: 0 .. top_m
-  const int bw = 150, bh = 10, bx = size_ - margin_ - bw, by = 30;
-  cv::Mat ramp(1, bw, CV_8UC1);
-  for (int i = 0; i < bw; ++i) ramp.at<uchar>(0, i) = static_cast<uchar>(255 * i / (bw - 1));
-  cv::Mat ramp_bgr;
-  cv::applyColorMap(ramp, ramp_bgr, cv::COLORMAP_TURBO);
-  cv::resize(ramp_bgr, ramp_bgr, {bw, bh}, 0, 0, cv::INTER_NEAREST);
-  ramp_bgr.copyTo(img(cv::Rect(bx, by, bw, bh)));
-  cv::putText(img, "0 m", {bx, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
-  cv::putText(img, ">= " + fmt(top_m, 2) + " m", {bx + bw - 55, by + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
-              cv::Scalar(0, 0, 0), 1);
+  drawColourBar(img, size_ - margin_ - 150, 30, top_m, "m", "");
   if (frame_.scale > 0) drawScaleBar(img, frame_.scale, margin_);
   writePng(path, img);
 }
@@ -180,14 +225,17 @@ void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, 
     const Eigen::Vector2d p = frame.pixel(q.x(), q.y());
     return cv::Point(static_cast<int>(p.x()), static_cast<int>(p.y()));
   };
-  for (std::size_t i = 1; i < gt.size(); ++i) {
-    cv::line(img, px(gt[i - 1]), px(gt[i]), cv::Scalar(0, 160, 0), 2, cv::LINE_AA);
-    cv::line(img, px(est[i - 1]), px(est[i]), cv::Scalar(0, 0, 220), 1, cv::LINE_AA);
-  }
+  // The ground truth underneath in grey, the estimate on top coloured by its error: at the scale
+  // of a city a 2 m error is not visible as an offset, but it is as a colour.
+  const double top = std::max(1e-3, *std::max_element(m.errors_m.begin(), m.errors_m.end()));
+  for (std::size_t i = 1; i < gt.size(); ++i)
+    cv::line(img, px(gt[i - 1]), px(gt[i]), cv::Scalar(170, 170, 170), 4, cv::LINE_AA);
+  for (std::size_t i = 1; i < est.size(); ++i)
+    cv::line(img, px(est[i - 1]), px(est[i]), turboColour(m.errors_m[i], top), 2, cv::LINE_AA);
   cv::circle(img, px(gt.front()), 5, cv::Scalar(0, 0, 0), 2);
-  cv::putText(img, "ground truth", {margin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 160, 0), 1);
-  cv::putText(img, "estimate (aligned), ATE RMSE " + fmt(m.ate.rmse_m, 3) + " m", {margin + 120, 20},
-              cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 220), 1);
+  cv::putText(img, "estimate (aligned) coloured by its error over the ground truth (grey)",
+              {margin, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
+  drawColourBar(img, S - margin - 150, 48, top, "m", "ATE RMSE " + fmt(m.ate.rmse_m, 3) + " m");
   drawScaleBar(img, frame.scale, margin);
   writePng(path, img);
 }
@@ -203,15 +251,13 @@ void plotErrorAlongDistance(const std::filesystem::path& path, const TrajectoryM
     return cv::Point(static_cast<int>(ml + d / dmax * (W - ml - mr)),
                      static_cast<int>(H - mb - e / emax * (H - mb - mt)));
   };
+  drawTicks(img, dmax, emax, px);
   cv::line(img, px(0, 0), px(dmax, 0), cv::Scalar(0, 0, 0), 1);
   cv::line(img, px(0, 0), px(0, emax), cv::Scalar(0, 0, 0), 1);
   for (std::size_t i = 1; i < m.errors_m.size(); ++i)
     cv::line(img, px(m.distance_m[i - 1], m.errors_m[i - 1]), px(m.distance_m[i], m.errors_m[i]),
              cv::Scalar(200, 60, 0), 1, cv::LINE_AA);
   cv::putText(img, "ATE [m] vs distance [m]", {ml, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
-  cv::putText(img, fmt(emax, 3), {2, mt + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
-  cv::putText(img, "0", {ml - 15, H - mb + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
-  cv::putText(img, fmt(dmax, 0), {W - mr - 50, H - mb + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 1);
   writePng(path, img);
 }
 

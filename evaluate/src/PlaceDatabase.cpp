@@ -76,7 +76,7 @@ struct PlaceDatabase::Impl {
 };
 
 PlaceDatabase::PlaceDatabase(PlaceRecognitionConfig cfg) : impl_(std::make_unique<Impl>()) {
-  cfg.validate();
+  cfg.validate("place");
   impl_->cfg = cfg;
   impl_->tree = std::make_unique<RingKeyTree>(cfg.rings, impl_->adaptor);
 }

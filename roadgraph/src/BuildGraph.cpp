@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
 
@@ -120,16 +121,36 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
   return out;
 }
 
-void writeGraphOutputs(const RoadGraph& graph, const std::filesystem::path& json_path) {
-  auto sibling = [&](const char* ext) {
+std::vector<std::filesystem::path> graphOutputPaths(const std::filesystem::path& json_path) {
+  std::vector<std::filesystem::path> out = {json_path};
+  for (const char* ext : {".geojson", ".graphml", ".png"}) {
     auto p = json_path;
-    p.replace_extension(ext);
-    return p;
-  };
-  graph.writeJson(json_path);
-  graph.writeGeoJson(sibling(".geojson"));
-  graph.writeGraphML(sibling(".graphml"));
-  graph.renderPng(sibling(".png"), "weight");
+    out.push_back(p.replace_extension(ext));
+  }
+  return out;
+}
+
+void checkOutputsAreNotInputs(const BuildInputs& in, const std::filesystem::path& json_path) {
+  namespace fs = std::filesystem;
+  for (const fs::path& input : {in.traces, in.depth_index, in.net}) {
+    if (input.empty()) continue;
+    std::error_code ec;
+    const fs::path a = fs::weakly_canonical(input, ec);
+    for (const fs::path& output : graphOutputPaths(json_path))
+      if (a == fs::weakly_canonical(output, ec))
+        throw std::invalid_argument(output.string() + ": is an input of build-graph (" +
+                                    input.string() + "); choose another --out");
+  }
+}
+
+void writeGraphOutputs(const RoadGraph& graph, const std::filesystem::path& json_path) {
+  const auto paths = graphOutputPaths(json_path);
+  AtomicFileSet files;
+  graph.writeJson(files.staged(paths[0]));
+  graph.writeGeoJson(files.staged(paths[1]));
+  graph.writeGraphML(files.staged(paths[2]));
+  graph.renderPng(files.staged(paths[3]), "weight");
+  files.commit();
 }
 
 }  // namespace slamroute::roadgraph

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -170,7 +171,7 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
     return -1;
   };
   const int cx = col("x"), cy = col("y"), cz = col("z"), cf = col("file"), ct = col("t"),
-            cv = col("vehicle"), cn = col("frame");
+            cv = col("vehicle"), cn = col("frame"), cw = col("width"), ch = col("height");
   if (cx < 0 || cy < 0 || cf < 0)
     throw std::invalid_argument(index_csv.string() + ": depth index needs columns x, y and file");
   std::vector<DepthFrame> frames;
@@ -189,6 +190,10 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
                       cz >= 0 ? std::stod(f[static_cast<std::size_t>(cz)]) : 0.0);
       if (ct >= 0) fr.t = std::stod(f[static_cast<std::size_t>(ct)]);
       if (cn >= 0) fr.frame = std::stol(f[static_cast<std::size_t>(cn)]);
+      if (cw >= 0 && ch >= 0) {
+        fr.width = std::stoi(f[static_cast<std::size_t>(cw)]);
+        fr.height = std::stoi(f[static_cast<std::size_t>(ch)]);
+      }
     } catch (const std::exception&) {
       throw std::invalid_argument(index_csv.string() + ":" + std::to_string(lineno) +
                                   ": unparsable number");
@@ -201,6 +206,31 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
   return frames;
 }
 
+namespace {
+
+/// Frames of one survey come from one camera: a frame of another size than most (a stray file, a
+/// frame from another survey) is skipped with an error naming it.
+void skipOddSizedFrames(const std::vector<DepthFrame>& frames,
+                        const std::vector<std::pair<int, int>>& size, std::vector<double>& score,
+                        std::vector<std::string>& error) {
+  std::map<std::pair<int, int>, std::size_t> count;
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    if (!std::isnan(score[i])) ++count[size[i]];
+  if (count.size() < 2) return;
+  const auto common = std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) {
+                        return a.second < b.second;
+                      })->first;
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    if (!std::isnan(score[i]) && size[i] != common) {
+      score[i] = std::numeric_limits<double>::quiet_NaN();
+      error[i] = frames[i].file.string() + ": " + std::to_string(size[i].first) + " x " +
+                 std::to_string(size[i].second) + " px, the survey's other frames are " +
+                 std::to_string(common.first) + " x " + std::to_string(common.second) + " px";
+    }
+}
+
+}  // namespace
+
 WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& frames,
                                const DepthConfig& cfg) {
   WeightStats ws;
@@ -209,6 +239,7 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
   // Score every frame; frames are independent, so they run on all cores.
   std::vector<double> score(frames.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::string> error(frames.size());
+  std::vector<std::pair<int, int>> size(frames.size(), {0, 0});
   Progress progress("depth frames", frames.size());
   std::mutex mu;
   std::size_t done = 0;
@@ -217,7 +248,14 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
       error[i] = "frame " + std::to_string(frames[i].frame) + ": NaN position";
     } else {
       try {
-        score[i] = scoreDepthImage(readDepthPng(frames[i].file), cfg).score;
+        const DepthImage img = readDepthPng(frames[i].file);
+        size[i] = {img.width, img.height};
+        if (frames[i].width > 0 && (img.width != frames[i].width || img.height != frames[i].height))
+          throw std::invalid_argument(frames[i].file.string() + ": " + std::to_string(img.width) +
+                                      " x " + std::to_string(img.height) + " px, the index says " +
+                                      std::to_string(frames[i].width) + " x " +
+                                      std::to_string(frames[i].height) + " px");
+        score[i] = scoreDepthImage(img, cfg).score;
       } catch (const std::exception& e) {
         error[i] = e.what();
       }
@@ -227,6 +265,7 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
     if (done % 64 == 0) progress.update(done);
   });
   progress.finish();
+  skipOddSizedFrames(frames, size, score, error);
   std::size_t shown = 0;
   for (std::size_t i = 0; i < frames.size(); ++i)
     if (!error[i].empty()) {
@@ -286,6 +325,20 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
     ++cnt[static_cast<std::size_t>(best)];
   }
   ws.mean_score = ws.scored > 0 ? total / static_cast<double>(ws.scored) : 0.0;
+  if (ws.scored > 0 && total == 0.0) {
+    // Not one frame measured anything (frames far smaller than the camera's, a stride too coarse
+    // for min_normals): weights of 0 would say every street is featureless.
+    const auto& [w, h] = size[static_cast<std::size_t>(
+        std::find_if(score.begin(), score.end(), [](double v) { return !std::isnan(v); }) -
+        score.begin())];
+    logWarn("depth: all " + std::to_string(ws.scored) + " frames scored 0 (" + std::to_string(w) +
+            " x " + std::to_string(h) + " px at pixel_stride " + std::to_string(cfg.pixel_stride) +
+            ", min_normals " + std::to_string(cfg.min_normals) +
+            "): they carry no information and are not used");
+    ws.failed += ws.scored;
+    ws.scored = 0;
+    std::fill(cnt.begin(), cnt.end(), 0);
+  }
   // Documented fallback: a street without a usable frame gets the mean score of all frames; with
   // no usable frame at all every edge gets cfg.fallback_weight (1, RoadEdge's default).
   const double fallback = ws.scored > 0 ? ws.mean_score : cfg.fallback_weight;

@@ -9,9 +9,11 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/Coordinates.hpp"
 
 namespace slamroute::roadgraph {
 namespace {
@@ -51,6 +53,28 @@ int vehicleIndex(Traces& tr, std::unordered_map<std::string, int>& ids, const st
   tr.vehicles.push_back(name);
   ids.emplace(name, id);
   return id;
+}
+
+/// Vehicles numbered by name and points sorted by (vehicle, time, position, heading, speed): the
+/// graph then depends on the rows' content only, not on the order a file lists them in.
+void canonicalOrder(Traces& tr) {
+  std::vector<int> by_name(tr.vehicles.size());
+  std::iota(by_name.begin(), by_name.end(), 0);
+  std::sort(by_name.begin(), by_name.end(),
+            [&](int a, int b) { return tr.vehicles[static_cast<std::size_t>(a)] < tr.vehicles[static_cast<std::size_t>(b)]; });
+  std::vector<int> new_id(tr.vehicles.size());
+  std::vector<std::string> names(tr.vehicles.size());
+  for (std::size_t k = 0; k < by_name.size(); ++k) {
+    new_id[static_cast<std::size_t>(by_name[k])] = static_cast<int>(k);
+    names[k] = tr.vehicles[static_cast<std::size_t>(by_name[k])];
+  }
+  tr.vehicles = std::move(names);
+  for (auto& p : tr.points) p.vehicle = new_id[static_cast<std::size_t>(p.vehicle)];
+  auto key = [](const TracePoint& p) {
+    return std::make_tuple(p.vehicle, p.t, p.pos.x(), p.pos.y(), p.pos.z(), p.heading_deg, p.speed);
+  };
+  std::stable_sort(tr.points.begin(), tr.points.end(),
+                   [&](const TracePoint& a, const TracePoint& b) { return key(a) < key(b); });
 }
 
 }  // namespace
@@ -94,6 +118,7 @@ Traces readTracesCsv(const std::filesystem::path& path) {
     p.speed = cs >= 0 ? parseNumber(f[static_cast<std::size_t>(cs)], where) : 0.0;
     tr.points.push_back(p);
   }
+  canonicalOrder(tr);
   return tr;
 }
 
@@ -122,6 +147,7 @@ Traces readFcdXml(const std::filesystem::path& path) {
       tr.points.push_back(p);
     }
   }
+  canonicalOrder(tr);
   return tr;
 }
 
@@ -161,6 +187,11 @@ void checkTraces(const Traces& tr, const std::string& where) {
       throw std::invalid_argument(where + ": point " + std::to_string(i) + " (vehicle '" +
                                   tr.vehicles.at(static_cast<std::size_t>(p.vehicle)) +
                                   "') has a NaN or infinite time/coordinate");
+    if (!plausibleCoordinate(p.pos.x()) || !plausibleCoordinate(p.pos.y()) ||
+        !plausibleCoordinate(p.pos.z()))
+      throw std::invalid_argument(where + ": point " + std::to_string(i) + " (vehicle '" +
+                                  tr.vehicles.at(static_cast<std::size_t>(p.vehicle)) + "'): " +
+                                  kCoordinateRule);
   }
 }
 

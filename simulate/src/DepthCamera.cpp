@@ -15,12 +15,11 @@
 namespace slamroute::simulate {
 
 DepthCamera::DepthCamera(const DepthCameraConfig& cfg, std::uint64_t seed) : cfg_(cfg), seed_(seed) {
-  auto bad = [](const std::string& m) { throw std::invalid_argument("simulate.depth: " + m); };
-  if (cfg.width < 1 || cfg.height < 1 || cfg.width > 20000 || cfg.height > 20000)
-    bad("width and height must be in [1, 20000]");
-  if (!(cfg.hfov_deg > 0 && cfg.hfov_deg < 180)) bad("hfov_deg must be in (0, 180)");
-  if (!(cfg.max_range_m > 0 && cfg.max_range_m <= 65.535)) bad("max_range_m must be in (0, 65.535]");
-  if (!(cfg.range_sigma_m >= 0)) bad("range_sigma_m must be >= 0");
+  try {
+    cfg.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("simulate.depth: ") + e.what());
+  }
   f_ = (cfg.width / 2.0) / std::tan(cfg.hfov_deg * M_PI / 360.0);
 }
 

@@ -14,7 +14,7 @@ void writeDepthFrames(const std::filesystem::path& dir, const SumoNet& net, cons
                       std::uint64_t seed, const std::vector<DepthShot>& shots) {
   std::filesystem::create_directories(dir);
   std::ostringstream index, edges;
-  index << "frame,t,vehicle,x,y,z,qx,qy,qz,qw,file\n";
+  index << "frame,t,vehicle,x,y,z,qx,qy,qz,qw,width,height,file\n";
   edges << "frame,sumo_edge\n";
   if (!shots.empty()) {
     logInfo("survey: building the 3D world for " + std::to_string(shots.size()) + " depth frames");
@@ -31,8 +31,9 @@ void writeDepthFrames(const std::filesystem::path& dir, const SumoNet& net, cons
       const Eigen::Quaterniond q(T_world_camera.linear());
       const Vec3 p = T_world_camera.translation();
       char line[256];
-      std::snprintf(line, sizeof line, "%zu,%.2f,%s,%.3f,%.3f,%.3f,%.6f,%.6f,%.6f,%.6f,%s\n", i,
-                    s.t, s.vehicle.c_str(), p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w(), name);
+      std::snprintf(line, sizeof line, "%zu,%.2f,%s,%.3f,%.3f,%.3f,%.6f,%.6f,%.6f,%.6f,%d,%d,%s\n",
+                    i, s.t, s.vehicle.c_str(), p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w(),
+                    cfg.depth.width, cfg.depth.height, name);
       index << line;
       edges << i << "," << s.sumo_edge << "\n";
       progress.update(i + 1);

@@ -1,6 +1,7 @@
 #pragma once
 // Runs the slamroute binary in a shell and captures its output and exit code.
 #include "TestTmp.hpp"
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -45,6 +46,19 @@ inline int countLines(const std::string& s) {
   int n = 0;
   for (char c : s) n += c == '\n';
   return n;
+}
+
+/// The command fails with one line naming `fragment`, and `dir` holds nothing but `keep` entries.
+inline void expectCleanFailure(const std::string& args, const std::string& fragment,
+                               const std::filesystem::path& dir, std::size_t keep) {
+  const auto r = runCli(args);
+  EXPECT_NE(r.code, 0) << args << "\n" << r.out;
+  EXPECT_EQ(countLines(r.out), 1) << r.out;
+  EXPECT_NE(r.out.find("slamroute: error: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(fragment), std::string::npos) << r.out;
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
+  EXPECT_EQ(n, keep) << "something was written for: " << args;
 }
 
 }  // namespace slamroute::test

@@ -115,10 +115,10 @@ TEST(Resume, KeepsOnlyStepsWithAnOutputAndTheSameStamp) {
   Step always = s;
   always.output.clear();
   EXPECT_EQ(stepsToRun({always}, true).size(), 1u);
-  // An output without any stamp, made by a slamroute before stamps: kept (unchecked, with a
-  // warning), as `experiment --resume` always did.
+  // An output without a stamp (a step that finished as the orphan of a killed run, with the
+  // config it was started with) is made again.
   fs::remove(stampPath(s));
-  EXPECT_TRUE(stepsToRun({s}, true).empty());
+  EXPECT_EQ(stepsToRun({s}, true).size(), 1u);
 }
 
 TEST(Resume, ACopiedRunFolderKeepsItsSteps) {

@@ -33,19 +33,6 @@ bool shortDrive(const fs::path& dir) {
   return d.code == 0;
 }
 
-/// The command fails with one line naming `fragment`, and `dir` holds nothing but `keep`.
-void expectCleanFailure(const std::string& args, const std::string& fragment, const fs::path& dir,
-                        std::size_t keep) {
-  const auto r = test::runCli(args);
-  EXPECT_NE(r.code, 0) << args << "\n" << r.out;
-  EXPECT_EQ(test::countLines(r.out), 1) << r.out;
-  EXPECT_NE(r.out.find("slamroute: error: "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find(fragment), std::string::npos) << r.out;
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
-  EXPECT_EQ(n, keep) << "something was written for: " << args;
-}
-
 TEST(SurveyDriveCli, DriveWritesTheDriveFolder) {
   const auto dir = test::cliTempDir("drive_ok");
   const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_g11","g11_g21"])");
@@ -84,21 +71,23 @@ TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
   const fs::path cfg = dir / "tile.yaml";
   std::ofstream(cfg) << "evaluate:\n  output:\n    map_tile_m: 0\n";
   // The drive need not exist: the config is checked before anything is read.
-  expectCleanFailure("--config " + cfg.string() + " evaluate --drive " + (dir / "drive").string() + " --out " +
+  test::expectCleanFailure("--config " + cfg.string() + " evaluate --drive " + (dir / "drive").string() + " --out " +
                          (dir / "eval").string(),
                      cfg.string() + ": evaluate.output.map_tile_m: 0 must be >= 10", dir, 1);
 }
 
-TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
-  // pose_edges.csv is read after the SLAM, once estimate.tum and map.pcd are made: a bad one
-  // fails the evaluation, which then leaves no output folder, keeps an earlier evaluation in the
-  // same folder whole, and never writes into a folder that holds something else.
+TEST(SurveyDriveCli, AFailedEvaluateLeavesNoHalfOutput) {
+  // A bad pose_edges.csv fails the evaluation (the drive checks find it before the SLAM; a
+  // failure after it unwinds the same staging folder, OutputSwapTest): no output folder is left,
+  // an earlier evaluation in the same folder stays whole, and a folder that holds something else
+  // is never written into.
   const auto dir = test::cliTempDir("evaluate_late_failure");
   ASSERT_TRUE(shortDrive(dir));
   auto evaluate = [&](const std::string& out) {
     return test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
                         " --out " + (dir / out).string());
   };
+  const std::string pose_edges = readFile(dir / "drive/pose_edges.csv");
   const auto good = evaluate("eval");
   ASSERT_EQ(good.code, 0) << good.out;
   const std::string estimate = readFile(dir / "eval" / "estimate.tum");
@@ -116,7 +105,7 @@ TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
     EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
   fs::create_directories(dir / "foreign");
   std::ofstream(dir / "foreign" / "notes.txt") << "keep me";
-  std::ofstream(dir / "drive/pose_edges.csv") << "";  // (any content: refused before reading)
+  std::ofstream(dir / "drive/pose_edges.csv") << pose_edges;  // the drive is fine again
   const auto f = evaluate("foreign");
   EXPECT_NE(f.code, 0) << f.out;
   EXPECT_NE(f.out.find("refusing to overwrite"), std::string::npos) << f.out;
@@ -126,7 +115,7 @@ TEST(SurveyDriveCli, EvaluateFailingAfterTheSlamLeavesNoHalfOutput) {
 TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {
   const auto dir = test::cliTempDir("drive_missing_edge");
   const auto route = writeRoute(dir, "route.json", R"(["g00_g01","g01_gXX"])");
-  expectCleanFailure(
+  test::expectCleanFailure(
       "drive --net " + kGrid + " --route " + route.string() + " --out " + (dir / "out").string(),
       "route.json: edge 'g01_gXX'", dir, 1);
 }
@@ -134,7 +123,7 @@ TEST(SurveyDriveCli, DriveRejectsAnEdgeMissingFromTheNet) {
 TEST(SurveyDriveCli, DriveWithStrictTurnsRejectsATurnSumoDoesNotAllow) {
   const auto dir = test::cliTempDir("drive_bad_turn");
   const auto route = writeRoute(dir, "route.json", R"({"sumo_edges":["g00_g01","g10_g11"]})");
-  expectCleanFailure("drive --strict-turns --net " + kGrid + " --route " + route.string() +
+  test::expectCleanFailure("drive --strict-turns --net " + kGrid + " --route " + route.string() +
                          " --out " + (dir / "out").string(),
                      "'g00_g01' -> 'g10_g11'", dir, 1);
 }
@@ -158,7 +147,7 @@ TEST(SurveyDriveCli, DriveJoinsATurnSumoDoesNotAllowWithAWarning) {
 TEST(SurveyDriveCli, DriveRejectsAnEmptyRoute) {
   const auto dir = test::cliTempDir("drive_empty");
   const auto route = writeRoute(dir, "route.json", "[]");
-  expectCleanFailure(
+  test::expectCleanFailure(
       "drive --net " + kGrid + " --route " + route.string() + " --out " + (dir / "out").string(),
       "route.json", dir, 1);
 }
@@ -166,10 +155,10 @@ TEST(SurveyDriveCli, DriveRejectsAnEmptyRoute) {
 TEST(SurveyDriveCli, DriveAndSurveyRejectAnUnknownNet) {
   const auto dir = test::cliTempDir("unknown_net");
   const auto route = writeRoute(dir, "route.json", R"(["g00_g01"])");
-  expectCleanFailure("drive --net " + (dir / "nowhere.net.xml").string() + " --route " +
+  test::expectCleanFailure("drive --net " + (dir / "nowhere.net.xml").string() + " --route " +
                          route.string() + " --out " + (dir / "out").string(),
                      "nowhere.net.xml", dir, 1);
-  expectCleanFailure(
+  test::expectCleanFailure(
       "survey --net " + (dir / "nowhere.net.xml").string() + " --out " + (dir / "out").string(),
       "nowhere.net.xml", dir, 1);
 }

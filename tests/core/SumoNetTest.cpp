@@ -2,6 +2,8 @@
 #include <zlib.h>
 
 #include <cstring>
+#include <tuple>
+#include <vector>
 
 #include "TestUtil.hpp"
 #include "slamroute/core/AtomicFile.hpp"
@@ -90,6 +92,38 @@ TEST(SumoNet, ReadsGzip) {
   }
 }
 
+std::string gzipBytes(const std::filesystem::path& scratch, const std::string& text) {
+  gzFile f = gzopen(scratch.c_str(), "wb");
+  gzwrite(f, text.data(), static_cast<unsigned>(text.size()));
+  gzclose(f);
+  return readFile(scratch);
+}
+
+TEST(SumoNet, ReadsEveryMemberOfAMultiStreamGzip) {
+  // `cat a.gz b.gz`: the net split in two gzip members, as SUMO scenario archives ship them.
+  const auto dir = test::tempDir("sumonet_gz_multi");
+  const std::string text = kTinyNet;
+  const std::string a = gzipBytes(dir / "a.gz", text.substr(0, 200));
+  const std::string b = gzipBytes(dir / "b.gz", text.substr(200));
+  test::writeText(dir / "two.net.xml.gz", a + b);
+  EXPECT_EQ(readMaybeGzip(dir / "two.net.xml.gz"), text);
+  EXPECT_EQ(SumoNet::read(dir / "two.net.xml.gz").edges.size(), 4u);
+  // Zero padding after the last member is ignored (gzip does the same); other bytes are not.
+  test::writeText(dir / "padded.net.xml.gz", a + b + std::string(512, '\0'));
+  EXPECT_EQ(readMaybeGzip(dir / "padded.net.xml.gz"), text);
+  test::writeText(dir / "junk.net.xml.gz", a + b + "junk");
+  EXPECT_THROW(readMaybeGzip(dir / "junk.net.xml.gz"), std::runtime_error);
+  // A second member cut short is a truncated file, not a short net.
+  test::writeText(dir / "cut2.net.xml.gz", a + b.substr(0, b.size() / 2));
+  try {
+    readMaybeGzip(dir / "cut2.net.xml.gz");
+    FAIL() << "truncated second member accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("cut2.net.xml.gz: truncated"), std::string::npos)
+        << e.what();
+  }
+}
+
 void expectError(const std::filesystem::path& p, const std::string& fragment) {
   try {
     const SumoNet net = SumoNet::read(p);
@@ -120,6 +154,32 @@ TEST(SumoNet, BadInputsGiveOneLineErrors) {
                   "<net><edge id=\"e\" from=\"a\" to=\"b\"><lane id=\"e_0\" index=\"0\" speed=\"2\" "
                   "length=\"10\" shape=\"0,0 ten,0\"/></edge></net>");
   expectError(dir / "shape.net.xml", "bad shape point");
+}
+
+/// kTinyNet with the first occurrence of `from` replaced by `to`.
+std::string tinyNetWith(const std::string& from, const std::string& to) {
+  std::string s = kTinyNet;
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+TEST(SumoNet, RejectsNonFiniteAndAbsurdNumbers) {
+  const auto dir = test::tempDir("sumonet_absurd");
+  const std::vector<std::tuple<std::string, std::string, std::string, std::string>> cases = {
+      {"nan_x.net.xml", "x=\"100\"", "x=\"nan\"", "junction 'B'"},
+      {"inf_y.net.xml", "y=\"0\" z=\"2.5\"", "y=\"inf\" z=\"2.5\"", "junction 'B'"},
+      {"huge_x.net.xml", "x=\"200\"", "x=\"1e308\"", "within 10,000 km"},
+      {"far_shape.net.xml", "100,0 200,0", "100,0 1e8,0", "bad shape point"},
+      {"long_segment.net.xml", "100,0 200,0", "100,0 90000,0", "without a bend"},
+      {"nan_length.net.xml", "length=\"200\"", "length=\"nan\"", "lane 'CA_0' has length"},
+      {"neg_length.net.xml", "length=\"100\"", "length=\"-5\"", "lane 'AB_0' has length"},
+      {"nan_speed.net.xml", "speed=\"13.89\"", "speed=\"NaN\"", "has speed"},
+  };
+  for (const auto& [file, from, to, fragment] : cases) {
+    test::writeText(dir / file, tinyNetWith(from, to));
+    expectError(dir / file, fragment);
+  }
 }
 
 TEST(SumoNet, SharedNetworksHaveTheKnownCounts) {

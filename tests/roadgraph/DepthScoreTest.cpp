@@ -115,6 +115,59 @@ TEST(DepthScore, WeightsAreMeanFrameScoresWithFallbackForBadFrames) {
   for (const auto& e : g.edges) EXPECT_DOUBLE_EQ(e.weight, 1.0);
 }
 
+/// The first `w` x `h` pixels' worth of `img` (top-left corner), as a frame of that size.
+DepthImage crop(const DepthImage& img, int w, int h) {
+  DepthImage out;
+  out.width = w;
+  out.height = h;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) out.mm.push_back(img.at(x, y));
+  return out;
+}
+
+TEST(DepthScore, FramesOfAnotherSizeAndFramesThatMeasureNothingAreNotUsed) {
+  const fs::path dir = slamroute::test::testTmp() / "roadgraph" / "depth_sizes";
+  fs::create_directories(dir);
+  const auto corner =
+      render({{Vec3(0, 1, 0), 1.5}, {Vec3(-1, 0, 0), 3.0}, {Vec3(0, 0, 1), 15.0}});
+  writeDepthPng(dir / "a.png", corner);
+  writeDepthPng(dir / "b.png", corner);
+  writeDepthPng(dir / "small.png", crop(corner, 40, 30));  // a stray frame of another camera
+  RoadGraph g;
+  g.nodes = {{0, Point3(0, 0, 0), ""}, {1, Point3(100, 0, 0), ""}};
+  g.edges.push_back({0, 0, 1, 100, 1, {Point3(0, 0, 0), Point3(100, 0, 0)}, {}, 0});
+  std::vector<DepthFrame> frames(3);
+  for (std::size_t i = 0; i < 3; ++i) frames[i].pos = Point3(10.0 + 30.0 * i, 2, 0);
+  frames[0].file = dir / "a.png";
+  frames[1].file = dir / "small.png";
+  frames[2].file = dir / "b.png";
+  const WeightStats ws = assignDepthWeights(g, frames, DepthConfig{});
+  EXPECT_EQ(ws.scored, 2u);
+  EXPECT_EQ(ws.failed, 1u);
+  EXPECT_DOUBLE_EQ(g.edges[0].weight, scoreDepthImage(corner, DepthConfig{}).score);
+  // Every frame 40 x 30 px where the survey's index says 800 x 600: none is used, every edge gets
+  // the fallback weight (with a warning) instead of a weight near 0.
+  for (const char* f : {"a.png", "b.png"}) writeDepthPng(dir / f, crop(corner, 40, 30));
+  for (auto& fr : frames) {
+    fr.width = 800;
+    fr.height = 600;
+  }
+  DepthConfig cfg;
+  cfg.fallback_weight = 0.7;
+  const WeightStats tiny = assignDepthWeights(g, frames, cfg);
+  EXPECT_EQ(tiny.scored, 0u);
+  EXPECT_EQ(tiny.failed, 3u);
+  EXPECT_DOUBLE_EQ(g.edges[0].weight, 0.7);
+  // An index that says nothing of the size: the frames are used as they are.
+  for (auto& fr : frames) fr.width = fr.height = 0;
+  EXPECT_EQ(assignDepthWeights(g, frames, cfg).scored, 3u);
+  // Every frame scores exactly 0 (a wall straight ahead in each): no information either.
+  const auto wall = render({{Vec3(0, 0, 1), 10.0}});
+  for (const char* f : {"a.png", "b.png", "small.png"}) writeDepthPng(dir / f, wall);
+  EXPECT_EQ(assignDepthWeights(g, frames, cfg).scored, 0u);
+  EXPECT_DOUBLE_EQ(g.edges[0].weight, 0.7);
+}
+
 TEST(DepthScore, PngRoundTripAndTruncatedFile) {
   const fs::path p = slamroute::test::testTmp() / "roadgraph" / "rt.png";
   fs::create_directories(p.parent_path());

@@ -4,7 +4,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
+#include <sstream>
 
+#include "SyntheticTraces.hpp"
+#include "slamroute/roadgraph/GraphBuilder.hpp"
 #include "slamroute/roadgraph/Traces.hpp"
 
 namespace slamroute::roadgraph {
@@ -28,9 +32,46 @@ TEST(Traces, ReadsCsvByHeaderName) {
   const Traces tr = readTraces(p);
   ASSERT_EQ(tr.points.size(), 3u);
   EXPECT_EQ(tr.vehicles.size(), 2u);
-  EXPECT_EQ(tr.points[2].vehicle, 0);
-  EXPECT_DOUBLE_EQ(tr.points[1].pos.z(), 1.0);
+  // Points come in (vehicle name, time) order whatever the file's row order.
+  EXPECT_EQ(tr.points[1].vehicle, 0);
+  EXPECT_DOUBLE_EQ(tr.points[1].t, 0.2);
+  EXPECT_EQ(tr.vehicles[static_cast<std::size_t>(tr.points[2].vehicle)], "car1");
+  EXPECT_DOUBLE_EQ(tr.points[2].pos.z(), 1.0);
   EXPECT_DOUBLE_EQ(tr.points[0].heading_deg, 90.0);
+}
+
+TEST(Traces, TheGraphDoesNotDependOnTheRowOrder) {
+  // The same rows shuffled: the same traces, so the same graph (ties on time within a vehicle
+  // broken by position, vehicles numbered by name).
+  const Traces synthetic = testing::makeTraces(testing::gridRoads(3, 100, 0), 0.5);
+  std::vector<std::string> rows;
+  for (const auto& p : synthetic.points) {
+    std::ostringstream row;
+    row.precision(10);
+    row << p.t << "," << synthetic.vehicles[static_cast<std::size_t>(p.vehicle)] << "," << p.pos.x()
+        << "," << p.pos.y() << ",0," << p.heading_deg << "," << p.speed << "\n";
+    rows.push_back(row.str());
+  }
+  rows.push_back(rows[7]);  // a duplicated row: a tie on every key
+  const std::string header = "t,vehicle,x,y,z,heading_deg,speed\n";
+  std::string ordered = header, shuffled = header;
+  for (const auto& r : rows) ordered += r;
+  std::mt19937 rng(5);
+  std::shuffle(rows.begin(), rows.end(), rng);
+  for (const auto& r : rows) shuffled += r;
+  const Traces a = readTraces(tmpFile("ordered.csv", ordered));
+  const Traces b = readTraces(tmpFile("shuffled.csv", shuffled));
+  ASSERT_EQ(a.points.size(), b.points.size());
+  EXPECT_EQ(a.vehicles, b.vehicles);
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    EXPECT_EQ(a.points[i].vehicle, b.points[i].vehicle) << i;
+    EXPECT_EQ(a.points[i].t, b.points[i].t) << i;
+    EXPECT_EQ(a.points[i].pos, b.points[i].pos) << i;
+  }
+  const auto ga = buildRoadGraph(a, Config{}).graph, gb = buildRoadGraph(b, Config{}).graph;
+  EXPECT_EQ(ga.nodes.size(), gb.nodes.size());
+  EXPECT_EQ(ga.edges.size(), gb.edges.size());
+  EXPECT_DOUBLE_EQ(ga.totalLength(), gb.totalLength());
 }
 
 TEST(Traces, ReadsFcdXmlAndConvertsTheAngle) {
@@ -46,9 +87,10 @@ TEST(Traces, ReadsFcdXmlAndConvertsTheAngle) {
                          "</fcd-export>\n");
   const Traces tr = readTraces(p);
   ASSERT_EQ(tr.points.size(), 3u);
+  // In (vehicle, time) order: v0 at 0.0 and 0.1, then v1.
   EXPECT_DOUBLE_EQ(tr.points[0].heading_deg, 90.0);  // north
-  EXPECT_DOUBLE_EQ(tr.points[1].heading_deg, 0.0);   // east
-  EXPECT_DOUBLE_EQ(tr.points[2].t, 0.1);
+  EXPECT_DOUBLE_EQ(tr.points[2].heading_deg, 0.0);   // east
+  EXPECT_DOUBLE_EQ(tr.points[1].t, 0.1);
   EXPECT_DOUBLE_EQ(tr.points[0].pos.z(), 3.0);
   EXPECT_EQ(tr.vehicles.size(), 2u);
 }

@@ -70,6 +70,10 @@ TEST(Survey, GridSurveyCoversTheNetWithTracesAndDepthFrames) {
   const auto index = readCsv(out / "depth/index.csv");
   ASSERT_GT(index.size(), 5u);
   EXPECT_EQ(index[0].back(), "file");
+  // The camera's size, so that build-graph can tell a frame of another size (width, height).
+  EXPECT_EQ(index[0][10], "width");
+  EXPECT_EQ(index[1][10], "160");
+  EXPECT_EQ(index[1][11], "120");
   EXPECT_EQ(index.size() - 1, r.depth_frames);
   const auto img = simulate::readDepthPng(out / "depth" / index[1].back());
   EXPECT_EQ(img.width, 160);

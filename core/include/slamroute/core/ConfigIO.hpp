@@ -11,6 +11,8 @@
 //
 // dumpYaml() writes every field with its default and comment; loadYaml() overrides only the keys
 // present and rejects unknown keys (a typo in a config file is an error, not a silent default).
+// A struct with a `void validate() const` (throwing std::invalid_argument "key must be ...") is
+// checked as soon as its section is loaded (validateSection).
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
@@ -65,9 +67,23 @@ class Dumper {
   int indent_;
 };
 
+/// Runs a section's validate() (when it has one) right after the section is loaded, so a value
+/// that cannot work fails before any work with "FILE: section.sub.key ..." instead of after a run.
+template <class S>
+void validateSection(const S& sub, const std::string& file, const std::string& path) {
+  if constexpr (requires { sub.validate(); }) {
+    try {
+      sub.validate();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(file + ": " + path + e.what());
+    }
+  }
+}
+
 class Loader {
  public:
-  Loader(const YAML::Node& node, std::string where) : node_(node), where_(std::move(where)) {}
+  Loader(const YAML::Node& node, std::string where)
+      : node_(node), where_(where), file_(std::move(where)) {}
 
   template <class T>
   void field(const char* key, T& value, const char*) {
@@ -86,13 +102,16 @@ class Loader {
     const YAML::Node n = node_[key];
     if (!n) return;
     if (!n.IsMap()) throw std::invalid_argument(where_ + ": '" + key + "' must be a mapping");
-    Loader inner(n, where_ + ":" + key);
+    Loader inner(n, where_ + ":" + key, file_, path_ + key + ".");
     visitFields(inner, sub);
     inner.checkUnknown();
+    validateSection(sub, file_, inner.path_);
   }
   void moved(const char* old_key, const char* new_key) { moved_.emplace_back(old_key, new_key); }
   void checkUnknown() const {
     for (const auto& kv : node_) {
+      if (!kv.first.IsScalar())
+        throw std::invalid_argument(where_ + ": a key is not a plain name");
       const auto k = kv.first.as<std::string>();
       bool known = false;
       for (const auto& s : seen_) known = known || s == k;
@@ -105,8 +124,12 @@ class Loader {
   }
 
  private:
+  Loader(const YAML::Node& node, std::string where, std::string file, std::string path)
+      : node_(node), where_(std::move(where)), file_(std::move(file)), path_(std::move(path)) {}
   YAML::Node node_;
   std::string where_;
+  std::string file_;  ///< the config file, for validate()'s messages
+  std::string path_;  ///< "section.sub." of this loader's keys
   std::vector<std::string> seen_;
   std::vector<std::pair<std::string, std::string>> moved_;
 };
@@ -128,6 +151,7 @@ void loadYaml(const YAML::Node& node, C& cfg, const std::string& where) {
   Loader l(node, where);
   visitFields(l, cfg);
   l.checkUnknown();
+  validateSection(cfg, where, "");
 }
 
 }  // namespace slamroute::config

@@ -1,9 +1,11 @@
 #pragma once
 // A result folder built in a hidden temporary folder beside its target and moved into place by
 // commit(); destroyed without commit(), the temporary folder is removed. Used by drive, survey
-// and evaluate so that a failed run leaves nothing half-written. A temporary folder of a process
-// that was killed (it cannot remove its own) is removed by the next StagingDir for the same
-// target.
+// and evaluate so that a failed run leaves nothing half-written. commit() swaps the new folder
+// in so that one complete result exists at every instant (RENAME_EXCHANGE, or the old one renamed
+// aside first). SIGINT, SIGTERM and SIGHUP remove the temporary folder; one of a process killed
+// otherwise is removed by the next StagingDir for the same target, which also puts back a
+// previous result that was set aside when the kill came.
 #include <filesystem>
 #include <string>
 

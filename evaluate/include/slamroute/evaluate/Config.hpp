@@ -211,8 +211,8 @@ struct Config {
   LoopConfig loop;
   OutputConfig output;
   MetricsConfig metrics;
-  /// Throws std::invalid_argument naming the first field ("evaluate.mapping.iterations: ...")
-  /// whose value cannot work. Run once when the config is loaded.
+  /// Throws std::invalid_argument naming the first field ("mapping.iterations: ...") whose value
+  /// cannot work. The config loader runs it once when the evaluate section is loaded.
   void validate() const;
 };
 

@@ -13,7 +13,7 @@ struct PlaceRecognitionConfig {
   double max_distance = 0.3;      ///< a candidate matches below this descriptor distance (0..1)
   int ring_key_candidates = 10;   ///< nearest ring keys that get the full rotation search
   /// Throws std::invalid_argument naming the first bad field ("WHERE.rings: 0 must be ...").
-  void validate(const std::string& where = "place") const;
+  void validate(const std::string& where) const;
 };
 template <class V>
 void visitFields(V& v, PlaceRecognitionConfig& c) {

@@ -8,6 +8,7 @@ namespace slamroute::rl {
 
 /// Extended information filter over the vehicle pose (x, y, heading): the R_U model (eq. 6).
 struct EifConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double init_sigma_xy_m = 0.1;           ///< initial position std-dev [m]
   double init_sigma_heading_rad = 0.01;   ///< initial heading std-dev [rad]
   double long_var_per_m = 1e-3;           ///< along-track variance added per metre driven [m^2/m]
@@ -37,6 +38,7 @@ void visitFields(V& v, EifConfig& c) {
 
 /// Tabular Q-learning (paper §3.2, eqs. 5-7).
 struct QLearningConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   int episodes = 1000;          ///< training episodes (paper: 1000)
   double gamma = 0.25;          ///< discount (paper: best of 0.25/0.5/0.75/0.9)
   double alpha = 0.3;           ///< learning rate (paper: unspecified)
@@ -80,6 +82,7 @@ void visitFields(V& v, QLearningConfig& c) {
 }
 
 struct RandomConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double max_steps_per_edge = 1000.0;  ///< random walk step cap = this * edge count, then shortest paths
   double budget_m = 0.0;  ///< stop the walk at this driven length, goal met or not (0: no budget) [m]
 };
@@ -94,6 +97,7 @@ void visitFields(V& v, RandomConfig& c) {
 }
 
 struct TspConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   int exact_max_nodes = 18;        ///< Held-Karp (exact) up to this many nodes (memory 2^(n-1)*n*8 B)
   int christofides_max_nodes = 400;  ///< above: greedy tour + 2-opt instead of Christofides
   int max_nodes = 3000;            ///< refuse above this (the distance matrix is n^2)
@@ -111,6 +115,7 @@ void visitFields(V& v, TspConfig& c) {
 }
 
 struct PostmanConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   bool closed = true;  ///< the circuit returns to its start (Euler circuit)
   int max_forcing_rounds = 12;  ///< re-solves forcing a turn into a separate trail (0 = detours only)
 };

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "slamroute/roadgraph/DepthScore.hpp"
 #include "slamroute/roadgraph/GraphBuilder.hpp"
@@ -25,7 +26,13 @@ struct BuildOutput {
 };
 BuildOutput buildGraph(const BuildInputs& in, const Config& cfg);
 
-/// GRAPH.json plus GRAPH.geojson, GRAPH.graphml and GRAPH.png (coloured by weight).
+/// GRAPH.json, GRAPH.geojson, GRAPH.graphml and GRAPH.png: the files writeGraphOutputs replaces.
+std::vector<std::filesystem::path> graphOutputPaths(const std::filesystem::path& json_path);
+/// Throws std::invalid_argument naming the file when an output path is one of the inputs.
+void checkOutputsAreNotInputs(const BuildInputs& in, const std::filesystem::path& json_path);
+
+/// GRAPH.json plus GRAPH.geojson, GRAPH.graphml and GRAPH.png (coloured by weight), replaced
+/// together (AtomicFileSet): a failure while writing keeps the previous four whole.
 void writeGraphOutputs(const RoadGraph& graph, const std::filesystem::path& json_path);
 
 }  // namespace slamroute::roadgraph

@@ -8,6 +8,7 @@ namespace slamroute::roadgraph {
 
 /// Intersection (node) detection with the hollow cylinder (paper §3.1, Fig. 2b).
 struct NodeConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double downsample_m = 2.0;         ///< voxel size trace points are thinned to first [m]
   double inner_radius_m = 10.0;      ///< hollow cylinder inner radius [m] (paper)
   double outer_radius_m = 25.0;      ///< hollow cylinder outer radius [m] (paper)
@@ -100,6 +101,7 @@ void visitFields(V& v, NodeConfig& c) {
 
 /// Street (edge) clustering and attachment (paper §3.1, eqs. 1-2, Fig. 2c-d).
 struct EdgeConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double clear_radius_m = 12.0;       ///< trace points this close to a node are removed [m]
   double cluster_tolerance_m = 4.0;   ///< Euclidean clustering distance of street points [m]
   int min_street_points = 5;          ///< smaller leftover clusters are dropped [points]
@@ -143,6 +145,7 @@ void visitFields(V& v, EdgeConfig& c) {
 
 /// Edge weights from depth images (paper §3.1, eqs. 3-4).
 struct DepthConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   int pixel_stride = 4;              ///< use every n-th pixel in x and y [px]
   int normal_neighbours = 14;        ///< nearest neighbours per normal (paper 14)
   int search_window_px = 2;          ///< neighbour candidates within this many strided pixels
@@ -166,6 +169,7 @@ void visitFields(V& v, DepthConfig& c) {
 
 /// Comparison with a SUMO net and mapping of graph edges to SUMO edges.
 struct SumoMatchConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double match_radius_m = 15.0;     ///< detected node matches a true intersection this close [m]
   double sample_step_m = 4.0;       ///< polyline sampling for the SUMO edge mapping [m]
   double max_lane_dist_m = 12.0;    ///< samples farther from every lane are not mapped [m]
@@ -192,6 +196,7 @@ void visitFields(V& v, SumoMatchConfig& c) {
 
 /// Roundabouts (Roundabouts.cpp): rings that vehicles circle round an empty middle.
 struct RoundaboutConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   bool enabled = true;
   double min_radius_m = 6.0;   ///< smallest ring radius (centre to circulating lane) [m]
   double max_radius_m = 30.0;  ///< largest ring radius [m]

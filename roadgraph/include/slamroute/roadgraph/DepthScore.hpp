@@ -40,8 +40,10 @@ struct DepthFrame {
   std::string vehicle;
   Point3 pos = Point3::Zero();  ///< camera position in the world [m]
   std::filesystem::path file;   ///< absolute path of the PNG
+  int width = 0, height = 0;    ///< the camera's image size [px]; 0 when the index does not say
 };
-/// Reads depth/index.csv (columns by header name; needs x, y, z and file). Throws naming the file.
+/// Reads depth/index.csv (columns by header name; needs x, y, z and file; width and height when
+/// present). Throws naming the file.
 std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv);
 
 struct WeightStats {

@@ -3,6 +3,7 @@
 namespace slamroute::simulate {
 
 struct DepthCameraConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   int width = 800;                 ///< image width [px] (paper: 800)
   int height = 600;                ///< image height [px] (paper: 600)
   double hfov_deg = 90.0;          ///< horizontal field of view [deg] (CARLA's default camera)

@@ -4,6 +4,7 @@
 namespace slamroute::simulate {
 
 struct DriveConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double record_hz = 10.0;      ///< ground-truth pose rate [Hz] (a multiple of the 0.1 s step)
   double step_length_s = 0.1;   ///< SUMO simulation step [s]
   double traffic_per_km = 3.0;  ///< background vehicles kept per km of drivable road

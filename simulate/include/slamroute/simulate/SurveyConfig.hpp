@@ -5,6 +5,7 @@
 namespace slamroute::simulate {
 
 struct SurveyConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double route_length_m = 2000.0;  ///< covering route length per survey vehicle (greedy cover) [m]
   double depart_interval_s = 2.0;  ///< survey vehicle i departs at i * this [s]
   double traffic_per_km = 2.0;     ///< background vehicles (random trips) per km of drivable road
