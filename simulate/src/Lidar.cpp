@@ -23,29 +23,33 @@ struct BoxCull {
   int c0 = 0, c1 = -1;  ///< c1 may exceed the column count (wrap)
 };
 
-std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3& T_world_sensor,
-                               double max_range, int columns) {
+/// Boxes in range of the sweep and the columns that can see each, from the sensor poses at the
+/// sweep's start and end (the sensor turns and moves little within one sweep).
+std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3& T_start,
+                               const Pose3& T_end, double max_range, int columns) {
   std::vector<BoxCull> out;
-  const Pose3 T_sensor_world = T_world_sensor.inverse();
-  const Vec3 o = T_world_sensor.translation();
+  const Pose3 T_sw[2] = {T_start.inverse(), T_end.inverse()};
+  const Vec3 o[2] = {T_start.translation(), T_end.translation()};
   for (const auto& b : boxes) {
     BoxCull bc;
     bc.box = detail::prepareBox(b);
     const double radius = bc.box.half.norm();
-    const double dist = (bc.box.c - o).norm();
+    const double dist = std::min((bc.box.c - o[0]).norm(), (bc.box.c - o[1]).norm());
     if (dist - radius > max_range) continue;
-    if ((bc.box.c - o).head<2>().norm() <= radius + 0.5) {
+    if ((bc.box.c - o[0]).head<2>().norm() <= radius + 0.5 ||
+        (bc.box.c - o[1]).head<2>().norm() <= radius + 0.5) {
       bc.all = true;
     } else {
-      // azimuths of the 8 corners in the sensor frame, relative to the centre's azimuth
-      const Vec3 cs = T_sensor_world * bc.box.c;
+      // azimuths of the 8 corners in the sensor frames, relative to the centre's azimuth at the
+      // start
+      const Vec3 cs = T_sw[0] * bc.box.c;
       const double a0 = std::atan2(cs.y(), cs.x());
       double lo = 0, hi = 0;
       bool all = false;
-      for (int k = 0; k < 8; ++k) {
+      for (int k = 0; k < 16; ++k) {
         const Eigen::Vector2d xy = bc.box.c.head<2>() + bc.box.u * bc.box.half.x() * ((k & 1) ? 1 : -1) +
                                    bc.box.v * bc.box.half.y() * ((k & 2) ? 1 : -1);
-        const Vec3 p = T_sensor_world * Vec3(xy.x(), xy.y(), bc.box.c.z() + bc.box.half.z() * ((k & 4) ? 1 : -1));
+        const Vec3 p = T_sw[k >> 3] * Vec3(xy.x(), xy.y(), bc.box.c.z() + bc.box.half.z() * ((k & 4) ? 1 : -1));
         if (p.head<2>().norm() < 1e-6) all = true;
         double d = std::atan2(p.y(), p.x()) - a0;
         while (d > M_PI) d -= 2 * M_PI;
@@ -82,6 +86,8 @@ Lidar::Lidar(const LidarConfig& cfg, std::uint64_t seed)
   if (!(cfg.range_sigma_m >= 0)) throw std::invalid_argument("simulate.lidar: range_sigma_m must be >= 0");
   if (!(cfg.dropout_prob >= 0 && cfg.dropout_prob < 1))
     throw std::invalid_argument("simulate.lidar: dropout_prob must be in [0, 1)");
+  if (!(cfg.sweep_period_s > 0 && cfg.sweep_period_s <= 1))
+    throw std::invalid_argument("simulate.lidar: sweep_period_s must be in (0, 1]");
   for (int r = 0; r < spec_.channels; ++r) {
     cos_el_.push_back(static_cast<float>(std::cos(elevationRad(r))));
     sin_el_.push_back(static_cast<float>(std::sin(elevationRad(r))));
@@ -103,13 +109,11 @@ double Lidar::azimuthRad(int column) const {
   return 2.0 * M_PI * column / spec_.horizontal_samples;
 }
 
-Scan Lidar::scan(const World& world, const Pose3& T_ws, const std::vector<VehicleBox>& boxes,
-                 std::size_t scan_index, double t) const {
+Scan Lidar::scan(const World& world, const Pose3& T_start, const Pose3& T_end,
+                 const std::vector<VehicleBox>& boxes, std::size_t scan_index, double t) const {
   const int C = spec_.channels, H = spec_.horizontal_samples;
-  const auto culled = cullBoxes(boxes, T_ws, spec_.max_range_m, H);
-  const Eigen::Matrix3f R = T_ws.linear().cast<float>();
-  const Eigen::Vector3f o = T_ws.translation().cast<float>();
-  const Vec3 od = T_ws.translation();
+  const bool moving = cfg_.motion_distortion;
+  const auto culled = cullBoxes(boxes, T_start, moving ? T_end : T_start, spec_.max_range_m, H);
   const RTCScene scene = world.impl().scene.scene();
   const auto& kinds = world.impl().mesh.kinds;
   std::vector<ScanPoint> grid(static_cast<std::size_t>(C) * H);
@@ -123,6 +127,13 @@ Scan Lidar::scan(const World& world, const Pose3& T_ws, const std::vector<Vehicl
     alignas(64) int mask[16];
     Eigen::Vector3f dir_s[16];
     for (int c = cols.begin(); c != cols.end(); ++c) {
+      // column c fires at its own moment of the sweep, from where the sensor is then
+      const double f = moving ? static_cast<double>(c) / H : 0.0;
+      const Pose3 T_ws = moving ? interpolatePose(T_start, T_end, f) : T_start;
+      const float dt = static_cast<float>(f * cfg_.sweep_period_s);
+      const Eigen::Matrix3f R = T_ws.linear().cast<float>();
+      const Eigen::Vector3f o = T_ws.translation().cast<float>();
+      const Vec3 od = T_ws.translation();
       for (int r0 = 0; r0 < C; r0 += 16) {
         rtcInitIntersectContext(&ctx);
         ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -170,6 +181,7 @@ Scan Lidar::scan(const World& world, const Pose3& T_ws, const std::vector<Vehicl
           p.z = q.z();
           p.intensity = detail::reflectivity(kind) * static_cast<float>(cosi);
           p.ring = r;
+          p.dt = dt;
           valid[idx] = 1;
         }
       }
@@ -177,26 +189,47 @@ Scan Lidar::scan(const World& world, const Pose3& T_ws, const std::vector<Vehicl
   });
   Scan s;
   s.t = t;
+  s.has_point_times = moving;
   s.points.reserve(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i)
     if (valid[i]) s.points.push_back(grid[i]);
   return s;
 }
 
-std::vector<Scan> Lidar::scanMany(const World& world, const std::vector<Pose3>& poses,
+std::vector<Scan> Lidar::scanMany(const World& world, const std::vector<Pose3>& starts,
+                                  const std::vector<Pose3>& ends,
                                   const std::vector<std::vector<VehicleBox>>& boxes,
                                   std::size_t first_index, const std::vector<double>& times) const {
-  if (!boxes.empty() && boxes.size() != poses.size())
+  if (ends.size() != starts.size())
+    throw std::invalid_argument("Lidar::scanMany: one end pose per start pose required");
+  if (!boxes.empty() && boxes.size() != starts.size())
     throw std::invalid_argument("Lidar::scanMany: boxes must be empty or one entry per pose");
-  if (!times.empty() && times.size() != poses.size())
+  if (!times.empty() && times.size() != starts.size())
     throw std::invalid_argument("Lidar::scanMany: times must be empty or one entry per pose");
-  std::vector<Scan> out(poses.size());
+  std::vector<Scan> out(starts.size());
   static const std::vector<VehicleBox> none;
-  tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t k) {
-    out[k] = scan(world, poses[k], boxes.empty() ? none : boxes[k], first_index + k,
+  tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t k) {
+    out[k] = scan(world, starts[k], ends[k], boxes.empty() ? none : boxes[k], first_index + k,
                   times.empty() ? 0.0 : times[k]);
   });
   return out;
+}
+
+Pose3 interpolatePose(const Pose3& a, const Pose3& b, double f) {
+  const Eigen::Quaterniond qa(a.linear()), qb(b.linear());
+  Pose3 T = Pose3::Identity();
+  T.linear() = qa.slerp(f, qb).toRotationMatrix();
+  T.translation() = a.translation() + f * (b.translation() - a.translation());
+  return T;
+}
+
+Pose3 poseAtTime(const Trajectory& traj, std::size_t i, double t) {
+  std::size_t j = i;
+  while (j + 1 < traj.size() && traj[j + 1].t < t) ++j;
+  if (j + 1 >= traj.size()) return traj.back().T_world_body;
+  const double span = traj[j + 1].t - traj[j].t;
+  const double f = span > 0 ? std::clamp((t - traj[j].t) / span, 0.0, 1.0) : 1.0;
+  return interpolatePose(traj[j].T_world_body, traj[j + 1].T_world_body, f);
 }
 
 }  // namespace slamroute::simulate
