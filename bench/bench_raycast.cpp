@@ -2,7 +2,7 @@
 // 16 x 1800) swept while moving, from poses along the streets, single-thread and two-thread,
 // and how rays are issued
 // (rtcIntersect1 one by one, rtcIntersect1M streams of a column, rtcIntersect16 packets as
-// Lidar::scan does). Usage: bench_raycast [NET] [SCANS]
+// Lidar::scan does). Usage: bench_raycast [NET] [SCANS] [PRESET]  (PRESET: vlp16, paper, hdl32)
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
   const World world = World::build(net, WorldConfig{}, 42);
   const double t_build = now() - t0;
   LidarConfig cfg;  // the default sensor (vlp16: 16 x 1800), 2 cm noise, 1 % dropout
+  if (argc > 3) cfg.preset = argv[3];
   const Lidar lidar(cfg, 42);
   const auto poses = posesAlongStreets(net, n_scans);
   const double rays = static_cast<double>(poses.size()) * lidar.spec().channels * lidar.spec().horizontal_samples;
