@@ -1,8 +1,8 @@
 // Ray throughput of the simulated LiDAR in the default city: scans of the default sensor (vlp16,
 // 16 x 1800) swept while moving, from poses along the streets, single-thread and two-thread,
-// and how rays are issued
-// (rtcIntersect1 one by one, rtcIntersect1M streams of a column, rtcIntersect16 packets as
-// Lidar::scan does). Usage: bench_raycast [NET] [SCANS] [PRESET]  (PRESET: vlp16, paper, hdl32)
+// and how rays could be issued instead (rtcIntersect1 one by one, rtcIntersect1M streams of a
+// column, rtcIntersect16 packets of a column's rings; Lidar::scan packs one ring of 16
+// neighbouring columns). Usage: bench_raycast [NET] [SCANS] [PRESET]  (vlp16, paper, hdl32)
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 

@@ -23,6 +23,18 @@ struct BoxCull {
   int c0 = 0, c1 = -1;  ///< c1 may exceed the column count (wrap)
 };
 
+/// Where the sensor is when a column fires, and when (after the sweep's start).
+struct ColumnPose {
+  Eigen::Matrix3f R = Eigen::Matrix3f::Identity();
+  Eigen::Vector3f o = Eigen::Vector3f::Zero();
+  Vec3 od = Vec3::Zero();
+  float dt = 0;
+  ColumnPose() = default;
+  ColumnPose(const Pose3& T, float dt_s)
+      : R(T.linear().cast<float>()), o(T.translation().cast<float>()), od(T.translation()), dt(dt_s) {}
+};
+
+
 /// Boxes in range of the sweep and the columns that can see each, from the sensor poses at the
 /// sweep's start and end (the sensor turns and moves little within one sweep).
 std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3& T_start,
@@ -79,6 +91,47 @@ bool boxCoversColumn(const BoxCull& b, int c, int columns) {
   return (c >= b.c0 && c <= b.c1) || (c + columns >= b.c0 && c + columns <= b.c1);
 }
 
+/// The return of lane k of a cast packet (ring r of column c, direction dir_s in the sensor
+/// frame), with the traffic boxes, noise and dropout; false when there is none.
+bool returnOf(const LidarSpec& spec, const LidarConfig& cfg, const World& world,
+              const RTCRayHit16& rh, int k, const std::vector<BoxCull>& culled, int c, int r,
+              const ColumnPose& pose, const Eigen::Vector3f& dir_s, std::uint64_t key,
+              std::size_t idx, ScanPoint& p) {
+  double range = std::numeric_limits<double>::infinity();
+  Vec3 n = Vec3::UnitZ();
+  SurfaceKind kind = SurfaceKind::Ground;
+  const Vec3 d(rh.ray.dir_x[k], rh.ray.dir_y[k], rh.ray.dir_z[k]);
+  if (rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
+    range = rh.ray.tfar[k];
+    n = Vec3(rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]);
+    kind = world.impl().mesh.kinds[rh.hit.primID[k]];
+  }
+  for (const auto& b : culled) {
+    if (!boxCoversColumn(b, c, spec.horizontal_samples)) continue;
+    double tb;
+    Vec3 nb;
+    if (detail::intersectBox(b.box, pose.od, d, std::min(range, spec.max_range_m), &tb, &nb)) {
+      range = tb;
+      n = nb;
+      kind = SurfaceKind::Vehicle;
+    }
+  }
+  if (!(range >= spec.min_range_m && range <= spec.max_range_m)) return false;
+  detail::RayRandom rnd(key, idx);
+  if (cfg.dropout_prob > 0 && rnd.uniform() < cfg.dropout_prob) return false;
+  if (cfg.range_sigma_m > 0) range += cfg.range_sigma_m * rnd.normal();
+  if (!(range >= spec.min_range_m && range <= spec.max_range_m)) return false;
+  const double cosi = std::abs(n.normalized().dot(d));
+  const Eigen::Vector3f q = dir_s * static_cast<float>(range);
+  p.x = q.x();
+  p.y = q.y();
+  p.z = q.z();
+  p.intensity = detail::reflectivity(kind) * static_cast<float>(cosi);
+  p.ring = r;
+  p.dt = pose.dt;
+  return true;
+}
+
 }  // namespace
 
 Lidar::Lidar(const LidarConfig& cfg, std::uint64_t seed)
@@ -115,74 +168,42 @@ Scan Lidar::scan(const World& world, const Pose3& T_start, const Pose3& T_end,
   const bool moving = cfg_.motion_distortion;
   const auto culled = cullBoxes(boxes, T_start, moving ? T_end : T_start, spec_.max_range_m, H);
   const RTCScene scene = world.impl().scene.scene();
-  const auto& kinds = world.impl().mesh.kinds;
   std::vector<ScanPoint> grid(static_cast<std::size_t>(C) * H);
   std::vector<unsigned char> valid(grid.size(), 0);
   const float tmax = static_cast<float>(spec_.max_range_m);
   const std::uint64_t key = detail::RayRandom::scanKey(seed_, scan_index);
 
+  // Packets of one ring over 16 neighbouring columns: their rays are nearly parallel (a fraction
+  // of a degree apart), which Embree traverses much faster than the rings of one column.
   tbb::parallel_for(tbb::blocked_range<int>(0, H, 64), [&](const tbb::blocked_range<int>& cols) {
     RTCIntersectContext ctx;
     alignas(64) RTCRayHit16 rh;
     alignas(64) int mask[16];
+    ColumnPose pose[16];
     Eigen::Vector3f dir_s[16];
-    for (int c = cols.begin(); c != cols.end(); ++c) {
-      // column c fires at its own moment of the sweep, from where the sensor is then
-      const double f = moving ? static_cast<double>(c) / H : 0.0;
-      const Pose3 T_ws = moving ? interpolatePose(T_start, T_end, f) : T_start;
-      const float dt = static_cast<float>(f * cfg_.sweep_period_s);
-      const Eigen::Matrix3f R = T_ws.linear().cast<float>();
-      const Eigen::Vector3f o = T_ws.translation().cast<float>();
-      const Vec3 od = T_ws.translation();
-      for (int r0 = 0; r0 < C; r0 += 16) {
+    for (int c0 = cols.begin(); c0 < cols.end(); c0 += 16) {
+      const int n = std::min(16, cols.end() - c0);
+      for (int k = 0; k < n; ++k) {
+        // column c fires at its own moment of the sweep, from where the sensor is then
+        const double f = moving ? static_cast<double>(c0 + k) / H : 0.0;
+        pose[k] = ColumnPose(moving ? interpolatePose(T_start, T_end, f) : T_start,
+                             static_cast<float>(f * cfg_.sweep_period_s));
+      }
+      for (int r = 0; r < C; ++r) {
         rtcInitIntersectContext(&ctx);
         ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         for (int k = 0; k < 16; ++k) {
-          const int r = r0 + k;
-          mask[k] = r < C ? -1 : 0;
-          const int rr = std::min(r, C - 1);
-          dir_s[k] = Eigen::Vector3f(cos_el_[rr] * cos_az_[c], cos_el_[rr] * sin_az_[c], sin_el_[rr]);
-          const Eigen::Vector3f d = R * dir_s[k];
-          detail::setRay16(rh, k, o, d, tmax);
+          mask[k] = k < n ? -1 : 0;
+          const int kk = std::min(k, n - 1), c = c0 + kk;
+          dir_s[k] = Eigen::Vector3f(cos_el_[r] * cos_az_[c], cos_el_[r] * sin_az_[c], sin_el_[r]);
+          detail::setRay16(rh, k, pose[kk].o, pose[kk].R * dir_s[k], tmax);
         }
         rtcIntersect16(mask, scene, &ctx, &rh);
-        for (int k = 0; k < 16 && r0 + k < C; ++k) {
-          const int r = r0 + k;
-          double range = std::numeric_limits<double>::infinity();
-          Vec3 n = Vec3::UnitZ();
-          SurfaceKind kind = SurfaceKind::Ground;
-          const Vec3 d(rh.ray.dir_x[k], rh.ray.dir_y[k], rh.ray.dir_z[k]);
-          if (rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
-            range = rh.ray.tfar[k];
-            n = Vec3(rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]);
-            kind = kinds[rh.hit.primID[k]];
-          }
-          for (const auto& b : culled) {
-            if (!boxCoversColumn(b, c, H)) continue;
-            double tb;
-            Vec3 nb;
-            if (detail::intersectBox(b.box, od, d, std::min(range, spec_.max_range_m), &tb, &nb)) {
-              range = tb;
-              n = nb;
-              kind = SurfaceKind::Vehicle;
-            }
-          }
-          if (!(range >= spec_.min_range_m && range <= spec_.max_range_m)) continue;
+        for (int k = 0; k < n; ++k) {
+          const int c = c0 + k;
           const std::size_t idx = static_cast<std::size_t>(c) * C + r;
-          detail::RayRandom rnd(key, idx);
-          if (cfg_.dropout_prob > 0 && rnd.uniform() < cfg_.dropout_prob) continue;
-          if (cfg_.range_sigma_m > 0) range += cfg_.range_sigma_m * rnd.normal();
-          if (!(range >= spec_.min_range_m && range <= spec_.max_range_m)) continue;
-          const double cosi = std::abs(n.normalized().dot(d));
-          ScanPoint& p = grid[idx];
-          const Eigen::Vector3f q = dir_s[k] * static_cast<float>(range);
-          p.x = q.x();
-          p.y = q.y();
-          p.z = q.z();
-          p.intensity = detail::reflectivity(kind) * static_cast<float>(cosi);
-          p.ring = r;
-          p.dt = dt;
-          valid[idx] = 1;
+          valid[idx] = returnOf(spec_, cfg_, world, rh, k, culled, c, r, pose[k], dir_s[k], key,
+                                idx, grid[idx]);
         }
       }
     }
