@@ -1,7 +1,8 @@
-// Ray throughput of the simulated LiDAR in the default city: a 64x1800 scan ("paper" preset)
-// from poses along the streets, single-thread and two-thread, and how rays are issued
-// (rtcIntersect1 one by one, rtcIntersect1M streams of a column, rtcIntersect16 packets as
-// Lidar::scan does). Usage: bench_raycast [NET] [SCANS]
+// Ray throughput of the simulated LiDAR in the default city: scans of the default sensor (vlp16,
+// 16 x 1800) swept while moving, from poses along the streets, single-thread and two-thread,
+// and how rays could be issued instead (rtcIntersect1 one by one, rtcIntersect1M streams of a
+// column, rtcIntersect16 packets of a column's rings; Lidar::scan packs one ring of 16
+// neighbouring columns). Usage: bench_raycast [NET] [SCANS] [PRESET]  (vlp16, paper, hdl32)
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
@@ -46,6 +47,15 @@ std::vector<Pose3> posesAlongStreets(const SumoNet& net, std::size_t n) {
     out.push_back(T);
   }
   return out;
+}
+
+/// Where the sensor is at the end of a sweep that starts at T: a car at 50 km/h (1.4 m per
+/// 0.1 s sweep) turning 0.5 degrees, so each column is cast from its own pose as in a drive.
+Pose3 sweepEnd(const Pose3& T) {
+  Pose3 step = Pose3::Identity();
+  step.linear() = Eigen::AngleAxisd(0.5 * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  step.translation() = Vec3(1.4, 0, 0);
+  return T * step;
 }
 
 /// The same rays as Lidar::scan, issued with rtcIntersect1 (one) or rtcIntersect1M (a column).
@@ -113,7 +123,8 @@ int main(int argc, char** argv) {
   double t0 = now();
   const World world = World::build(net, WorldConfig{}, 42);
   const double t_build = now() - t0;
-  LidarConfig cfg;  // "paper": 64 x 1800, 100 m, 2 cm noise, 1 % dropout
+  LidarConfig cfg;  // the default sensor (vlp16: 16 x 1800), 2 cm noise, 1 % dropout
+  if (argc > 3) cfg.preset = argv[3];
   const Lidar lidar(cfg, 42);
   const auto poses = posesAlongStreets(net, n_scans);
   const double rays = static_cast<double>(poses.size()) * lidar.spec().channels * lidar.spec().horizontal_samples;
@@ -133,7 +144,8 @@ int main(int argc, char** argv) {
       const double c0 = cpuNow();
       arena.execute([&] {
         points = 0;
-        for (std::size_t i = 0; i < poses.size(); ++i) points += l->scan(world, poses[i], {}, i).points.size();
+        for (std::size_t i = 0; i < poses.size(); ++i)
+          points += l->scan(world, poses[i], sweepEnd(poses[i]), {}, i).points.size();
       });
       const double dt = now() - t0, dc = cpuNow() - c0;
       std::printf("Lidar::scan%s, %d thread(s): %.2f M rays/s wall, %.2f M rays per CPU-second, "

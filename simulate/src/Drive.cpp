@@ -18,6 +18,8 @@
 #include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/SumoSession.hpp"
+#include "slamroute/simulate/VehicleBody.hpp"
+#include "slamroute/simulate/World.hpp"
 
 namespace slamroute::simulate {
 namespace {
@@ -236,8 +238,13 @@ DriveResult runDrive(const DriveOptions& opts, const Config& cfg) {
   StagingDir staging(opts.out_dir, drive_files::kDriveInfo);
 
   logInfo("drive: " + std::to_string(edges.size()) + " edges on " + opts.net.string());
+  validate(cfg.drive.body);
   DriveRecord rec = recordDrive(net, edges, cfg, spec, opts.seed);
-  DriveResult res = writeDriveFolder(staging.path(), net, edges, rec, cfg, spec, opts);
+  logInfo("drive: building the 3D world");
+  const World world = World::build(net, cfg.world, opts.seed);
+  // the sensor rides on the body, which stands on the world's road surface
+  rec.groundtruth = vehicleSensorPoses(rec.groundtruth, world, cfg.drive.body, spec.mount_height_m);
+  DriveResult res = writeDriveFolder(staging.path(), net, edges, rec, world, cfg, spec, opts);
   staging.commit();
   res.out_dir = staging.target();
   res.wall_seconds =

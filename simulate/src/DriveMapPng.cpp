@@ -1,4 +1,5 @@
-// renderStackedScansPng: top-down view of scans stacked with ground-truth poses.
+// renderStackedScansPng: top-down view of scans stacked with ground-truth poses (each point from
+// the pose at its firing time, so a moving sweep is drawn undistorted).
 #include <algorithm>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
@@ -7,6 +8,7 @@
 
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/simulate/Drive.hpp"
+#include "slamroute/simulate/Lidar.hpp"
 
 namespace slamroute::simulate {
 
@@ -19,9 +21,16 @@ std::size_t renderStackedScansPng(const ScanSource& scans, const Trajectory& pos
     throw std::invalid_argument(png.string() + ": bad map options");
   std::vector<Eigen::Vector3f> pts;
   for (std::size_t i = 0; i < scans.size(); i += o.stride) {
-    const Eigen::Isometry3f T = poses[i].T_world_body.cast<float>();
-    for (const ScanPoint& p : scans.scan(i).points)
+    // each point from where the sensor was when it fired (one pose per column's firing time)
+    Eigen::Isometry3f T = poses[i].T_world_body.cast<float>();
+    float t_of_T = 0.0f;
+    for (const ScanPoint& p : scans.scan(i).points) {
+      if (p.dt != t_of_T) {
+        T = poseAtTime(poses, i, poses[i].t + p.dt).cast<float>();
+        t_of_T = p.dt;
+      }
       pts.push_back(T * Eigen::Vector3f(p.x, p.y, p.z));
+    }
   }
   if (pts.empty()) throw std::runtime_error(png.string() + ": no points to draw");
   Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max()), hi = -lo;

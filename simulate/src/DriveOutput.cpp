@@ -47,7 +47,7 @@ DriveWorldFile readDriveWorldFile(const fs::path& drive_dir) {
 
 DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
                              const std::vector<std::string>& edges, const DriveRecord& rec,
-                             const Config& cfg, const LidarSpec& spec, const DriveOptions& opts) {
+                             const World& world, const Config& cfg, const LidarSpec& spec, const DriveOptions& opts) {
   DriveResult res;
   res.route = edges;
   res.groundtruth = rec.groundtruth;
@@ -86,8 +86,6 @@ DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
   writeFileAtomic(dir / drive_files::kWorld, config::dumpYaml(wf));
 
   if (opts.write_world_mesh || opts.save_scans) {
-    logInfo("drive: building the 3D world");
-    const World world = World::build(net, cfg.world, opts.seed);
     if (opts.write_world_mesh) world.writePly(dir / drive_files::kWorldMesh);
     if (opts.save_scans) {
       // Scans from the poses and boxes as written (rounded), so that SimulatedScanSource,

@@ -1,5 +1,6 @@
 // writeDriveScans: KITTI scans of a drive (only with --save-scans). Scan i is Lidar::scan with
-// index i and the drive's seed — exactly what SimulatedScanSource regenerates on demand.
+// index i and the drive's seed, sweeping from pose i to sweepEndPose(i) — exactly what
+// SimulatedScanSource regenerates on demand. Point times go beside each .bin (NNNNNN.time).
 #include <cstdio>
 #include <sstream>
 
@@ -22,15 +23,16 @@ void writeDriveScans(const std::filesystem::path& dir, const World& world, const
   times.precision(12);
   for (std::size_t first = 0; first < gt.size(); first += kBatch) {
     const std::size_t last = std::min(gt.size(), first + kBatch);
-    std::vector<Pose3> poses;
+    std::vector<Pose3> poses, ends;
     std::vector<std::vector<VehicleBox>> boxes;
     std::vector<double> ts;
     for (std::size_t i = first; i < last; ++i) {
       poses.push_back(gt[i].T_world_body);
+      ends.push_back(sweepEndPose(gt, i, lidar_cfg.sweep_period_s));
       boxes.push_back(i < traffic.size() ? traffic[i] : std::vector<VehicleBox>{});
       ts.push_back(gt[i].t);
     }
-    const std::vector<Scan> scans = lidar.scanMany(world, poses, boxes, first, ts);
+    const std::vector<Scan> scans = lidar.scanMany(world, poses, ends, boxes, first, ts);
     for (std::size_t k = 0; k < scans.size(); ++k) {
       char name[32];
       std::snprintf(name, sizeof name, "%06zu.bin", first + k);

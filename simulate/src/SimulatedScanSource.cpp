@@ -60,8 +60,9 @@ Scan SimulatedScanSource::scan(std::size_t i) const {
     throw std::out_of_range("scan " + std::to_string(i) + " of drive " + dir_.string() + " (has " +
                             std::to_string(groundtruth_.size()) + ")");
   static const std::vector<VehicleBox> none;
-  return lidar_.scan(world_, groundtruth_[i].T_world_body, i < traffic_.size() ? traffic_[i] : none,
-                     i, groundtruth_[i].t);
+  return lidar_.scan(world_, groundtruth_[i].T_world_body,
+                     sweepEndPose(groundtruth_, i, lidar_.config().sweep_period_s),
+                     i < traffic_.size() ? traffic_[i] : none, i, groundtruth_[i].t);
 }
 
 }  // namespace slamroute::simulate

@@ -16,7 +16,8 @@ namespace slamroute::simulate {
 
 const char* surfaceKindName(SurfaceKind k) {
   static const char* names[] = {"ground", "road", "sidewalk", "deck", "pillar", "parapet",
-                                "building", "wall", "pole", "tree", "vehicle"};
+                                "building", "wall", "pole", "tree", "vehicle", "furniture",
+                                "parked_car", "fence"};
   return names[static_cast<int>(k)];
 }
 
@@ -38,6 +39,14 @@ void validate(const WorldConfig& c) {
   if (c.setback_min_m < 0 || c.setback_max_m < c.setback_min_m) bad("setback range");
   if (c.pole_spacing_m <= 0 || c.tree_spacing_m <= 0 || c.open_pole_spacing_m <= 0) bad("spacing <= 0");
   if (c.elevated_min_m <= 0) bad("elevated_min_m must be > 0");
+  if (c.road_camber_pct < 0 || c.road_camber_pct > 10) bad("road_camber_pct must be in [0, 10]");
+  if (c.undulation_m < 0 || c.undulation_m > 0.2) bad("undulation_m must be in [0, 0.2]");
+  if (c.undulation_wavelength_m < 2) bad("undulation_wavelength_m must be >= 2");
+  if (c.road_roughness_m < 0 || c.road_roughness_m > 0.05) bad("road_roughness_m must be in [0, 0.05]");
+  if (c.verge_roughness_m < 0 || c.verge_roughness_m > 0.1) bad("verge_roughness_m must be in [0, 0.1]");
+  if (c.road_cell_m < 0.25 || c.road_cell_m > 10) bad("road_cell_m must be in [0.25, 10]");
+  if (c.ground_cell_m < 0.5 || c.ground_cell_m > 50) bad("ground_cell_m must be in [0.5, 50]");
+  if (c.ground_detail_reach_m < 0) bad("ground_detail_reach_m must be >= 0");
 }
 
 /// Ground level: the median junction height (most junctions sit on the ground; a bridge's
@@ -169,7 +178,9 @@ World World::build(const SumoNet& net, const WorldConfig& cfg, std::uint64_t see
   const auto& s = w.impl_->stats;
   logInfo("world: " + std::to_string(s.triangles) + " triangles, " + std::to_string(s.buildings) +
           " buildings, " + std::to_string(s.walls) + " wall pieces, " + std::to_string(s.poles) +
-          " poles, " + std::to_string(s.trees) + " trees, " + std::to_string(s.pillars) +
+          " poles, " + std::to_string(s.trees) + " trees, " + std::to_string(s.parked_cars) +
+          " parked cars, " + std::to_string(s.furniture) + " signs/bollards/shelters, " +
+          std::to_string(s.fence_posts) + " fence posts, " + std::to_string(s.pillars) +
           " pillars; streets rich/wall/open " + std::to_string(s.streets_rich) + "/" +
           std::to_string(s.streets_wall) + "/" + std::to_string(s.streets_open));
   return w;
@@ -220,6 +231,12 @@ double World::streetRichness(const std::string& e) const {
   if (it == impl_->streets.end())
     throw std::invalid_argument("World::streetRichness: '" + e + "' is not an edge of the world's net");
   return it->second.richness;
+}
+
+std::optional<double> World::surfaceZ(double x, double y, double z_from, double depth_m) const {
+  const RayHit h = castRay(Point3(x, y, z_from), -Vec3::UnitZ(), depth_m);
+  if (!h.hit) return std::nullopt;
+  return z_from - h.range_m;
 }
 
 RayHit World::castRay(const Point3& origin, const Vec3& dir_in, double max_range,

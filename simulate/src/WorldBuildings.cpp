@@ -1,11 +1,11 @@
-// World build steps: street classes and what lines each street — varied buildings, poles and
-// trees (Rich), long uniform walls (Wall) or open fields with sparse poles (Open). Deterministic:
-// each street draws from its own random stream seeded by (seed, street key), so the result does
-// not depend on the order streets are visited in.
+// World build steps: street classes and what lines each street — varied buildings, parked cars,
+// lamp posts, signs and trees (Rich), long walls with pillars and gates (Wall), or open fields
+// behind fences (Open). Deterministic: each street draws from its own random stream seeded by
+// (seed, street key), so the result does not depend on the order streets are visited in.
 #include <algorithm>
 #include <cmath>
 
-#include "WorldBuild.hpp"
+#include "WorldSide.hpp"
 
 namespace slamroute::simulate::detail {
 
@@ -18,129 +18,109 @@ std::uint64_t hashSeed(std::uint64_t seed, const std::string& key) {
   return z ^ (z >> 31);
 }
 
-namespace {
-
-/// Uniform draw in [a, b) from the 53 high bits (std::uniform_real_distribution is not
-/// guaranteed identical across standard libraries; this is).
-double uniform(std::mt19937_64& rng, double a, double b) {
-  return a + (b - a) * static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
+std::pair<Vec2, double> SidePlacer::spot(double s, double out_m) const {
+  const auto [p, t] = border_.at(s);
+  return {p + Vec2(t.y(), -t.x()) * out_m, std::atan2(t.y(), t.x())};
 }
 
-/// Arc-length parametrised 2D view of a polyline.
-struct Path {
-  std::vector<Point3> pts;
-  std::vector<double> s;
-  explicit Path(std::vector<Point3> p) : pts(std::move(p)), s(pts.size(), 0.0) {
-    for (std::size_t i = 1; i < pts.size(); ++i)
-      s[i] = s[i - 1] + (pts[i] - pts[i - 1]).head<2>().norm();
+void SidePlacer::rich() {
+  const double gap_scale = uniform(rng_, 0.3, 1.0);  // per-side density
+  for (double s = 2.0; s < border_.length() - 2.0;) {
+    const double f = uniform(rng_, c_.frontage_min_m, c_.frontage_max_m);
+    const double setback = uniform(rng_, c_.setback_min_m, c_.setback_max_m);
+    const double depth = uniform(rng_, c_.building_depth_min_m, c_.building_depth_max_m);
+    const double u = uniform(rng_, 0, 1);
+    const double height = c_.height_min_m + (c_.height_max_m - c_.height_min_m) * u * u;
+    double gap = uniform(rng_, 0, c_.gap_max_m) * gap_scale;
+    if (uniform(rng_, 0, 1) < 0.1) gap += uniform(rng_, 10, 30);  // an empty lot now and then
+    const double ff = std::min(f, border_.length() - 2.0 - s);
+    if (ff > 4.0 && place(s + ff / 2, ff, setback, depth, height, SurfaceKind::Building))
+      ++ctx_.stats.buildings;
+    s += ff + gap;
   }
-  double length() const { return s.empty() ? 0.0 : s.back(); }
-  /// Point and unit tangent at arc length t.
-  std::pair<Vec2, Vec2> at(double t) const {
-    std::size_t i = 0;
-    while (i + 2 < pts.size() && s[i + 1] < t) ++i;
-    const double len = std::max(1e-9, s[i + 1] - s[i]);
-    const double f = std::clamp((t - s[i]) / len, 0.0, 1.0);
-    const Vec2 a = pts[i].head<2>(), b = pts[i + 1].head<2>();
-    Vec2 d = b - a;
-    d = d.norm() > 1e-9 ? Vec2(d.normalized()) : Vec2(1, 0);
-    return {a + f * (b - a), d};
+  parkedCars(uniform(rng_, 0.3, 0.8));
+  lampPosts(c_.pole_spacing_m, uniform(rng_, 7.0, 10.0));
+  signsAndBollards(45.0);
+  if (border_.length() > 60 && uniform(rng_, 0, 1) < 0.4)
+    busShelter(uniform(rng_, 20, border_.length() - 20));
+  for (double s = uniform(rng_, 2, c_.tree_spacing_m); s < border_.length();
+       s += c_.tree_spacing_m * uniform(rng_, 0.6, 1.4))
+    tree(s, uniform(rng_, 1.2, 2.6), uniform(rng_, 4.0, 9.0));
+}
+
+void SidePlacer::wall() {
+  // long walls at one set-back, but no period along them: pieces of random length, height
+  // steps, pillars at irregular spacing, gates
+  double h = c_.wall_height_m;
+  double next_gate = uniform(rng_, 20, 70);
+  for (double s = 1.0; s + 1.0 < border_.length();) {
+    const double len = std::min(uniform(rng_, 3.0, 9.0), border_.length() - 1.0 - s);
+    if (len < 1.0) break;
+    if (s > next_gate) {
+      s += uniform(rng_, 3.0, 5.0);
+      next_gate = s + uniform(rng_, 25, 80);
+      continue;
+    }
+    if (uniform(rng_, 0, 1) < 0.3) h = c_.wall_height_m * uniform(rng_, 0.75, 1.4);
+    if (place(s + len / 2, len, c_.wall_setback_m, 0.4, h, SurfaceKind::Wall)) {
+      ++ctx_.stats.walls;
+      for (double p = s + uniform(rng_, 0.3, 3.0); p < s + len; p += uniform(rng_, 2.5, 9.0)) {
+        const auto [c, heading] = spot(p, c_.wall_setback_m - 0.1);
+        ctx_.mb.box(Point3(c.x(), c.y(), ctx_.ground_z - kFoundation_m), heading, 0.5, 0.5,
+                    h + 0.3 + kFoundation_m, SurfaceKind::Wall);
+      }
+    }
+    s += len;
   }
-};
+  parkedCars(uniform(rng_, 0.0, 0.4));
+  lampPosts(c_.pole_spacing_m, 8.0);
+}
+
+void SidePlacer::open() {
+  fence();
+  for (double s = uniform(rng_, 5, c_.open_pole_spacing_m); s < border_.length();
+       s += c_.open_pole_spacing_m * uniform(rng_, 0.7, 1.3))
+    lamp(s, 7.0);
+  signsAndBollards(120.0);
+}
+
+bool SidePlacer::place(double s, double frontage, double setback, double depth, double height,
+                       SurfaceKind kind) {
+  const auto [front, heading] = spot(s, setback);
+  const Vec2 out(std::sin(heading), -std::cos(heading));
+  const Vec2 c = front + out * (depth / 2);
+  // neighbours may touch (the check is a little smaller than what is built)
+  const Polygon2 fp = orientedRect(c, heading, frontage, depth);
+  const Polygon2 check = orientedRect(c, heading, std::max(0.1, frontage - 0.2), depth);
+  if (ctx_.roads.overlaps(check) || ctx_.placed.overlaps(check)) return false;
+  ctx_.placed.add(fp);
+  if (kind == SurfaceKind::Building)
+    building(front, heading, frontage, depth, height, setback - c_.road_clearance_m);
+  else
+    ctx_.mb.prism(fp, ctx_.ground_z - kFoundation_m, ctx_.ground_z + height, kind, false);
+  return true;
+}
+
+void SidePlacer::tree(double s, double crown_r, double height) {
+  const auto [c, heading] = spot(s, crown_r + c_.road_clearance_m + 0.3);
+  (void)heading;
+  const Polygon2 crown = orientedRect(c, 0, 2 * crown_r, 2 * crown_r);
+  if (ctx_.roads.overlaps(crown) || ctx_.placed.overlaps(crown)) return;
+  ctx_.placed.add(crown);
+  const double trunk = std::min(2.5, height * 0.4);
+  ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z - kFoundation_m), 0.2, trunk + kFoundation_m,
+                   6, SurfaceKind::Tree);
+  ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z + trunk), crown_r, height - trunk, 8,
+                   SurfaceKind::Tree);
+  ++ctx_.stats.trees;
+}
+
+namespace {
 
 std::string streetKey(const SumoEdge& e) {
   if (e.from.empty() || e.to.empty()) return e.id;
   return std::min(e.from, e.to) + "|" + std::max(e.from, e.to);
 }
-
-class SidePlacer {
- public:
-  SidePlacer(BuildContext& ctx, std::mt19937_64& rng, const Path& border)
-      : ctx_(ctx), c_(ctx.cfg), rng_(rng), border_(border) {}
-
-  /// Right-hand side of `border` (outward = right normal).
-  void rich() {
-    const double gap_scale = uniform(rng_, 0.3, 1.0);  // per-side density
-    for (double s = 2.0; s < border_.length() - 2.0;) {
-      const double f = uniform(rng_, c_.frontage_min_m, c_.frontage_max_m);
-      const double setback = uniform(rng_, c_.setback_min_m, c_.setback_max_m);
-      const double depth = uniform(rng_, c_.building_depth_min_m, c_.building_depth_max_m);
-      const double u = uniform(rng_, 0, 1);
-      const double height = c_.height_min_m + (c_.height_max_m - c_.height_min_m) * u * u;
-      double gap = uniform(rng_, 0, c_.gap_max_m) * gap_scale;
-      if (uniform(rng_, 0, 1) < 0.1) gap += uniform(rng_, 10, 30);  // an empty lot now and then
-      const double ff = std::min(f, border_.length() - 2.0 - s);
-      if (ff > 4.0 && place(s + ff / 2, ff, setback, depth, height, SurfaceKind::Building))
-        ++ctx_.stats.buildings;
-      s += ff + gap;
-    }
-    for (double s = uniform(rng_, 2, c_.pole_spacing_m); s < border_.length();
-         s += c_.pole_spacing_m)
-      pole(s, 7.0 + uniform(rng_, 0, 3));
-    for (double s = uniform(rng_, 2, c_.tree_spacing_m); s < border_.length();
-         s += c_.tree_spacing_m * uniform(rng_, 0.6, 1.4))
-      tree(s, uniform(rng_, 1.2, 2.6), uniform(rng_, 4.0, 9.0));
-  }
-
-  void wall() {
-    // long uniform walls: constant set-back and height, pieces follow the street's curvature
-    const double piece = 6.0;
-    for (double s = 1.0; s + 1.0 < border_.length(); s += piece) {
-      const double len = std::min(piece, border_.length() - 1.0 - s);
-      if (len < 1.0) break;
-      if (place(s + len / 2, len + 0.05, c_.wall_setback_m, 0.4, c_.wall_height_m,
-                SurfaceKind::Wall))
-        ++ctx_.stats.walls;
-    }
-  }
-
-  void open() {
-    for (double s = uniform(rng_, 5, c_.open_pole_spacing_m); s < border_.length();
-         s += c_.open_pole_spacing_m)
-      pole(s, 7.0);
-  }
-
- private:
-  /// Rectangle centred at arc length s, `setback` behind the border, `depth` deep.
-  bool place(double s, double frontage, double setback, double depth, double height,
-             SurfaceKind kind) {
-    const auto [p, t] = border_.at(s);
-    const Vec2 out(t.y(), -t.x());  // right normal
-    const Vec2 c = p + out * (setback + depth / 2);
-    const Polygon2 fp = orientedRect(c, std::atan2(t.y(), t.x()), frontage, depth);
-    if (ctx_.roads.overlaps(fp) || ctx_.placed.overlaps(fp)) return false;
-    ctx_.placed.add(fp);
-    ctx_.mb.prism(fp, ctx_.ground_z - 0.05, ctx_.ground_z + height, kind);
-    return true;
-  }
-  void pole(double s, double height) {
-    const auto [p, t] = border_.at(s);
-    const Vec2 out(t.y(), -t.x());
-    const Vec2 c = p - out * 0.5;  // on the sidewalk, 0.5 m inside its outer edge
-    if (ctx_.placed.overlaps(orientedRect(c, 0, 0.4, 0.4))) return;
-    ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z), 0.12, height, 6, SurfaceKind::Pole);
-    ++ctx_.stats.poles;
-  }
-  void tree(double s, double crown_r, double height) {
-    const auto [p, t] = border_.at(s);
-    const Vec2 out(t.y(), -t.x());
-    const Vec2 c = p + out * (crown_r + c_.road_clearance_m + 0.3);
-    const Polygon2 crown = orientedRect(c, 0, 2 * crown_r, 2 * crown_r);
-    if (ctx_.roads.overlaps(crown) || ctx_.placed.overlaps(crown)) return;
-    ctx_.placed.add(crown);
-    const double trunk = std::min(2.5, height * 0.4);
-    ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z - 0.05), 0.2, trunk + 0.1, 6,
-                     SurfaceKind::Tree);
-    ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z + trunk), crown_r, height - trunk, 8,
-                     SurfaceKind::Tree);
-    ++ctx_.stats.trees;
-  }
-
-  BuildContext& ctx_;
-  const WorldConfig& c_;
-  std::mt19937_64& rng_;
-  const Path& border_;
-};
 
 }  // namespace
 

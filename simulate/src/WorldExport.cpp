@@ -55,7 +55,7 @@ void World::writeObj(const std::filesystem::path& path) const {
     std::snprintf(line, sizeof line, "v %.3f %.3f %.3f\n", v.x(), v.y(), v.z());
     os << line;
   }
-  for (int k = 0; k <= static_cast<int>(SurfaceKind::Vehicle); ++k) {
+  for (int k = 0; k <= static_cast<int>(SurfaceKind::Last); ++k) {
     bool any = false;
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
       if (static_cast<int>(m.kinds[i]) != k) continue;

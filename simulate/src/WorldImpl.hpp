@@ -36,6 +36,9 @@ inline float reflectivity(SurfaceKind k) {
     case SurfaceKind::Pole: return 0.8f;
     case SurfaceKind::Tree: return 0.3f;
     case SurfaceKind::Vehicle: return 0.7f;
+    case SurfaceKind::Furniture: return 0.6f;
+    case SurfaceKind::ParkedCar: return 0.65f;
+    case SurfaceKind::Fence: return 0.35f;
   }
   return 0.3f;
 }

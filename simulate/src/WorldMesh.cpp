@@ -35,9 +35,15 @@ void MeshBuilder::strip(const std::vector<Point3>& left, const std::vector<Point
 
 void MeshBuilder::slab(const std::vector<Point3>& left, const std::vector<Point3>& right,
                        const std::vector<double>& thickness, SurfaceKind top, SurfaceKind sides) {
+  if (std::min({left.size(), right.size(), thickness.size()}) < 2) return;
+  strip(left, right, top);
+  slabSides(left, right, thickness, sides);
+}
+
+void MeshBuilder::slabSides(const std::vector<Point3>& left, const std::vector<Point3>& right,
+                            const std::vector<double>& thickness, SurfaceKind sides) {
   const std::size_t n = std::min({left.size(), right.size(), thickness.size()});
   if (n < 2) return;
-  strip(left, right, top);
   bool any = false;
   for (std::size_t i = 0; i < n; ++i) any = any || thickness[i] > 1e-3;
   if (!any) return;
@@ -56,6 +62,19 @@ void MeshBuilder::slab(const std::vector<Point3>& left, const std::vector<Point3
   if (thickness[0] > 1e-3) quad(vertex(left[0]), vertex(lb[0]), vertex(rb[0]), vertex(right[0]), sides);
   if (thickness[n - 1] > 1e-3)
     quad(vertex(right[n - 1]), vertex(rb[n - 1]), vertex(lb[n - 1]), vertex(left[n - 1]), sides);
+}
+
+void MeshBuilder::grid(const std::vector<std::vector<Point3>>& rows, SurfaceKind k) {
+  if (rows.size() < 2) return;
+  std::size_t n = rows.front().size();
+  for (const auto& r : rows) n = std::min(n, r.size());
+  if (n < 2) return;
+  std::vector<std::vector<int>> id(rows.size(), std::vector<int>(n));
+  for (std::size_t j = 0; j < rows.size(); ++j)
+    for (std::size_t i = 0; i < n; ++i) id[j][i] = vertex(rows[j][i]);
+  for (std::size_t j = 0; j + 1 < rows.size(); ++j)
+    for (std::size_t i = 0; i + 1 < n; ++i)
+      quad(id[j][i], id[j][i + 1], id[j + 1][i + 1], id[j + 1][i], k);
 }
 
 void MeshBuilder::prism(const Polygon2& fp, double z0, double z1, SurfaceKind k, bool bottom) {

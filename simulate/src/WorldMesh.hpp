@@ -33,10 +33,41 @@ class MeshBuilder {
   /// sides are closed. Degenerate (zero-thickness) sides are skipped.
   void slab(const std::vector<Point3>& left, const std::vector<Point3>& right,
             const std::vector<double>& thickness, SurfaceKind top, SurfaceKind sides);
+  /// The bottom and the side walls of such a slab without its top (a grid() lies there).
+  void slabSides(const std::vector<Point3>& left, const std::vector<Point3>& right,
+                 const std::vector<double>& thickness, SurfaceKind sides);
+  /// Surface through rows of points (same length each), ordered right to left across the
+  /// direction of travel, facing up; neighbouring rows share their vertices.
+  void grid(const std::vector<std::vector<Point3>>& rows, SurfaceKind k);
+  /// Triangle a-b-c (counter-clockwise from above) cut into n x n pieces, each new vertex lifted
+  /// by lift(x, y).
+  template <class Lift>
+  void subdividedTriangle(const Point3& a, const Point3& b, const Point3& c, int n, Lift lift,
+                          SurfaceKind k);
 
  private:
   TriangleMesh& m_;
 };
+
+template <class Lift>
+void MeshBuilder::subdividedTriangle(const Point3& a, const Point3& b, const Point3& c, int n,
+                                     Lift lift, SurfaceKind k) {
+  // vertex (i, j), i + j <= n: a + (b - a) i / n + (c - a) j / n
+  std::vector<int> idx;
+  auto at = [&](int i, int j) { return idx[static_cast<std::size_t>(i * (n + 1) + j)]; };
+  idx.assign(static_cast<std::size_t>((n + 1) * (n + 1)), -1);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      Point3 p = a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n);
+      p.z() += lift(p.x(), p.y());
+      idx[static_cast<std::size_t>(i * (n + 1) + j)] = vertex(p);
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; i + j < n; ++j) {
+      tri(at(i, j), at(i + 1, j), at(i, j + 1), k);
+      if (i + j + 1 < n) tri(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), k);
+    }
+}
 
 /// Oriented rectangle footprint (CCW) centred at c.
 Polygon2 orientedRect(const Vec2& c, double heading, double length, double width);

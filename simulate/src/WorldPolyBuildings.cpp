@@ -63,7 +63,7 @@ void buildPolyBuildings(BuildContext& ctx, const std::string& poly_file) {
                    (static_cast<double>(rng() >> 11) / 9007199254740992.0);
     }
     ctx.placed.add(convexHull(fp));
-    ctx.mb.prism(fp, ctx.ground_z - 0.05, ctx.ground_z + height, SurfaceKind::Building);
+    ctx.mb.prism(fp, ctx.ground_z - kFoundation_m, ctx.ground_z + height, SurfaceKind::Building);
     ++ctx.stats.buildings;
   }
   if (dropped) logInfo("world: dropped " + std::to_string(dropped) + " polygon buildings overlapping roads");

@@ -2,6 +2,7 @@
 // parapets on bridges, junction areas, bridge pillars and the ground plane.
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <unordered_set>
 
 #include "WorldBuild.hpp"
@@ -32,13 +33,6 @@ void keepOutStrip(KeepOutGrid& grid, const std::vector<Point3>& left,
   }
 }
 
-std::vector<double> thicknessOf(const BuildContext& ctx, const std::vector<Point3>& line) {
-  std::vector<double> t(line.size());
-  for (std::size_t i = 0; i < line.size(); ++i)
-    t[i] = std::clamp(ctx.elevation(line[i]), 0.0, ctx.cfg.deck_thickness_m);
-  return t;
-}
-
 std::vector<Point3> raised(std::vector<Point3> line, double dz) {
   for (auto& p : line) p.z() += dz;
   return line;
@@ -50,31 +44,26 @@ std::unordered_set<std::string> directedPairs(const SumoNet& net) {
   return s;
 }
 
-/// Sidewalk (raised by the curb height, closed sides = the curb face) or, on bridges, a parapet
-/// along one outer border. `outward` is +1 for the left border, -1 for the right one.
-void sideOfEdge(BuildContext& ctx, const SumoLane& lane, double outward, bool bridge) {
+/// Pavement (raised by the curb height, its sides the kerb) or, on bridges, a parapet along one
+/// outer border of lane k. `outward` is +1 for the left border, -1 for the right one.
+void sideOfEdge(BuildContext& ctx, const SumoEdge& e, std::size_t k, const EdgeProfile& prof,
+                double outward, bool bridge) {
   const auto& c = ctx.cfg;
+  const SumoLane& lane = e.lanes[k];
   const double w = lane.width_m / 2;
   const auto inner = offsetPolyline(lane.shape, outward * w);
-  if (bridge) {
-    const auto outer = offsetPolyline(lane.shape, outward * (w + 0.3));
-    const auto& l = outward > 0 ? outer : inner;
-    const auto& r = outward > 0 ? inner : outer;
-    ctx.mb.slab(raised(l, c.parapet_height_m), raised(r, c.parapet_height_m),
-                std::vector<double>(l.size(), c.parapet_height_m), SurfaceKind::Parapet,
-                SurfaceKind::Parapet);
-    keepOutStrip(ctx.roads, l, r, c.road_clearance_m);
-    return;
-  }
-  const auto outer = offsetPolyline(lane.shape, outward * (w + c.sidewalk_width_m));
+  const double far = bridge ? w + 0.3 : w + c.sidewalk_width_m;
+  const auto outer = offsetPolyline(lane.shape, outward * far);
   const auto& l = outward > 0 ? outer : inner;
   const auto& r = outward > 0 ? inner : outer;
-  std::vector<double> th(l.size(), c.curb_height_m);
-  const auto base = thicknessOf(ctx, l);
-  for (std::size_t i = 0; i < th.size(); ++i) th[i] += base[i];
-  ctx.mb.slab(raised(l, c.curb_height_m), raised(r, c.curb_height_m), th, SurfaceKind::Sidewalk,
-              SurfaceKind::Sidewalk);
   keepOutStrip(ctx.roads, l, r, c.road_clearance_m);
+  if (!bridge) {
+    buildPavement(ctx, e, k, prof, outward);
+    return;
+  }
+  ctx.mb.slab(raised(l, c.parapet_height_m), raised(r, c.parapet_height_m),
+              std::vector<double>(l.size(), c.parapet_height_m), SurfaceKind::Parapet,
+              SurfaceKind::Parapet);
 }
 
 void buildLanes(BuildContext& ctx) {
@@ -83,34 +72,27 @@ void buildLanes(BuildContext& ctx) {
   for (const auto& e : ctx.net.edges) {
     if (e.lanes.empty()) continue;
     const bool bridge = ctx.elevatedEdge(e);
-    for (const auto& lane : e.lanes) {
+    const bool two_way = pairs.count(e.to + "\x1f" + e.from) > 0;
+    const EdgeProfile prof = edgeProfile(e, two_way);
+    for (std::size_t k = 0; k < e.lanes.size(); ++k) {
+      const SumoLane& lane = e.lanes[k];
       if (lane.shape.size() < 2) continue;
       const double w = lane.width_m / 2;
       const auto left = offsetPolyline(lane.shape, w), right = offsetPolyline(lane.shape, -w);
-      if (pedestrianOnly(lane) && !bridge) {
-        std::vector<double> th = thicknessOf(ctx, left);
-        for (auto& t : th) t += c.curb_height_m;
-        ctx.mb.slab(raised(left, c.curb_height_m), raised(right, c.curb_height_m), th,
-                    SurfaceKind::Sidewalk, SurfaceKind::Sidewalk);
-      } else {
-        ctx.mb.slab(left, right, thicknessOf(ctx, left), SurfaceKind::Road, SurfaceKind::Deck);
-      }
+      buildLaneSurface(ctx, e, k, prof, bridge, pedestrianOnly(lane));
       keepOutStrip(ctx.roads, left, right, c.road_clearance_m);
       for (std::size_t i = 0; i + 1 < left.size(); ++i)
         if (ctx.elevation(lane.shape[i]) < c.elevated_min_m ||
             ctx.elevation(lane.shape[i + 1]) < c.elevated_min_m)
           ctx.ground_roads.add(inflateConvex(segmentQuad(left, right, i), 0.5));
     }
-    // sidewalks: right of the rightmost lane; also left of the leftmost one on one-way streets
-    // (two-way streets: the opposite edge brings its own right sidewalk)
+    // pavements: right of the rightmost lane; also left of the leftmost one on one-way streets
+    // (two-way streets: the opposite edge brings its own right pavement)
     const SumoLane& first = e.lanes.front();
-    if (first.shape.size() >= 2 && !pedestrianOnly(first)) sideOfEdge(ctx, first, -1.0, bridge);
+    if (first.shape.size() >= 2 && !pedestrianOnly(first)) sideOfEdge(ctx, e, 0, prof, -1.0, bridge);
     const SumoLane& last = e.lanes.back();
-    if (last.shape.size() >= 2) {
-      if (!pairs.count(e.to + "\x1f" + e.from)) {
-        if (!pedestrianOnly(last)) sideOfEdge(ctx, last, +1.0, bridge);
-      }
-    }
+    if (last.shape.size() >= 2 && !two_way && !pedestrianOnly(last))
+      sideOfEdge(ctx, e, e.lanes.size() - 1, prof, +1.0, bridge);
   }
 }
 
@@ -146,10 +128,7 @@ void buildJunctions(BuildContext& ctx) {
         ctx.mb.prism(hull, z - std::min(c.deck_thickness_m, ctx.elevation(Point3(0, 0, z))),
                      z - 0.01, SurfaceKind::Road);
       } else {
-        std::vector<int> idx;
-        for (const auto& p : hull) idx.push_back(ctx.mb.vertex(Point3(p.x(), p.y(), z - 0.01)));
-        for (const auto& t : triangulate(hull))
-          ctx.mb.tri(idx[t[0]], idx[t[1]], idx[t[2]], SurfaceKind::Road);
+        buildJunctionSurface(ctx, hull, z - 0.01);
       }
     }
     // keep-out: the junction area grown by the clearance (a disc-like square for points)
@@ -179,11 +158,56 @@ void buildPillars(BuildContext& ctx) {
         const double a = 2 * c.pillar_half_size_m;
         const Polygon2 fp = orientedRect(p.head<2>(), h, a, a);
         if (ctx.ground_roads.overlaps(fp)) continue;  // never block the street below
-        ctx.mb.prism(fp, ctx.ground_z - 0.05, top, SurfaceKind::Pillar);
+        ctx.mb.prism(fp, ctx.ground_z - kFoundation_m, top, SurfaceKind::Pillar);
         ++ctx.stats.pillars;
       }
       acc += len;
     }
+  }
+}
+
+/// Squares of kBlockCells x kBlockCells ground cells within ground_detail_reach_m of a lane,
+/// sorted (the mesh must not depend on hash order).
+constexpr int kBlockCells = 8;
+
+std::vector<std::pair<long, long>> groundBlocksNearLanes(const BuildContext& ctx) {
+  const double block = kBlockCells * ctx.cfg.ground_cell_m, reach = ctx.cfg.ground_detail_reach_m;
+  std::set<std::pair<long, long>> blocks;
+  auto mark = [&](const Point3& p) {
+    const long bx0 = static_cast<long>(std::floor((p.x() - reach) / block));
+    const long bx1 = static_cast<long>(std::floor((p.x() + reach) / block));
+    const long by0 = static_cast<long>(std::floor((p.y() - reach) / block));
+    const long by1 = static_cast<long>(std::floor((p.y() + reach) / block));
+    for (long bx = bx0; bx <= bx1; ++bx)
+      for (long by = by0; by <= by1; ++by) blocks.emplace(bx, by);
+  };
+  const double step = std::max(1.0, std::min(block, reach) / 2);
+  for (const auto& e : ctx.net.edges)
+    for (const auto& l : e.lanes)
+      for (std::size_t i = 0; i + 1 < l.shape.size(); ++i) {
+        const double len = (l.shape[i + 1] - l.shape[i]).head<2>().norm();
+        const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+        for (int j = 0; j <= n; ++j) mark(l.shape[i] + (l.shape[i + 1] - l.shape[i]) * (double(j) / n));
+      }
+  return {blocks.begin(), blocks.end()};
+}
+
+/// Rough ground (verges, fields) near the lanes, kGroundBelowRoad_m below the road level plus
+/// the verge relief; blocks share the vertices of their common borders bit for bit.
+void buildRoughGround(BuildContext& ctx) {
+  const double cell = ctx.cfg.ground_cell_m, base = ctx.ground_z - kGroundBelowRoad_m;
+  for (const auto& [bx, by] : groundBlocksNearLanes(ctx)) {
+    std::vector<std::vector<Point3>> rows;
+    for (int j = 0; j <= kBlockCells; ++j) {  // right to left when travelling along +x
+      std::vector<Point3> row;
+      const double y = static_cast<double>(by * kBlockCells + j) * cell;
+      for (int i = 0; i <= kBlockCells; ++i) {
+        const double x = static_cast<double>(bx * kBlockCells + i) * cell;
+        row.emplace_back(x, y, base + ctx.relief.verge(x, y));
+      }
+      rows.push_back(std::move(row));
+    }
+    ctx.mb.grid(rows, SurfaceKind::Ground);
   }
 }
 
@@ -211,10 +235,11 @@ void buildGround(BuildContext& ctx) {
     y1 = std::max<double>(y1, v.y());
   }
   if (x0 > x1) x0 = y0 = -100, x1 = y1 = 100;
-  const double m = ctx.cfg.ground_margin_m, z = ctx.ground_z - 0.05;
+  const double m = ctx.cfg.ground_margin_m, z = ctx.ground_z - kBasePlaneBelow_m;
   const int a = ctx.mb.vertex(Point3(x0 - m, y0 - m, z)), b = ctx.mb.vertex(Point3(x1 + m, y0 - m, z)),
             cc = ctx.mb.vertex(Point3(x1 + m, y1 + m, z)), d = ctx.mb.vertex(Point3(x0 - m, y1 + m, z));
   ctx.mb.quad(a, b, cc, d, SurfaceKind::Ground);
+  buildRoughGround(ctx);
 }
 
 }  // namespace slamroute::simulate::detail

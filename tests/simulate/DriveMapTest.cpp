@@ -46,13 +46,16 @@ TEST(DriveMap, StackedScansUnderTheOverpassAreCrispAndShowTheDeck) {
     }
   }
 
-  // Every stacked point lies on a world surface (range noise 2 cm): cast the ray again.
+  // Every stacked point lies on a world surface (range noise 2 cm): cast the ray again from
+  // where it fired.
   const Point3 crossing(430.1, 452.1, 0.0);
   std::size_t checked = 0, on_surface = 0, street = 0, deck = 0;
   for (std::size_t i = 0; i < saved.size(); i += 5) {
-    const Pose3& T = sim.groundtruth()[i].T_world_body;
     const Scan s = saved.scan(i);
+    ASSERT_TRUE(s.has_point_times);
     for (std::size_t k = 0; k < s.points.size(); ++k) {
+      // the sensor's pose when the point fired (the sweep is distorted by the motion)
+      const Pose3 T = simulate::poseAtTime(sim.groundtruth(), i, s.t + s.points[k].dt);
       const Point3 p = T * Point3(s.points[k].x, s.points[k].y, s.points[k].z);
       if ((p - crossing).head<2>().norm() < 4.0) {
         if (std::abs(p.z()) < 0.3) ++street;

@@ -72,13 +72,14 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   }
   EXPECT_EQ(seq, edges);
 
-  // Positions on the route's lanes (outside junctions), the sensor 1.8 m... above the flat road.
+  // Positions on the route's lanes (outside junctions), the sensor its mount height above the
+  // road (z = 0) give or take the road's camber and relief and the body's motion on them.
   const SumoNet net = SumoNet::read(o.net);
   const double h = lidarPreset("vlp16").mount_height_m;
   std::size_t on_edges = 0;
   for (std::size_t i = 0; i < gt.size(); ++i) {
     const Point3 p = gt[i].T_world_body.translation();
-    EXPECT_NEAR(p.z(), h, 1e-6);
+    EXPECT_NEAR(p.z(), h, 0.15);
     const SumoEdge* e = net.findEdge(r.pose_edges[i].sumo_edge);
     ASSERT_NE(e, nullptr);
     if (r.pose_edges[i].lane_pos_m > e->length()) continue;  // inside the junction after e

@@ -1,3 +1,4 @@
+#include "TestTmp.hpp"
 #include "slamroute/simulate/Lidar.hpp"
 
 #include <gtest/gtest.h>
@@ -182,7 +183,8 @@ TEST(Lidar, NoiseAndDropoutAreDeterministicPerSeedAndScan) {
   EXPECT_NEAR(sum / n, 0.0, 0.005);
   EXPECT_NEAR(std::sqrt(sum2 / n), 0.05, 0.005);
   // scanMany == scan
-  const auto many = a.scanMany(w, {Pose3::Identity(), Pose3::Identity()}, {}, 3, {1.0, 2.0});
+  const auto many = a.scanMany(w, {Pose3::Identity(), Pose3::Identity()},
+                               {Pose3::Identity(), Pose3::Identity()}, {}, 3, {1.0, 2.0});
   ASSERT_EQ(many.size(), 2u);
   ASSERT_EQ(many[0].points.size(), s1.points.size());
   EXPECT_EQ(many[0].points[100].x, s1.points[100].x);
@@ -223,6 +225,48 @@ TEST(Lidar, ShippedOverpassAppearsAsADeckAboveTheStreet) {
     if (std::abs(q.x() - 500) < 4 && std::abs(q.y() - 500) < 6 && q.z() > 4.95 && q.z() < 7.05) ++deck;
   }
   EXPECT_GT(deck, 20u);
+}
+
+TEST(Lidar, MovingSensorFiresEachColumnAtItsOwnTimeAndPose) {
+  // 14 m/s sideways and turning 6 deg within the sweep, in front of the wall x = 20
+  const World w = World::fromMesh(testnet::wallAtX(20.0));
+  const Lidar lidar(noiseFree("vlp16"), 1);
+  const Pose3 start = at(0, 0, 1.8, 0), end = at(0, 1.4, 1.8, 6);
+  const Scan s = lidar.scan(w, start, end, {}, 0, 5.0);
+  ASSERT_TRUE(s.has_point_times);
+  ASSERT_GT(s.points.size(), 1000u);
+  float last = 0, lo = 1, hi = 0;
+  std::size_t off_unless_deskewed = 0;
+  for (const auto& p : s.points) {
+    ASSERT_GE(p.dt, last);  // column order is firing order
+    last = p.dt;
+    lo = std::min(lo, p.dt);
+    hi = std::max(hi, p.dt);
+    // deskew with the known motion: the pose at the point's own firing time
+    const double f = p.dt / 0.1;
+    const Pose3 T = at(0, 1.4 * f, 1.8, 6 * f);
+    const Vec3 q = T * Vec3(p.x, p.y, p.z);
+    ASSERT_NEAR(q.x(), 20.0, 2e-3) << "dt " << p.dt;
+    if (std::abs((start * Vec3(p.x, p.y, p.z)).x() - 20.0) > 0.05) ++off_unless_deskewed;
+  }
+  EXPECT_LT(lo, 1e-3);
+  EXPECT_GT(hi, 0.09);
+  EXPECT_LT(hi, 0.1);
+  EXPECT_GT(off_unless_deskewed, s.points.size() / 4);  // the raw scan is distorted
+  // the KITTI files keep the point times
+  const auto dir = slamroute::test::testTmp() / "lidar_times";
+  std::filesystem::create_directories(dir);
+  writeKittiScan(dir / "000000.bin", s);
+  const Scan r = readKittiScan(dir / "000000.bin");
+  ASSERT_TRUE(r.has_point_times);
+  ASSERT_EQ(r.points.size(), s.points.size());
+  for (std::size_t i = 0; i < r.points.size(); ++i) ASSERT_EQ(r.points[i].dt, s.points[i].dt);
+  // switched off: one pose for the whole sweep, no times
+  LidarConfig still = noiseFree("vlp16");
+  still.motion_distortion = false;
+  const Scan t = Lidar(still, 1).scan(w, start, end, {}, 0, 5.0);
+  EXPECT_FALSE(t.has_point_times);
+  for (const auto& p : t.points) ASSERT_NEAR((start * Vec3(p.x, p.y, p.z)).x(), 20.0, 2e-3);
 }
 
 TEST(Lidar, PresetsAndOverrides) {

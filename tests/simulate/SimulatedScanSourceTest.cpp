@@ -63,12 +63,16 @@ TEST(SimulatedScanSource, RegeneratesExactlyWhatTheLidarProduces) {
   const Lidar lidar(d.lidar, d.wf.seed);
   for (std::size_t i = 0; i < 3; ++i) {
     const Scan a = src.scan(i);
-    const Scan b = lidar.scan(w, d.gt[i].T_world_body, d.traffic[i], i, d.gt[i].t);
+    // the sweep ends where the sensor is 0.1 s later (the last pose: held)
+    const Pose3 end = i + 1 < 3 ? d.gt[i + 1].T_world_body : d.gt[i].T_world_body;
+    const Scan b = lidar.scan(w, d.gt[i].T_world_body, end, d.traffic[i], i, d.gt[i].t);
     ASSERT_EQ(a.points.size(), b.points.size());
+    ASSERT_TRUE(a.has_point_times);
     for (std::size_t k = 0; k < a.points.size(); ++k) {
       ASSERT_EQ(a.points[k].x, b.points[k].x);
       ASSERT_EQ(a.points[k].z, b.points[k].z);
       ASSERT_EQ(a.points[k].ring, b.points[k].ring);
+      ASSERT_EQ(a.points[k].dt, b.points[k].dt);
     }
     EXPECT_DOUBLE_EQ(a.t, d.gt[i].t);
   }

@@ -1,9 +1,10 @@
 #pragma once
 // `slamroute drive`: the mapping vehicle ("mapper") follows a SUMO edge sequence among
 // background traffic; the drive folder (core DriveFolder.hpp) receives
-//   groundtruth.tum   sensor poses, TUM, record_hz (10 Hz): position from SUMO (x, y, z of the
-//                     vehicle's front reference point) plus lidar mount height straight up;
-//                     yaw from the heading, pitch from the road's slope
+//   groundtruth.tum   sensor poses, TUM, record_hz (10 Hz): the 2D path and heading from SUMO
+//                     (the vehicle's front reference point), the body standing on the world's
+//                     road surface on its suspension (VehicleBody.hpp: pitch, roll, heave), the
+//                     lidar mount height above the road on the body
 //   pose_edges.csv    index,t,sumo_edge,lane_pos_m — the route edge each pose belongs to; in a
 //                     junction (SUMO internal lane) the edge just left, with lane_pos_m = that
 //                     edge's length + the distance into the junction
@@ -14,7 +15,8 @@
 //   odometry.csv      wheel speed + gyro yaw rate + IMU roll / pitch (core Odometry.hpp)
 //   odometry.yaml     their noise figures (core OdometrySpec.hpp), from DriveConfig
 //   drive.json        route, length driven, duration, teleports (always 0), frames
-//   scans/            only with save_scans: NNNNNN.bin (KITTI) + times.txt
+//   scans/            only with save_scans: NNNNNN.bin (KITTI) + times.txt, and NNNNNN.time
+//                     (each point's firing time) when the LiDAR models motion distortion
 // Everything is written to a temporary folder beside DIR and renamed into place at the end,
 // so a failed drive leaves nothing behind. A teleported, rerouted or unfinished mapper is an
 // error (std::runtime_error), never a silently wrong trajectory.

@@ -3,6 +3,34 @@
 // section (LidarConfig); `--sensor paper|vlp16|hdl32` on the command line sets lidar.preset.
 namespace slamroute::simulate {
 
+/// The mapping vehicle's body on its suspension (VehicleBody.hpp): it stands on the world's road
+/// surface at its four wheels and pitches, rolls and heaves on a damped spring per axis, driven by
+/// the road under the wheels and by braking, accelerating and cornering.
+struct VehicleBodyConfig {
+  double wheelbase_m = 2.7;             ///< front to rear axle [m]
+  double track_m = 1.6;                 ///< left to right wheel [m]
+  double front_overhang_m = 0.9;        ///< front bumper (SUMO's reference point) to front axle [m]
+  double pitch_hz = 1.4;                ///< natural frequency of the body's pitch [Hz]
+  double roll_hz = 1.2;                 ///< ... roll [Hz]
+  double heave_hz = 1.3;                ///< ... heave [Hz]
+  double damping_ratio = 0.4;           ///< of each axis (1 = critically damped)
+  double pitch_deg_per_mps2 = 0.15;     ///< nose dive per m/s^2 of braking (squat when accelerating) [deg]
+  double roll_deg_per_mps2 = 0.35;      ///< outward roll per m/s^2 of cornering [deg]
+};
+
+template <class V>
+void visitFields(V& v, VehicleBodyConfig& c) {
+  v.field("wheelbase_m", c.wheelbase_m, "front to rear axle [m]");
+  v.field("track_m", c.track_m, "left to right wheel [m]");
+  v.field("front_overhang_m", c.front_overhang_m, "front bumper to front axle [m]");
+  v.field("pitch_hz", c.pitch_hz, "natural frequency of body pitch [Hz]");
+  v.field("roll_hz", c.roll_hz, "natural frequency of body roll [Hz]");
+  v.field("heave_hz", c.heave_hz, "natural frequency of body heave [Hz]");
+  v.field("damping_ratio", c.damping_ratio, "damping ratio of each axis (1 = critical)");
+  v.field("pitch_deg_per_mps2", c.pitch_deg_per_mps2, "nose dive per m/s^2 of braking [deg]");
+  v.field("roll_deg_per_mps2", c.roll_deg_per_mps2, "outward roll per m/s^2 of cornering [deg]");
+}
+
 struct DriveConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double record_hz = 10.0;      ///< ground-truth pose rate [Hz] (a multiple of the 0.1 s step)
@@ -24,6 +52,7 @@ struct DriveConfig {
   /// them). Negative = not recorded.
   double tilt_bias_sigma_deg = 0.05;      ///< roll / pitch bias, 1 sigma, one per drive [deg]
   double tilt_noise_deg = 0.1;            ///< white roll / pitch noise per sample, 1 sigma [deg]
+  VehicleBodyConfig body;                 ///< suspension: the sensor pose follows the road
 };
 
 template <class V>
@@ -47,6 +76,7 @@ void visitFields(V& v, DriveConfig& c) {
   v.field("tilt_noise_deg", c.tilt_noise_deg, "IMU roll/pitch white noise, 1 sigma [deg]");
   v.field("gyro_bias_sigma_deg_s", c.gyro_bias_sigma_deg_s, "gyro yaw-rate bias, 1 sigma, one per drive [deg/s]");
   v.field("gyro_noise_deg_s", c.gyro_noise_deg_s, "gyro white yaw-rate noise, 1 sigma [deg/s]");
+  v.section("body", c.body);
 }
 
 }  // namespace slamroute::simulate

@@ -17,6 +17,11 @@ struct LidarConfig {
   LidarSpec spec;
   double range_sigma_m = 0.02;   ///< Gaussian range noise, 1 sigma (HDL-64E class: ~2 cm); 0 = none [m]
   double dropout_prob = 0.01;    ///< probability that a return is dropped at random; 0 = none
+  /// A spinning sensor fires its columns one after another over the sweep while the vehicle
+  /// moves, so a raw scan is distorted by the motion (each point in the sensor frame of its own
+  /// firing time, ScanPoint::dt). false: every column fires at the sweep's start.
+  bool motion_distortion = true;
+  double sweep_period_s = 0.1;   ///< one revolution [s] (10 Hz, the drive's record rate)
 };
 
 template <class V>
@@ -25,6 +30,9 @@ void visitFields(V& v, LidarConfig& c) {
   v.section("spec", c.spec);
   v.field("range_sigma_m", c.range_sigma_m, "Gaussian range noise sigma, 0 = noise-free [m]");
   v.field("dropout_prob", c.dropout_prob, "random dropout probability per return");
+  v.field("motion_distortion", c.motion_distortion,
+          "columns fire over the sweep along the motion (raw, distorted scans with point times)");
+  v.field("sweep_period_s", c.sweep_period_s, "one revolution of the sensor [s]");
 }
 
 /// The sensor geometry this config describes: lidarPreset(preset) with the fields of `spec`

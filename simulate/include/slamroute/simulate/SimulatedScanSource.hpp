@@ -2,8 +2,9 @@
 // ScanSource backed by the simulator: regenerates scan i of a drive on demand from the drive
 // folder (core DriveFolder.hpp) — groundtruth.tum (sensor poses T_world_sensor), sensor.yaml
 // (LidarConfig with the resolved spec), world.yaml (net path, seed, world config) and, when
-// present, traffic.csv (vehicle boxes per pose). Scan i is Lidar::scan(world, pose i, boxes i,
-// index i, t_i) with the drive's seed: bitwise what `drive --save-scans` writes. The evaluator
+// present, traffic.csv (vehicle boxes per pose). Scan i is Lidar::scan(world, pose i,
+// sweepEndPose(i), boxes i, index i, t_i) with the drive's seed: bitwise what
+// `drive --save-scans` writes. The evaluator
 // only sees ScanSource; Embree stays inside this module.
 #include <filesystem>
 

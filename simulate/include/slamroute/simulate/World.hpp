@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,11 @@
 namespace slamroute::simulate {
 
 enum class SurfaceKind : std::uint8_t {
-  Ground = 0, Road, Sidewalk, Deck, Pillar, Parapet, Building, Wall, Pole, Tree, Vehicle
+  Ground = 0, Road, Sidewalk, Deck, Pillar, Parapet, Building, Wall, Pole, Tree, Vehicle,
+  Furniture,  ///< signs, bollards, bus shelters
+  ParkedCar,  ///< parked cars beside the pavements (part of the static world)
+  Fence,      ///< post-and-rail fences along open streets
+  Last = Fence
 };
 const char* surfaceKindName(SurfaceKind k);
 
@@ -47,6 +52,7 @@ struct RayHit {
 
 struct WorldStats {
   std::size_t triangles = 0, buildings = 0, walls = 0, poles = 0, trees = 0, pillars = 0;
+  std::size_t parked_cars = 0, furniture = 0, fence_posts = 0;
   std::size_t streets_rich = 0, streets_wall = 0, streets_open = 0;
   double ground_z_m = 0.0;
 };
@@ -83,6 +89,11 @@ class World {
   /// max_range_m. `dir` need not be unit.
   RayHit castRay(const Point3& origin, const Vec3& dir, double max_range_m,
                  const std::vector<VehicleBox>& boxes = {}) const;
+
+  /// Height of the first surface of the static world straight below (x, y, z_from) within
+  /// `depth_m` (the road under a wheel: start above the road and under any deck overhead), or
+  /// nullopt when there is none [m].
+  std::optional<double> surfaceZ(double x, double y, double z_from, double depth_m = 3.0) const;
 
   /// Binary little-endian PLY (float x,y,z; uchar-count int vertex_indices), written atomically.
   void writePly(const std::filesystem::path& path) const;

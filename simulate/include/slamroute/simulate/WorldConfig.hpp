@@ -34,6 +34,16 @@ struct WorldConfig {
   double pole_spacing_m = 25.0;           ///< street-light pole spacing on rich streets [m]
   double tree_spacing_m = 14.0;           ///< tree spacing on rich streets (with jitter) [m]
   double open_pole_spacing_m = 80.0;      ///< pole spacing on open-field streets [m]
+  // Relief of roads and ground: neither is a plane, so a LiDAR's ground rings differ from scan
+  // to scan as on real roads, and the vehicle rolls and pitches over them.
+  double road_camber_pct = 2.0;           ///< cross-fall from the road's crown to its kerbs [%]
+  double undulation_m = 0.02;             ///< metres-long swell of road and ground, 1 sigma [m]
+  double undulation_wavelength_m = 25.0;  ///< typical wavelength of the swell [m]
+  double road_roughness_m = 0.006;        ///< roughness of roads and pavements, 1 sigma [m]
+  double verge_roughness_m = 0.025;       ///< roughness of the ground beside roads, 1 sigma [m]
+  double road_cell_m = 1.0;               ///< road mesh spacing along a lane (and ~across) [m]
+  double ground_cell_m = 4.0;             ///< rough-ground mesh spacing near roads [m]
+  double ground_detail_reach_m = 40.0;    ///< rough ground this far from any lane; flat beyond [m]
 };
 
 template <class V>
@@ -65,6 +75,14 @@ void visitFields(V& v, WorldConfig& c) {
   v.field("pole_spacing_m", c.pole_spacing_m, "pole spacing on rich streets [m]");
   v.field("tree_spacing_m", c.tree_spacing_m, "tree spacing on rich streets [m]");
   v.field("open_pole_spacing_m", c.open_pole_spacing_m, "pole spacing on open-field streets [m]");
+  v.field("road_camber_pct", c.road_camber_pct, "road cross-fall from crown to kerb [%]");
+  v.field("undulation_m", c.undulation_m, "metres-long swell of road and ground, 1 sigma [m]");
+  v.field("undulation_wavelength_m", c.undulation_wavelength_m, "typical swell wavelength [m]");
+  v.field("road_roughness_m", c.road_roughness_m, "road / pavement roughness, 1 sigma [m]");
+  v.field("verge_roughness_m", c.verge_roughness_m, "roughness of the ground beside roads, 1 sigma [m]");
+  v.field("road_cell_m", c.road_cell_m, "road mesh spacing [m]");
+  v.field("ground_cell_m", c.ground_cell_m, "rough-ground mesh spacing [m]");
+  v.field("ground_detail_reach_m", c.ground_detail_reach_m, "rough ground this far from lanes [m]");
 }
 
 }  // namespace slamroute::simulate
