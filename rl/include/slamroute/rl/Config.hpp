@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "slamroute/rl/CoverageConfig.hpp"
+
 namespace slamroute::rl {
 
 /// Extended information filter over the vehicle pose (x, y, heading): the R_U model (eq. 6).
@@ -125,7 +127,8 @@ void visitFields(V& v, PostmanConfig& c) {
 }
 
 struct Config {
-  std::string planner = "qlearning";  ///< qlearning | random | tsp | postman
+  /// qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching
+  std::string planner = "qlearning";
   std::string goal = "nodes";          ///< episode/coverage goal: nodes (paper) | edges (streets)
   std::string reward = "full";         ///< full (eq. 7) | accuracy (R_A only, paper Table 2)
   int start_node = -1;                 ///< start node id (-1: the first node of the planning graph)
@@ -134,11 +137,13 @@ struct Config {
   RandomConfig random;
   TspConfig tsp;
   PostmanConfig postman;
+  CoverageConfig coverage;  ///< aco-ga and its baselines
 };
 
 template <class V>
 void visitFields(V& v, Config& c) {
-  v.field("planner", c.planner, "qlearning | random | tsp | postman");
+  v.field("planner", c.planner,
+          "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching");
   v.field("goal", c.goal, "coverage goal: nodes (paper: every node visited) | edges (every street)");
   v.field("reward", c.reward, "qlearning reward: full (eq. 7) | accuracy (R_A only, Table 2)");
   v.field("start_node", c.start_node, "start node id (-1: first node of the planning graph)");
@@ -147,6 +152,7 @@ void visitFields(V& v, Config& c) {
   v.section("random", c.random);
   v.section("tsp", c.tsp);
   v.section("postman", c.postman);
+  v.section("coverage", c.coverage);
 }
 
 }  // namespace slamroute::rl
