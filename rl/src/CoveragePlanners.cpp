@@ -55,6 +55,8 @@ void CoverageConfig::validate() const {
   require(ga.mutation_rate >= 0.0 && ga.mutation_rate <= 1.0, "ga.mutation_rate", "must be in [0, 1]");
   require(ga.elite >= 0 && ga.elite < ga.chromosomes, "ga.elite", "must be in [0, chromosomes)");
   require(ga.shift_legs >= 1, "ga.shift_legs", "must be >= 1");
+  require(ga.stall_generations >= 1, "ga.stall_generations", "must be >= 1");
+  require(ga.excess_penalty_m_per_m2 >= 0.0, "ga.excess_penalty_m_per_m2", "must be >= 0");
 }
 
 bool isCoveragePlanner(const std::string& planner) {

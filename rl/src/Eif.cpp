@@ -51,11 +51,6 @@ void PoseEif::closeLoop(const Info3& node_info) {
   L_ = 0.5 * (L_ + L_.transpose());
 }
 
-void PoseEif::relocalise(const Info3& node_info) {
-  const Eigen::Matrix3d anchored = (node_info.inverse() + R_lc_).inverse();
-  if (anchored.determinant() > L_.determinant()) L_ = 0.5 * (anchored + anchored.transpose());
-}
-
 double PoseEif::logDetCov() const { return -std::log(L_.determinant()); }
 
 }  // namespace slamroute::rl

@@ -19,17 +19,21 @@ using Chromosome = std::string;  // one char (0/1) per revisit position
 
 struct Individual {
   Chromosome genes;
-  double excess = 0.0, length = 0.0;
+  bool feasible = true;
+  double score = 0.0;  ///< length, plus the excess penalty when the bound breaks [m]
+  bool better(const Individual& o) const {
+    return std::make_pair(!feasible, score) < std::make_pair(!o.feasible, o.score);
+  }
   bool operator<(const Individual& o) const {
-    if (excess != o.excess) return excess < o.excess;
-    if (length != o.length) return length < o.length;
+    if (better(o) || o.better(*this)) return better(o);
     return genes < o.genes;
   }
 };
 
 class Population {
  public:
-  Population(const CoverageProblem& p, const std::vector<int>& targets) : p_(p), targets_(targets) {
+  Population(const CoverageProblem& p, const std::vector<int>& targets, double penalty)
+      : p_(p), targets_(targets), penalty_(penalty) {
     pos_of_.assign(targets.size(), -1);
     for (std::size_t j = 0; j < targets.size(); ++j)
       if (targets[j] >= 0) {
@@ -57,13 +61,15 @@ class Population {
       it = cache_.emplace(c, std::make_pair(w.excess_m2, w.length_m)).first;
       ++evaluations;
     }
-    return {c, it->second.first, it->second.second};
+    const auto [excess, length] = it->second;
+    return {c, excess <= 0.0, length + penalty_ * excess};
   }
   int evaluations = 0;
 
  private:
   const CoverageProblem& p_;
   const std::vector<int>& targets_;
+  double penalty_;
   std::vector<int> pos_of_, active_;
   std::unordered_map<Chromosome, std::pair<double, double>> cache_;
 };
@@ -113,7 +119,7 @@ GeneticResult geneticRevisits(const CoverageProblem& p, const std::vector<int>& 
                               std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
-  Population popu(p, targets);
+  Population popu(p, targets, cfg.excess_penalty_m_per_m2);
   std::vector<Individual> pop;
   const Chromosome sw = popu.fromRevisits(switching.revisit_after);
   pop.push_back(popu.evaluate(sw));
@@ -136,11 +142,10 @@ GeneticResult geneticRevisits(const CoverageProblem& p, const std::vector<int>& 
       next.push_back(popu.evaluate(c));
     }
     std::sort(next.begin(), next.end());
-    const Individual& nb = next.front();
-    if (std::make_pair(nb.excess, nb.length) < std::make_pair(pop.front().excess, pop.front().length))
-      res.improved_at_generation = g;
+    if (next.front().better(pop.front())) res.improved_at_generation = g;
     pop = std::move(next);
     res.generations_run = g;
+    if (g - res.improved_at_generation >= cfg.stall_generations) break;
   }
   res.best = popu.walk(pop.front().genes);
   res.evaluations = popu.evaluations;

@@ -12,9 +12,8 @@ namespace {
 std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 }  // namespace
 
-double positionDOptimality(const Info3& L) {
-  const Eigen::Matrix2d S = L.inverse().topLeftCorner<2, 2>();
-  return std::sqrt(std::max(S.determinant(), 0.0));
+double positionDOptimality(const Eigen::Matrix3d& cov) {
+  return std::sqrt(std::max(cov.topLeftCorner<2, 2>().determinant(), 0.0));
 }
 
 EdgeMotions edgeMotions(const PlanGraph& pg, const EifConfig& cfg) {
@@ -27,29 +26,35 @@ EdgeMotions edgeMotions(const PlanGraph& pg, const EifConfig& cfg) {
 
 UncertaintyTracker::UncertaintyTracker(const PlanGraph& pg, const EifConfig& cfg, int start,
                                        EdgeMotions motions)
-    : pg_(&pg), cfg_(&cfg), motions_(std::move(motions)), eif_(cfg) {
+    : pg_(&pg), cfg_(&cfg), motions_(std::move(motions)) {
   if (!motions_) motions_ = edgeMotions(pg, cfg);
-  node_info_.resize(sz(pg.n));
+  cov_ = PoseEif(cfg).info().inverse();
+  const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
+  const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
+  r_lc_ = Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+  node_cov_.resize(sz(pg.n));
   place_c_.assign(sz(pg.n), std::numeric_limits<double>::infinity());
   last_visit_m_.assign(sz(pg.n), 0.0);
   mapped_.assign(sz(pg.n), 0);
-  c_ = positionDOptimality(eif_.info());
+  c_ = positionDOptimality(cov_);
   mapped_[sz(start)] = 1;
-  node_info_[sz(start)] = eif_.info();
+  node_cov_[sz(start)] = cov_;
   place_c_[sz(start)] = c_;
 }
 
 double UncertaintyTracker::drive(int e) {
-  eif_.drive((*motions_)[sz(e)]);
+  const EdgeMotion& mo = (*motions_)[sz(e)];
+  cov_ = mo.F * cov_ * mo.F.transpose() + mo.Q;
   travelled_m_ += pg_->len[sz(e)];
   const std::size_t w = sz(pg_->v[sz(e)]);
   if (mapped_[w] && travelled_m_ - last_visit_m_[w] >= cfg_->loop_min_travel_m) {
-    eif_.relocalise(node_info_[w]);
+    const Eigen::Matrix3d anchored = node_cov_[w] + r_lc_;
+    if (anchored.determinant() < cov_.determinant()) cov_ = anchored;
     ++closures_;
   }
-  c_ = positionDOptimality(eif_.info());
+  c_ = positionDOptimality(cov_);
   if (!mapped_[w] || c_ < place_c_[w]) {
-    node_info_[w] = eif_.info();
+    node_cov_[w] = cov_;
     place_c_[w] = c_;
   }
   mapped_[w] = 1;

@@ -31,8 +31,8 @@ int revisits(const Route& r) { return test::extra(r)["loop_closure_revisits"].ge
 
 TEST(Uncertainty, DOptimalityOfThePositionBlock) {
   // Sigma = diag(4, 9, 0.01): sqrt(det Sigma_xy) = sqrt(36) = 6 m^2.
-  const Info3 L = Eigen::Vector3d(1.0 / 4.0, 1.0 / 9.0, 100.0).asDiagonal();
-  EXPECT_NEAR(positionDOptimality(L), 6.0, 1e-12);
+  const Eigen::Matrix3d S = Eigen::Vector3d(4.0, 9.0, 0.01).asDiagonal();
+  EXPECT_NEAR(positionDOptimality(S), 6.0, 1e-12);
 }
 
 TEST(Uncertainty, ClosureReanchorsToThePlace) {

@@ -47,6 +47,10 @@ struct GeneticConfig {
   double mutation_rate = 0.3;   ///< probability a child mutates (paper's R_mut)
   int elite = 2;                ///< best chromosomes copied unchanged
   int shift_legs = 3;           ///< a mutation moves a revisit by at most this many legs
+  int stall_generations = 30;   ///< stop after this many generations without a better best
+  /// Schedules that break the bound rank after those that keep it, by length + this * excess,
+  /// excess = sum over steps of (C_k - C_threshold) where positive [m per m^2].
+  double excess_penalty_m_per_m2 = 10.0;
 };
 
 template <class V>
@@ -57,6 +61,10 @@ void visitFields(V& v, GeneticConfig& c) {
   v.field("mutation_rate", c.mutation_rate, "probability a child mutates (paper: R_mut)");
   v.field("elite", c.elite, "best chromosomes kept unchanged each generation");
   v.field("shift_legs", c.shift_legs, "a mutation moves a revisit by at most this many legs");
+  v.field("stall_generations", c.stall_generations,
+          "stop after this many generations without a better schedule");
+  v.field("excess_penalty_m_per_m2", c.excess_penalty_m_per_m2,
+          "schedules breaking the bound rank by length + this * sum of (C_k - bound) [m/m^2]");
 }
 
 struct CoverageConfig {

@@ -40,13 +40,6 @@ class PoseEif {
   void drive(const EdgeMotion& mo);
   /// Loop closure against the stored information of a visited node.
   void closeLoop(const Info3& node_info);
-  /// Loop closure that re-anchors the pose to the map at a place: the pose becomes the place's
-  /// stored estimate plus the registration noise, (node_info^-1 + R_lc)^-1, when that is more
-  /// certain (larger det) than the current pose. Unlike closeLoop it keeps the correlation of a
-  /// drive with its own recent map: re-seeing a street mapped a minute ago with the same drift
-  /// does not shrink the drift. The coverage planners' C_k uses it (paper eq. 1: C_k = eps_0 at
-  /// a loop-closure place).
-  void relocalise(const Info3& node_info);
   const Info3& info() const { return L_; }
   /// log det of the pose covariance = -log det L.
   double logDetCov() const;
