@@ -121,13 +121,13 @@ int main(int argc, char** argv) {
   rl::GridCitySpec a;  // A: 3 x 4 junctions, 100 m blocks (34 directed streets)
   a.rows = 3;
   a.cols = 4;
-  rl::GridCitySpec b;  // B: 4 x 4 junctions, 70 m blocks, 40 % one-way (about 38 streets)
+  rl::GridCitySpec b;  // B: 4 x 5 junctions, 50 m blocks (62 directed streets)
   b.rows = 4;
-  b.cols = 4;
-  b.spacing_m = 70.0;
-  b.one_way_fraction = 0.4;
-  b.seed = 2;
-  tables({{"A", a, 20.0}, {"B", b, 8.0}}, seeds);
+  b.cols = 5;
+  b.spacing_m = 50.0;
+  tables({{"A, C_th 15", a, 15.0}, {"A, C_th 20", a, 20.0}, {"B, C_th 5", b, 5.0},
+          {"B, C_th 10", b, 10.0}},
+         seeds);
   if (large) largeGrid();
   return 0;
 }
