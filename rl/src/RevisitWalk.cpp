@@ -106,6 +106,22 @@ WalkResult walkCoverage(const CoverageProblem& p, const RevisitPolicy& policy) {
   return std::move(w.result());
 }
 
+/// Max C_k when the walk goes from `cur` (after an optional revisit to `revisit`) to `after`
+/// and then takes the nearest revisit from there (none when `last`).
+double lookahead(const CoverageProblem& p, const UncertaintyTracker& t, const WalkState& s,
+                 int revisit, std::vector<int>& buf) {
+  UncertaintyTracker ahead = t;
+  int from = s.cur;
+  double mx = t.c();
+  if (revisit >= 0) {
+    mx = std::max(mx, simulateLeg(p, ahead, from, revisit, buf));
+    from = revisit;
+  }
+  mx = std::max(mx, simulateLeg(p, ahead, from, s.after, buf));
+  if (!s.last) mx = std::max(mx, simulateLeg(p, ahead, s.after, nearestRevisit(p, ahead, s.after, -1), buf));
+  return mx;
+}
+
 WalkResult walkSwitching(const CoverageProblem& p, std::vector<int>& considered) {
   considered.assign(p.cities.size(), -1);
   std::vector<int> buf;
@@ -113,14 +129,11 @@ WalkResult walkSwitching(const CoverageProblem& p, std::vector<int>& considered)
     const int now = nearestRevisit(p, t, s.cur, s.after);
     considered[sz(s.j)] = now;
     if (now < 0 || s.after < 0) return -1;
-    // Go on to the next city (or home), then revisit from there: does C_k stay in bounds?
-    UncertaintyTracker ahead = t;
-    double mx = simulateLeg(p, ahead, s.cur, s.after, buf);
-    if (!s.last) {
-      const int later = nearestRevisit(p, ahead, s.after, -1);
-      mx = std::max(mx, simulateLeg(p, ahead, s.after, later, buf));
-    }
-    return mx > p.c_threshold_m2 ? now : -1;
+    // Revisit now when going on and revisiting only at the next city would break the bound, and
+    // revisiting now keeps it. Where no revisit can keep it (the next city too far from any
+    // place mapped with little uncertainty) the walk goes on: revisiting would only shuttle.
+    if (lookahead(p, t, s, -1, buf) <= p.c_threshold_m2) return -1;
+    return lookahead(p, t, s, now, buf) <= p.c_threshold_m2 ? now : -1;
   };
   return walkCoverage(p, policy);
 }
