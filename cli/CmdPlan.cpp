@@ -57,7 +57,9 @@ void registerPlan(CLI::App& app, Context& ctx) {
   auto* g_opt = sub->add_option("--graph", o->graph, "road graph (graph.json)");
   auto* n_opt = sub->add_option("--net", o->net, "SUMO network (.net.xml[.gz]); also writes .rou.xml");
   g_opt->excludes(n_opt);
-  sub->add_option("--planner", o->planner, "qlearning | random | tsp | postman (default: rl.planner)");
+  sub->add_option("--planner", o->planner,
+                  "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | "
+                  "switching (default: rl.planner)");
   sub->add_option("--out", o->out, "output route (route.json)")->required();
   auto* s_opt = sub->add_option("--start", o->start, "start node id (default: rl.start_node)");
   sub->add_option("--start-junction", o->start_junction, "start at the node of this SUMO junction")

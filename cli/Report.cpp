@@ -64,6 +64,25 @@ std::string num(const json& j, const char* key, int prec = 2, double scale = 1.0
   return fmt(j[key].get<double>() * scale, prec);
 }
 
+/// C_k (rl/Uncertainty.hpp) along each planned route against the bound the coverage planners
+/// keep: peak, mean, whether it held, and the revisits aco-ga / switching / ER inserted.
+void uncertaintyTable(std::ostringstream& md, const ReportInputs& in) {
+  md << "Predicted pose uncertainty C_k = sqrt(det EIF position covariance) along each route "
+        "(the bound aco-ga, switching and exhaustive-revisit keep when they can):\n\n"
+     << "| planner | C_max [m^2] | C_average [m^2] | C_threshold [m^2] | bound kept | loop-closure "
+        "revisits |\n|---|---|---|---|---|---|\n";
+  for (const auto& p : in.planners) {
+    const json r = readJsonOr(in.out / "routes" / (p + ".json"));
+    const json x = r.value("extra", json::object());
+    const json u = x.value("uncertainty", json::object());
+    md << "| " << p << " | " << num(u, "c_max_m2", 1) << " | " << num(u, "c_average_m2", 1) << " | "
+       << num(u, "c_threshold_m2", 1) << " | "
+       << (u.contains("bound_satisfied") ? (u["bound_satisfied"].get<bool>() ? "yes" : "no") : "–")
+       << " | " << num(x, "loop_closure_revisits", 0) << " |\n";
+  }
+  md << "\n";
+}
+
 /// Per SUMO edge: length-weighted mean drift [%] over every planner's drive.
 std::map<std::string, std::pair<double, double>> pooledDrift(const fs::path& out,
                                                              const std::vector<std::string>& planners) {
@@ -240,6 +259,7 @@ void writeReport(const ReportInputs& in) {
        << map_aligned << " |\n";
   }
   md << "\n";
+  uncertaintyTable(md, in);
   for (const auto& p : in.planners) {
     md << "### " << p << "\n\n";
     const fs::path rj = in.out / "routes" / (p + ".json");

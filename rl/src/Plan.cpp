@@ -5,6 +5,7 @@
 
 #include "slamroute/core/Log.hpp"
 #include "slamroute/rl/Planners.hpp"
+#include "slamroute/rl/Uncertainty.hpp"
 
 namespace slamroute::rl {
 
@@ -14,11 +15,31 @@ Goal parseGoal(const std::string& name) {
   throw std::invalid_argument("rl.goal: unknown goal '" + name + "' (expected nodes or edges)");
 }
 
+namespace {
+
+/// C_k along the route (Uncertainty.hpp) against rl.coverage.c_threshold_m2, for every planner.
+nlohmann::json uncertaintyJson(const PlanGraph& pg, const Config& cfg, int start,
+                               const std::vector<int>& edges) {
+  const UncertaintySeries s = predictUncertainty(pg, cfg.eif, start, edges);
+  const double bound = cfg.coverage.c_threshold_m2;
+  return {{"definition", "C_k = sqrt(det EIF position covariance) after each edge [m^2]"},
+          {"c_threshold_m2", bound},
+          {"c_max_m2", s.max_m2},
+          {"c_average_m2", s.mean_m2},
+          {"bound_satisfied", s.max_m2 <= bound},
+          {"closures", s.closures},
+          {"c_along_m2", s.c_m2}};
+}
+
+}  // namespace
+
 Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std::string& where) {
   const std::string& p = cfg.planner;
-  if (p != "qlearning" && p != "random" && p != "tsp" && p != "postman")
+  if (p != "qlearning" && p != "random" && p != "tsp" && p != "postman" && !isCoveragePlanner(p))
     throw std::invalid_argument("unknown planner '" + p +
-                                "' (expected qlearning, random, tsp or postman)");
+                                "' (expected qlearning, random, tsp, postman, aco-ga, open-loop, "
+                                "exhaustive-revisit or switching)");
+  if (isCoveragePlanner(p)) cfg.coverage.validate();
   if (cfg.reward != "full" && cfg.reward != "accuracy")
     throw std::invalid_argument("unknown reward '" + cfg.reward + "' (expected full or accuracy)");
   parseGoal(cfg.goal);
@@ -46,7 +67,8 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
   if (p == "qlearning") out = planQLearning(pg, paths, cfg, start, seed);
   else if (p == "random") out = planRandom(pg, paths, cfg, start, seed);
   else if (p == "tsp") out = planTsp(pg, paths, cfg, start);
-  else out = planPostman(pg, paths, cfg, start);
+  else if (p == "postman") out = planPostman(pg, paths, cfg, start);
+  else out = planCoverage(pg, paths, cfg, start, seed);
   const double secs =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -68,6 +90,7 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
                          {"turn_restricted", pg.restricted},
                          {"total_edge_length_m", pg.total_edge_len}};
   extra["illegal_turns"] = countIllegalTurns(pg, out.edges);
+  extra["uncertainty"] = uncertaintyJson(pg, cfg, start, out.edges);
   int without_sumo = 0;
   for (int e : out.edges)
     without_sumo += g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges.empty();

@@ -153,6 +153,30 @@ int greedy(const float* q, int deg) {
   return best;
 }
 
+/// An exploration action: uniform over the actions (paper), or, with new_first, uniform over those
+/// reaching something not yet covered when there are any.
+int explore(const Table& t, int s, const std::vector<int>& act, const EpisodeCoverage& cov,
+            bool new_first, std::mt19937_64& rng) {
+  const int deg = t.deg(s), b = t.act_off[sz(s)];
+  if (new_first) {
+    int fresh = 0;
+    for (int i = 0; i < deg; ++i) fresh += cov.isNew(act[sz(b + i)]) ? 1 : 0;
+    if (fresh > 0) {
+      int k = static_cast<int>(rng() % static_cast<std::uint64_t>(fresh));
+      for (int i = 0; i < deg; ++i)
+        if (cov.isNew(act[sz(b + i)]) && k-- == 0) return i;
+    }
+  }
+  return static_cast<int>(rng() % static_cast<std::uint64_t>(deg));
+}
+
+/// Share of the route's length the greedy policy chose (the rest are shortest-path completions).
+double learnedShare(const PlanGraph& pg, const std::vector<int>& edges, double shortest_m) {
+  double length = 0.0;
+  for (int e : edges) length += pg.len[sz(e)];
+  return length > 0.0 ? std::max(0.0, 1.0 - shortest_m / length) : 0.0;
+}
+
 }  // namespace
 
 PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
@@ -189,7 +213,11 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
   std::vector<int> node_stamp(sz(pg.n), 0);
   std::mt19937_64 rng(seed);
   auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
-  const long long cap = std::max<long long>(static_cast<long long>(qc.max_steps_per_edge * pg.m), 1);
+  // A random walk needs about m ln m steps to drive every one of m edges (cover time), so a cap
+  // linear in m cuts the walks of larger graphs short of the goal.
+  const double cap_scale = qc.cap_scales_with_log_edges ? std::max(1.0, std::log(pg.m)) : 1.0;
+  const long long cap =
+      std::max<long long>(static_cast<long long>(qc.max_steps_per_edge * pg.m * cap_scale), 1);
   const int decay_eps = std::max(1, static_cast<int>(qc.epsilon_decay_fraction * qc.episodes));
   const double alpha = qc.alpha, gamma = qc.gamma;
   long long total_steps = 0;
@@ -199,19 +227,20 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
   for (int ep = 0; ep < qc.episodes; ++ep) {
     const double eps = qc.epsilon_start + (qc.epsilon_end - qc.epsilon_start) *
                                               std::min(1.0, static_cast<double>(ep) / decay_eps);
-    cov.reset(start);
+    const int from = qc.spread_starts && ep % 2 == 1 ? static_cast<int>(rng() % static_cast<std::uint64_t>(pg.n)) : start;
+    cov.reset(from);
     eif.reset();
-    node_cov[sz(start)] = eif.S;
-    node_logdet[sz(start)] = eif.logDetCov();
-    node_travel[sz(start)] = 0.0;
-    node_stamp[sz(start)] = ep + 1;
+    node_cov[sz(from)] = eif.S;
+    node_logdet[sz(from)] = eif.logDetCov();
+    node_travel[sz(from)] = 0.0;
+    node_stamp[sz(from)] = ep + 1;
     double travel = 0.0, logdet_cov = eif.logDetCov();
-    int s = pg.m + start;
+    int s = pg.m + from;
     int sig = signature(t, s, act, cov);
     for (long long step = 0; step < cap; ++step) {
       const int deg = t.deg(s);
       float* qs = &t.q[t.qoff[sz(s)] + sz(sig) * sz(deg)];
-      const int i = uniform() < eps ? static_cast<int>(rng() % static_cast<std::uint64_t>(deg))
+      const int i = uniform() < eps ? explore(t, s, act, cov, qc.explore_new_first, rng)
                                     : greedy(qs, deg);
       const int f = act[sz(t.act_off[sz(s)] + i)];
       // Environment transition and reward (eqs. 6-7).
@@ -315,7 +344,8 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
                                   {"q_table_entries", t.q.size()},
                                   {"u_ref_logdet_per_edge", u_ref},
                                   {"shortest_path_segments", segments},
-                                  {"shortest_path_length_m", sp_len}}
+                                  {"shortest_path_length_m", sp_len},
+                                  {"learned_policy_share", learnedShare(pg, out.edges, sp_len)}}
                        .dump();
   return out;
 }

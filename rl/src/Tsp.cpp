@@ -51,6 +51,32 @@ std::vector<int> orientTour(const Matrix& d, std::vector<int> tour, int start, b
   return tourCost(d, rev, closed) < tourCost(d, tour, closed) ? rev : tour;
 }
 
+/// Drives the tour: from the edge actually arrived on (turn permissions), the shortest legal leg
+/// to each node not yet passed. The node-to-node matrix measures legs from a standing start at a
+/// node, free to leave by any edge; arriving by a given edge may forbid the U-turn or the turn
+/// that leg began with, so a leg can be much longer than its matrix entry. Nodes an earlier leg
+/// drove through are skipped (the goal is every node visited). Returns the route length [m].
+double expandLegs(const PlanGraph& pg, const TurnPaths& paths, const std::vector<int>& order,
+                  int start, std::vector<int>& edges) {
+  std::vector<char> seen(sz(pg.n), 0);
+  seen[sz(start)] = 1;
+  int cur_edge = -1, cur_node = start;
+  double length = 0.0;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const int target = order[k];
+    const bool home = k + 1 == order.size() && target == start;
+    if (target == cur_node || (seen[sz(target)] && !home)) continue;
+    auto leg = paths.toNearest(cur_edge, cur_node, [&](int e) { return pg.v[sz(e)] == target; });
+    if (!leg) throw std::runtime_error("tsp: node " + std::to_string(target) + " unreachable");
+    for (int e : leg->edges) seen[sz(pg.v[sz(e)])] = 1;
+    edges.insert(edges.end(), leg->edges.begin(), leg->edges.end());
+    length += leg->length_m;
+    cur_edge = edges.back();
+    cur_node = target;
+  }
+  return length;
+}
+
 }  // namespace
 
 std::vector<int> heldKarp(const Matrix& d, int start, bool closed, double* cost) {
@@ -132,18 +158,11 @@ PlanOutput planTsp(const PlanGraph& pg, const TurnPaths& paths, const Config& cf
   }
   const double matrix_cost = tourCost(d, order, tc.closed_tour);
   if (tc.closed_tour) order.push_back(start);
-  // Expand the legs from the actual arrival edge (turn permissions).
-  int cur_edge = -1, cur_node = start;
-  for (std::size_t k = 1; k < order.size(); ++k) {
-    const int target = order[k];
-    if (target == cur_node) continue;
-    auto leg = paths.toNearest(cur_edge, cur_node, [&](int e) { return pg.v[sz(e)] == target; });
-    if (!leg) throw std::runtime_error("tsp: node " + std::to_string(target) + " unreachable");
-    out.edges.insert(out.edges.end(), leg->edges.begin(), leg->edges.end());
-    cur_edge = out.edges.back();
-    cur_node = target;
-  }
-  out.extra_json = nlohmann::json{{"method", method}, {"tour_cost_m", matrix_cost}}.dump();
+  const double length = expandLegs(pg, paths, order, start, out.edges);
+  out.extra_json = nlohmann::json{{"method", method},
+                                  {"tour_cost_m", length},
+                                  {"matrix_tour_cost_m", matrix_cost}}
+                       .dump();
   return out;
 }
 

@@ -75,6 +75,38 @@ TEST(Tsp, HeuristicAboveExactLimitIsLabelled) {
   EXPECT_NE(r.notes.find("heuristic"), std::string::npos);
 }
 
+TEST(Tsp, RouteLengthIsTheReportedTourLength) {
+  // No U-turns and one-way streets: a leg that starts on the edge the tour arrived by can be far
+  // longer than the node-to-node distance (measured from a standing start). The reported tour
+  // length is what the route drives.
+  GridCitySpec s;
+  s.rows = 5;
+  s.cols = 6;
+  s.jitter_m = 15.0;
+  s.one_way_fraction = 0.3;
+  s.forbid_u_turns = true;
+  s.seed = 4;
+  for (int exact : {22, 10}) {
+    Config c;
+    c.planner = "tsp";
+    c.tsp.exact_max_nodes = exact;
+    const Route r = plan(gridCity(s), c, 1);
+    EXPECT_NEAR(r.length_m, test::extra(r)["tour_cost_m"].get<double>(), 1e-6);
+    EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
+    EXPECT_EQ(test::extra(r)["illegal_turns"].get<int>(), 0);
+  }
+}
+
+TEST(Tsp, RouteLengthIsTheTourLengthOnBologna) {
+  const auto net = test::bolognaNet();
+  if (!std::filesystem::exists(net)) GTEST_SKIP() << net << " missing";
+  Config c;
+  c.planner = "tsp";
+  const Route r = plan(test::netGraph(net), c, 1, net.string());
+  EXPECT_NEAR(r.length_m, test::extra(r)["tour_cost_m"].get<double>(), 1e-3);
+  EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
+}
+
 TEST(Tsp, RefusesAboveMaxNodes) {
   Config c;
   c.planner = "tsp";

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "slamroute/rl/CoverageConfig.hpp"
+
 namespace slamroute::rl {
 
 /// Extended information filter over the vehicle pose (x, y, heading): the R_U model (eq. 6).
@@ -45,7 +47,7 @@ struct QLearningConfig {
   double epsilon_start = 1.0;   ///< epsilon-greedy exploration at the first episode
   double epsilon_end = 0.05;    ///< ... reached linearly at epsilon_decay_fraction of the episodes
   double epsilon_decay_fraction = 0.8;  ///< share of episodes over which epsilon decays
-  double max_steps_per_edge = 4.0;      ///< episode step cap = this * number of edges
+  double max_steps_per_edge = 4.0;      ///< episode step cap = this * edges (* ln edges, below)
   int signature_bits = 4;       ///< state = arrival edge + "is new" bit of the first k actions (0 = position only)
   double weight_coverage = 1.0;     ///< eq. 7 weight of R_C
   double weight_accuracy = 1.0;     ///< eq. 7 weight of R_A
@@ -54,6 +56,9 @@ struct QLearningConfig {
   double uncertainty_clip = 1.0;    ///< |w_U * R_U| is clipped to this (one closure != many new nodes)
   int stall_steps = 2;              ///< roll-out: also a stall after this many steps without progress (0 = off)
   bool complete_with_shortest_paths = true;  ///< finish a stalled greedy roll-out by shortest paths
+  bool explore_new_first = true;  ///< exploration prefers actions reaching new coverage (paper: false)
+  bool spread_starts = true;      ///< every other episode starts at a random node (paper: false)
+  bool cap_scales_with_log_edges = true;  ///< step cap also x ln(edges) (paper setting: false)
 };
 
 template <class V>
@@ -79,6 +84,15 @@ void visitFields(V& v, QLearningConfig& c) {
           "roll-out: a stall also after this many steps without new coverage (0 = only on a repeated state)");
   v.field("complete_with_shortest_paths", c.complete_with_shortest_paths,
           "finish a stalled greedy roll-out with shortest paths to the nearest uncovered part");
+  v.field("explore_new_first", c.explore_new_first,
+          "exploration draws among actions reaching new coverage when there are any (paper: "
+          "false, uniform)");
+  v.field("spread_starts", c.spread_starts,
+          "every other training episode starts at a random node instead of the start (paper: "
+          "false)");
+  v.field("cap_scales_with_log_edges", c.cap_scales_with_log_edges,
+          "episode step cap = max_steps_per_edge * edges * ln(edges), a random walk's cover time "
+          "(false: max_steps_per_edge * edges)");
 }
 
 struct RandomConfig {
@@ -130,7 +144,8 @@ void visitFields(V& v, PostmanConfig& c) {
 }
 
 struct Config {
-  std::string planner = "qlearning";  ///< qlearning | random | tsp | postman
+  /// qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching
+  std::string planner = "qlearning";
   std::string goal = "nodes";          ///< episode/coverage goal: nodes (paper) | edges (streets)
   std::string reward = "full";         ///< full (eq. 7) | accuracy (R_A only, paper Table 2)
   int start_node = -1;                 ///< start node id (-1: the first node of the planning graph)
@@ -139,11 +154,13 @@ struct Config {
   RandomConfig random;
   TspConfig tsp;
   PostmanConfig postman;
+  CoverageConfig coverage;  ///< aco-ga and its baselines
 };
 
 template <class V>
 void visitFields(V& v, Config& c) {
-  v.field("planner", c.planner, "qlearning | random | tsp | postman");
+  v.field("planner", c.planner,
+          "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching");
   v.field("goal", c.goal, "coverage goal: nodes (paper: every node visited) | edges (every street)");
   v.field("reward", c.reward, "qlearning reward: full (eq. 7) | accuracy (R_A only, Table 2)");
   v.field("start_node", c.start_node, "start node id (-1: first node of the planning graph)");
@@ -152,6 +169,7 @@ void visitFields(V& v, Config& c) {
   v.section("random", c.random);
   v.section("tsp", c.tsp);
   v.section("postman", c.postman);
+  v.section("coverage", c.coverage);
 }
 
 }  // namespace slamroute::rl

@@ -32,6 +32,11 @@ PlanOutput planRandom(const PlanGraph& pg, const TurnPaths& paths, const Config&
 PlanOutput planTsp(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start);
 PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start);
 
+/// aco-ga | open-loop | exhaustive-revisit | switching (CoverageConfig.hpp, Uncertainty.hpp).
+bool isCoveragePlanner(const std::string& planner);
+PlanOutput planCoverage(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
+                        std::uint64_t seed);
+
 /// Optimal directed Chinese postman length ignoring turn permissions (a lower bound for any
 /// route driving every edge) [m].
 double turnFreePostmanLength(const PlanGraph& pg);
