@@ -33,6 +33,7 @@ void writeDriveScans(const std::filesystem::path& dir, const World& world, const
 /// Writes every file of the drive folder into `dir` (the staging folder).
 DriveResult writeDriveFolder(const std::filesystem::path& dir, const SumoNet& net,
                              const std::vector<std::string>& edges, const DriveRecord& rec,
-                             const World& world, const Config& cfg, const LidarSpec& spec, const DriveOptions& opts);
+                             const World& world, const Config& cfg, const LidarSpec& spec,
+                             const DriveOptions& opts);
 
 }  // namespace slamroute::simulate

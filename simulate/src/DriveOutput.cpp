@@ -47,7 +47,8 @@ DriveWorldFile readDriveWorldFile(const fs::path& drive_dir) {
 
 DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
                              const std::vector<std::string>& edges, const DriveRecord& rec,
-                             const World& world, const Config& cfg, const LidarSpec& spec, const DriveOptions& opts) {
+                             const World& world, const Config& cfg, const LidarSpec& spec,
+                             const DriveOptions& opts) {
   DriveResult res;
   res.route = edges;
   res.groundtruth = rec.groundtruth;

@@ -31,7 +31,10 @@ struct ColumnPose {
   float dt = 0;
   ColumnPose() = default;
   ColumnPose(const Pose3& T, float dt_s)
-      : R(T.linear().cast<float>()), o(T.translation().cast<float>()), od(T.translation()), dt(dt_s) {}
+      : R(T.linear().cast<float>()),
+        o(T.translation().cast<float>()),
+        od(T.translation()),
+        dt(dt_s) {}
 };
 
 
@@ -61,7 +64,8 @@ std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3
       for (int k = 0; k < 16; ++k) {
         const Eigen::Vector2d xy = bc.box.c.head<2>() + bc.box.u * bc.box.half.x() * ((k & 1) ? 1 : -1) +
                                    bc.box.v * bc.box.half.y() * ((k & 2) ? 1 : -1);
-        const Vec3 p = T_sw[k >> 3] * Vec3(xy.x(), xy.y(), bc.box.c.z() + bc.box.half.z() * ((k & 4) ? 1 : -1));
+        const double z = bc.box.c.z() + bc.box.half.z() * ((k & 4) ? 1 : -1);
+        const Vec3 p = T_sw[k >> 3] * Vec3(xy.x(), xy.y(), z);
         if (p.head<2>().norm() < 1e-6) all = true;
         double d = std::atan2(p.y(), p.x()) - a0;
         while (d > M_PI) d -= 2 * M_PI;

@@ -84,7 +84,8 @@ std::vector<double> speeds(const Trajectory& p) {
     const std::size_t a = i > 0 ? i - 1 : 0, b = std::min(n - 1, i + 1);
     const double dt = p[b].t - p[a].t;
     if (dt > 0)
-      v[i] = (p[b].T_world_body.translation() - p[a].T_world_body.translation()).head<2>().norm() / dt;
+      v[i] =
+          (p[b].T_world_body.translation() - p[a].T_world_body.translation()).head<2>().norm() / dt;
   }
   return v;
 }
@@ -127,21 +128,25 @@ Trajectory vehicleSensorPoses(const Trajectory& path, const World& world,
   const std::vector<double> v = speeds(path);
   RoadUnder u0 = roadUnder(world, path[0].T_world_body, mount_height_m, c);
   Axis heave{u0.heave, 0}, pitch{u0.pitch, 0}, roll{u0.roll, 0};
-  out[0].T_world_body = sensorPose(path[0].T_world_body, heave.x, pitch.x, roll.x, mount_height_m, c);
+  out[0].T_world_body =
+      sensorPose(path[0].T_world_body, heave.x, pitch.x, roll.x, mount_height_m, c);
   for (std::size_t i = 1; i < path.size(); ++i) {
     const double dt = path[i].t - path[i - 1].t;
     const RoadUnder u1 = roadUnder(world, path[i].T_world_body, mount_height_m, c);
     if (dt > 0) {
       const double ax = std::clamp((v[i] - v[i - 1]) / dt, -kMaxAccel_mps2, kMaxAccel_mps2);
-      const double turn = std::remainder(yawOf(path[i].T_world_body) - yawOf(path[i - 1].T_world_body),
-                                         2 * std::numbers::pi);
-      const double ay = std::clamp(0.5 * (v[i] + v[i - 1]) * turn / dt, -kMaxAccel_mps2, kMaxAccel_mps2);
+      const double turn = std::remainder(
+          yawOf(path[i].T_world_body) - yawOf(path[i - 1].T_world_body), 2 * std::numbers::pi);
+      const double ay =
+          std::clamp(0.5 * (v[i] + v[i - 1]) * turn / dt, -kMaxAccel_mps2, kMaxAccel_mps2);
       advance(heave, u0.heave, u1.heave, 0.0, dt, c.heave_hz, c.damping_ratio);
       advance(pitch, u0.pitch, u1.pitch, -c.pitch_deg_per_mps2 * kDeg * ax, dt, c.pitch_hz,
               c.damping_ratio);
-      advance(roll, u0.roll, u1.roll, c.roll_deg_per_mps2 * kDeg * ay, dt, c.roll_hz, c.damping_ratio);
+      advance(roll, u0.roll, u1.roll, c.roll_deg_per_mps2 * kDeg * ay, dt, c.roll_hz,
+              c.damping_ratio);
     }
-    out[i].T_world_body = sensorPose(path[i].T_world_body, heave.x, pitch.x, roll.x, mount_height_m, c);
+    out[i].T_world_body =
+        sensorPose(path[i].T_world_body, heave.x, pitch.x, roll.x, mount_height_m, c);
     u0 = u1;
   }
   return out;

@@ -42,8 +42,10 @@ void validate(const WorldConfig& c) {
   if (c.road_camber_pct < 0 || c.road_camber_pct > 10) bad("road_camber_pct must be in [0, 10]");
   if (c.undulation_m < 0 || c.undulation_m > 0.2) bad("undulation_m must be in [0, 0.2]");
   if (c.undulation_wavelength_m < 2) bad("undulation_wavelength_m must be >= 2");
-  if (c.road_roughness_m < 0 || c.road_roughness_m > 0.05) bad("road_roughness_m must be in [0, 0.05]");
-  if (c.verge_roughness_m < 0 || c.verge_roughness_m > 0.1) bad("verge_roughness_m must be in [0, 0.1]");
+  if (c.road_roughness_m < 0 || c.road_roughness_m > 0.05)
+    bad("road_roughness_m must be in [0, 0.05]");
+  if (c.verge_roughness_m < 0 || c.verge_roughness_m > 0.1)
+    bad("verge_roughness_m must be in [0, 0.1]");
   if (c.road_cell_m < 0.25 || c.road_cell_m > 10) bad("road_cell_m must be in [0.25, 10]");
   if (c.ground_cell_m < 0.5 || c.ground_cell_m > 50) bad("ground_cell_m must be in [0.5, 50]");
   if (c.ground_detail_reach_m < 0) bad("ground_detail_reach_m must be >= 0");

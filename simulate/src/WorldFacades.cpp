@@ -32,10 +32,54 @@ Polygon2 notchedFootprint(const Frame& fr, double f, double b0, double b1,
   return p;
 }
 
+/// Heights of a building's parts [m].
+struct Storeys {
+  double z, ground_h, body_top, storey;
+};
+
+/// Floor bands on some buildings, balconies in one to three columns on others (where `reach`, the
+/// free space before the body, allows).
+void facadeDetails(BuildContext& ctx, std::mt19937_64& rng, const Frame& fr, double heading,
+                   double f, double shift, const Storeys& st, double reach) {
+  if (uniform(rng, 0, 1) < 0.5) {
+    for (double h = st.ground_h + st.storey; h < st.body_top - 1.0; h += st.storey) {
+      const Vec2 c = fr.at(0, shift - 0.07);
+      ctx.mb.box(Point3(c.x(), c.y(), st.z + h - 0.15), heading, f, 0.14, 0.25,
+                 SurfaceKind::Building);
+    }
+  }
+  if (!(reach > 0.7 && uniform(rng, 0, 1) < 0.45)) return;
+  const int cols = 1 + static_cast<int>(uniform(rng, 0, 3));
+  for (int k = 0; k < cols; ++k) {
+    const double a = -f / 2 + f * (k + uniform(rng, 0.25, 0.75)) / cols;
+    const double w = std::min(f / cols - 0.4, uniform(rng, 1.8, 3.2));
+    for (double h = st.ground_h + st.storey; h < st.body_top - 2.0; h += st.storey) {
+      const Vec2 c = fr.at(a, shift - reach / 2);
+      ctx.mb.box(Point3(c.x(), c.y(), st.z + h - 0.2), heading, w, reach, 0.2,
+                 SurfaceKind::Building);
+      const Vec2 rail = fr.at(a, shift - reach + 0.04);
+      ctx.mb.box(Point3(rail.x(), rail.y(), st.z + h), heading, w, 0.08, 1.0,
+                 SurfaceKind::Building);
+    }
+  }
+}
+
+/// Set-back top volume, narrower than the body, from body_top to height.
+void topVolume(BuildContext& ctx, std::mt19937_64& rng, const Frame& fr, double f, double depth,
+               double shift, const Storeys& st, double height) {
+  const double back = uniform(rng, 1.5, std::max(1.6, depth / 3));
+  const double l = uniform(rng, 0, f / 4), r = uniform(rng, 0, f / 4);
+  const double b1 = depth - uniform(rng, 0, depth / 4);
+  if (b1 - back < 3 || f - l - r < 4) return;
+  const Frame tf{fr.at((l - r) / 2, 0), fr.u, fr.n};
+  ctx.mb.prism(notchedFootprint(tf, f - l - r, shift + back, b1, {}), st.z + st.body_top - 0.05,
+               st.z + height, SurfaceKind::Building, false);
+}
+
 }  // namespace
 
-void SidePlacer::building(const Vec2& front, double heading, double f, double depth,
-                          double height, double room_in_front) {
+void SidePlacer::building(const Vec2& front, double heading, double f, double depth, double height,
+                          double room_in_front) {
   const Frame fr{front, Vec2(std::cos(heading), std::sin(heading)),
                  Vec2(std::sin(heading), -std::cos(heading))};
   const double z = ctx_.ground_z;
@@ -56,7 +100,8 @@ void SidePlacer::building(const Vec2& front, double heading, double f, double de
   const double body_top = height - top_h;
   // body: flush, set back or overhanging the ground storey; window columns at jittered spacing
   const double shift = uniform(rng_, -std::min(0.6, room_in_front - 0.2), 0.6);
-  const double pitch = uniform(rng_, 2.3, 3.8), win = uniform(rng_, 0.9, 1.5) * std::min(1.0, pitch / 2.6);
+  const double pitch = uniform(rng_, 2.3, 3.8),
+               win = uniform(rng_, 0.9, 1.5) * std::min(1.0, pitch / 2.6);
   const double inset = uniform(rng_, 0.15, 0.35);
   std::vector<std::array<double, 3>> windows;
   for (double a = -f / 2 + uniform(rng_, 0.8, pitch); a + win / 2 < f / 2 - 0.6; a += pitch) {
@@ -66,35 +111,9 @@ void SidePlacer::building(const Vec2& front, double heading, double f, double de
   ctx_.mb.prism(notchedFootprint(fr, f, shift, depth, windows), z + ground_h, z + body_top,
                 SurfaceKind::Building, false);
   const double storey = uniform(rng_, 2.9, 3.6);
-  if (uniform(rng_, 0, 1) < 0.5) {  // floor bands
-    for (double h = ground_h + storey; h < body_top - 1.0; h += storey) {
-      const Vec2 c = fr.at(0, shift - 0.07);
-      ctx_.mb.box(Point3(c.x(), c.y(), z + h - 0.15), heading, f, 0.14, 0.25, SurfaceKind::Building);
-    }
-  }
-  const double reach = std::min(1.3, room_in_front + shift - 0.2);
-  if (reach > 0.7 && uniform(rng_, 0, 1) < 0.45) {  // balconies in one to three columns
-    const int cols = 1 + static_cast<int>(uniform(rng_, 0, 3));
-    for (int k = 0; k < cols; ++k) {
-      const double a = -f / 2 + f * (k + uniform(rng_, 0.25, 0.75)) / cols;
-      const double w = std::min(f / cols - 0.4, uniform(rng_, 1.8, 3.2));
-      for (double h = ground_h + storey; h < body_top - 2.0; h += storey) {
-        const Vec2 c = fr.at(a, shift - reach / 2);
-        ctx_.mb.box(Point3(c.x(), c.y(), z + h - 0.2), heading, w, reach, 0.2, SurfaceKind::Building);
-        const Vec2 rail = fr.at(a, shift - reach + 0.04);
-        ctx_.mb.box(Point3(rail.x(), rail.y(), z + h), heading, w, 0.08, 1.0, SurfaceKind::Building);
-      }
-    }
-  }
-  if (!top) return;
-  // set-back top volume, narrower than the body
-  const double back = uniform(rng_, 1.5, std::max(1.6, depth / 3));
-  const double l = uniform(rng_, 0, f / 4), r = uniform(rng_, 0, f / 4);
-  const double b1 = depth - uniform(rng_, 0, depth / 4);
-  if (b1 - back < 3 || f - l - r < 4) return;
-  const Frame tf{fr.at((l - r) / 2, 0), fr.u, fr.n};
-  ctx_.mb.prism(notchedFootprint(tf, f - l - r, shift + back, b1, {}), z + body_top - 0.05,
-                z + height, SurfaceKind::Building, false);
+  const Storeys st{z, ground_h, body_top, storey};
+  facadeDetails(ctx_, rng_, fr, heading, f, shift, st, std::min(1.3, room_in_front + shift - 0.2));
+  if (top) topVolume(ctx_, rng_, fr, f, depth, shift, st, height);
 }
 
 }  // namespace slamroute::simulate::detail

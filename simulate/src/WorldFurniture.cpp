@@ -26,7 +26,8 @@ void SidePlacer::lamp(double s, double height_m) {
   // the arm reaches out over the road, the lamp head hangs at its end
   const double toward_road = heading + M_PI / 2;
   const Vec2 in(std::cos(toward_road), std::sin(toward_road));
-  const double arm = 1.0 + 0.1 * static_cast<double>(ctx_.stats.poles % 5);  // ends over the pavement
+  const double arm =
+      1.0 + 0.1 * static_cast<double>(ctx_.stats.poles % 5);  // ends over the pavement
   const Vec2 a = c + in * (arm / 2), h = c + in * arm;
   ctx_.mb.box(Point3(a.x(), a.y(), ctx_.ground_z + height_m - 0.15), toward_road, arm, 0.1, 0.1,
               SurfaceKind::Pole);
@@ -53,7 +54,8 @@ bool SidePlacer::parkedCar(double s, double len) {
   const double z = ctx_.ground_z;  // the car stands at road level; its wheels reach the ground
   const Vec2 u(std::cos(heading), std::sin(heading)), v(-u.y(), u.x());
   for (int k = 0; k < 4; ++k) {
-    const Vec2 w = c + u * ((k & 1 ? 1 : -1) * (len / 2 - 0.8)) + v * ((k & 2 ? 1 : -1) * (width / 2 - 0.15));
+    const Vec2 w =
+        c + u * ((k & 1 ? 1 : -1) * (len / 2 - 0.8)) + v * ((k & 2 ? 1 : -1) * (width / 2 - 0.15));
     ctx_.mb.box(Point3(w.x(), w.y(), z - kGroundBelowRoad_m - 0.1), heading, 0.65, 0.25,
                 0.35 + kGroundBelowRoad_m + 0.1, SurfaceKind::ParkedCar);
   }
@@ -74,8 +76,8 @@ void SidePlacer::signsAndBollards(double mean_spacing_m) {
     if (uniform(rng_, 0, 1) < 0.6) {
       const auto [c, heading] = spot(s, -kerb);
       const double h = uniform(rng_, 2.2, 2.8);
-      ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z - kFoundation_m), 0.04,
-                       h + kFoundation_m, 6, SurfaceKind::Furniture);
+      ctx_.mb.cylinder(Point3(c.x(), c.y(), ctx_.ground_z - kFoundation_m), 0.04, h + kFoundation_m,
+                       6, SurfaceKind::Furniture);
       const double plate = uniform(rng_, 0.5, 0.9);
       ctx_.mb.box(Point3(c.x(), c.y(), ctx_.ground_z + h - plate), heading + M_PI / 2, plate, 0.04,
                   plate, SurfaceKind::Furniture);
@@ -122,7 +124,8 @@ void SidePlacer::fence() {
       have_prev = false;
       continue;
     }
-    ctx_.mb.box(Point3(p.x(), p.y(), z0), heading, 0.12, 0.12, h + kFoundation_m, SurfaceKind::Fence);
+    ctx_.mb.box(Point3(p.x(), p.y(), z0), heading, 0.12, 0.12, h + kFoundation_m,
+                SurfaceKind::Fence);
     ++ctx_.stats.fence_posts;
     const bool gate = uniform(rng_, 0, 1) < 0.04;
     if (have_prev && !gate) {

@@ -43,9 +43,11 @@ double Relief::swell(double x, double y) const {
 }
 
 double Relief::node(long ix, long iy) const {
-  const std::uint64_t h = splitmix(key_ ^ splitmix(static_cast<std::uint64_t>(ix) * 0x9e3779b97f4a7c15ULL +
-                                                   static_cast<std::uint64_t>(iy)));
-  return RayRandom::inverseNormalCdf((static_cast<double>(h >> 11) + 0.5) * (1.0 / 9007199254740992.0));
+  const std::uint64_t h =
+      splitmix(key_ ^ splitmix(static_cast<std::uint64_t>(ix) * 0x9e3779b97f4a7c15ULL +
+                               static_cast<std::uint64_t>(iy)));
+  return RayRandom::inverseNormalCdf((static_cast<double>(h >> 11) + 0.5) *
+                                     (1.0 / 9007199254740992.0));
 }
 
 double Relief::rough(double x, double y) const {

@@ -35,18 +35,20 @@ Resampled resample(const std::vector<Point3>& line, double step) {
 
 /// Rows of lane k at the given offsets left of its centre: z = lane z + road relief - camber.
 /// Offsets beyond the edge's borders get the camber of the border (pavements).
-std::vector<std::vector<Point3>> laneRows(const BuildContext& ctx, const SumoEdge& e,
-                                          std::size_t k, const EdgeProfile& prof,
+std::vector<std::vector<Point3>> laneRows(const BuildContext& ctx, const SumoEdge& e, std::size_t k,
+                                          const EdgeProfile& prof,
                                           const std::vector<double>& offsets) {
   const Resampled line = resample(e.lanes[k].shape, ctx.cfg.road_cell_m);
-  const double camber = ctx.cfg.road_camber_pct / 100.0, length = line.s.empty() ? 0 : line.s.back();
+  const double camber = ctx.cfg.road_camber_pct / 100.0,
+               length = line.s.empty() ? 0 : line.s.back();
   std::vector<std::vector<Point3>> rows;
   for (double o : offsets) {
     auto row = offsetPolyline(line.pts, o);
     const double r = std::clamp(prof.lane_r[k] + o, 0.0, prof.width);
     const double drop = std::min(kMaxCamberDrop_m, camber * std::abs(prof.crown_r - r));
     for (std::size_t i = 0; i < row.size(); ++i) {
-      const double taper = std::clamp(std::min(line.s[i], length - line.s[i]) / kCamberTaper_m, 0.0, 1.0);
+      const double taper =
+          std::clamp(std::min(line.s[i], length - line.s[i]) / kCamberTaper_m, 0.0, 1.0);
       row[i].z() += ctx.relief.road(row[i].x(), row[i].y()) - drop * taper;
     }
     rows.push_back(std::move(row));
@@ -54,7 +56,8 @@ std::vector<std::vector<Point3>> laneRows(const BuildContext& ctx, const SumoEdg
   return rows;
 }
 
-std::vector<double> thickness(const BuildContext& ctx, const std::vector<Point3>& line, double extra) {
+std::vector<double> thickness(const BuildContext& ctx, const std::vector<Point3>& line,
+                              double extra) {
   std::vector<double> t(line.size());
   for (std::size_t i = 0; i < line.size(); ++i)
     t[i] = std::clamp(ctx.elevation(line[i]), 0.0, ctx.cfg.deck_thickness_m) + extra;
@@ -92,7 +95,8 @@ void buildLaneSurface(BuildContext& ctx, const SumoEdge& e, std::size_t k, const
   }
   ctx.mb.grid(rows, SurfaceKind::Road);
   if (bridge)
-    ctx.mb.slabSides(rows.back(), rows.front(), thickness(ctx, rows.back(), 0.0), SurfaceKind::Deck);
+    ctx.mb.slabSides(rows.back(), rows.front(), thickness(ctx, rows.back(), 0.0),
+                     SurfaceKind::Deck);
 }
 
 void buildPavement(BuildContext& ctx, const SumoEdge& e, std::size_t k, const EdgeProfile& prof,

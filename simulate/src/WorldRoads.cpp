@@ -89,7 +89,8 @@ void buildLanes(BuildContext& ctx) {
     // pavements: right of the rightmost lane; also left of the leftmost one on one-way streets
     // (two-way streets: the opposite edge brings its own right pavement)
     const SumoLane& first = e.lanes.front();
-    if (first.shape.size() >= 2 && !pedestrianOnly(first)) sideOfEdge(ctx, e, 0, prof, -1.0, bridge);
+    if (first.shape.size() >= 2 && !pedestrianOnly(first))
+      sideOfEdge(ctx, e, 0, prof, -1.0, bridge);
     const SumoLane& last = e.lanes.back();
     if (last.shape.size() >= 2 && !two_way && !pedestrianOnly(last))
       sideOfEdge(ctx, e, e.lanes.size() - 1, prof, +1.0, bridge);
@@ -187,7 +188,8 @@ std::vector<std::pair<long, long>> groundBlocksNearLanes(const BuildContext& ctx
       for (std::size_t i = 0; i + 1 < l.shape.size(); ++i) {
         const double len = (l.shape[i + 1] - l.shape[i]).head<2>().norm();
         const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
-        for (int j = 0; j <= n; ++j) mark(l.shape[i] + (l.shape[i + 1] - l.shape[i]) * (double(j) / n));
+        for (int j = 0; j <= n; ++j)
+          mark(l.shape[i] + (l.shape[i + 1] - l.shape[i]) * (static_cast<double>(j) / n));
       }
   return {blocks.begin(), blocks.end()};
 }

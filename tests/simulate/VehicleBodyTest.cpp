@@ -1,13 +1,12 @@
 // The body on its suspension: pitch under braking and accelerating, level at constant speed,
 // roll on a cambered road.
-#include "slamroute/simulate/VehicleBody.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "WorldTestNet.hpp"
 #include "slamroute/core/Odometry.hpp"
+#include "slamroute/simulate/VehicleBody.hpp"
 
 namespace slamroute::simulate {
 namespace {
@@ -36,11 +35,13 @@ TEST(VehicleBody, NoseDivesWhenBrakingSquatsWhenAcceleratingLevelAtConstantSpeed
                    Point3(-100, 100, 0), SurfaceKind::Road);
   const World w = World::fromMesh(plane);
   const Trajectory out = vehicleSensorPoses(straightRun(0), w, VehicleBodyConfig{}, 1.8);
-  auto pitchAt = [&](int i) { return attitudeOf(out[static_cast<std::size_t>(i)].T_world_body.rotation()).pitch_rad; };
+  auto pitchAt = [&](int i) {
+    return attitudeOf(out[static_cast<std::size_t>(i)].T_world_body.rotation()).pitch_rad;
+  };
   const double deg = M_PI / 180;
   // Z-Y-X pitch > 0 is nose down; the static deflection is 0.15 deg per m/s^2
-  EXPECT_LT(pitchAt(40), -0.2 * deg);   // accelerating: nose up
-  EXPECT_GT(pitchAt(190), 0.2 * deg);   // braking: nose down
+  EXPECT_LT(pitchAt(40), -0.2 * deg);  // accelerating: nose up
+  EXPECT_GT(pitchAt(190), 0.2 * deg);  // braking: nose down
   EXPECT_NEAR(pitchAt(40), -0.3 * deg, 0.05 * deg);
   EXPECT_NEAR(pitchAt(120), 0.0, 1e-5);  // constant speed on a flat road: level
   for (const auto& p : out) EXPECT_NEAR(attitudeOf(p.T_world_body.rotation()).roll_rad, 0.0, 1e-9);
@@ -61,7 +62,8 @@ TEST(VehicleBody, RollsWithTheCamberOfTheRoad) {
   double roll = 0;
   int n = 0;
   for (std::size_t i = 60; i < 140; ++i) {
-    if (out[i].T_world_body.translation().x() < 30 || out[i].T_world_body.translation().x() > 130) continue;
+    if (out[i].T_world_body.translation().x() < 30 || out[i].T_world_body.translation().x() > 130)
+      continue;
     roll += attitudeOf(out[i].T_world_body.rotation()).roll_rad -
             attitudeOf(out0[i].T_world_body.rotation()).roll_rad;
     ++n;

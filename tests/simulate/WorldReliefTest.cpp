@@ -64,7 +64,7 @@ TEST(WorldRelief, RoadHeightVariesAlongTheLaneWithCentimetreRoughness) {
     ++n;
   }
   const double sd = std::sqrt(var / static_cast<double>(z.size())), rough_sd = std::sqrt(rough / n);
-  EXPECT_GT(sd, 0.01);   // the swell: a few cm over metres
+  EXPECT_GT(sd, 0.01);  // the swell: a few cm over metres
   EXPECT_LT(sd, 0.1);
   EXPECT_GT(rough_sd, 0.002);
   EXPECT_LT(rough_sd, 0.012);

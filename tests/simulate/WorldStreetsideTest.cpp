@@ -101,7 +101,8 @@ TEST(WorldStreetside, WallsStepInHeightAndHavePillars) {
       if (h.range_m < face - 0.2) ++pillar;
       const Point3 top = p + out * (h.range_m + 0.2);
       const RayHit down = world().castRay(Point3(top.x(), top.y(), 20.0), -Vec3::UnitZ(), 30.0);
-      if (down.hit && down.kind == SurfaceKind::Wall) heights.insert(std::lround((20.0 - down.range_m) / 0.1));
+      if (down.hit && down.kind == SurfaceKind::Wall)
+        heights.insert(std::lround((20.0 - down.range_m) / 0.1));
     });
   ASSERT_GT(wall, 100u);
   EXPECT_GT(pillar, wall / 50);

@@ -14,7 +14,7 @@ struct VehicleBodyConfig {
   double roll_hz = 1.2;                 ///< ... roll [Hz]
   double heave_hz = 1.3;                ///< ... heave [Hz]
   double damping_ratio = 0.4;           ///< of each axis (1 = critically damped)
-  double pitch_deg_per_mps2 = 0.15;     ///< nose dive per m/s^2 of braking (squat when accelerating) [deg]
+  double pitch_deg_per_mps2 = 0.15;     ///< nose dive per m/s^2 of braking (squat: accelerating) [deg]
   double roll_deg_per_mps2 = 0.35;      ///< outward roll per m/s^2 of cornering [deg]
 };
 

@@ -79,7 +79,7 @@ void visitFields(V& v, WorldConfig& c) {
   v.field("undulation_m", c.undulation_m, "metres-long swell of road and ground, 1 sigma [m]");
   v.field("undulation_wavelength_m", c.undulation_wavelength_m, "typical swell wavelength [m]");
   v.field("road_roughness_m", c.road_roughness_m, "road / pavement roughness, 1 sigma [m]");
-  v.field("verge_roughness_m", c.verge_roughness_m, "roughness of the ground beside roads, 1 sigma [m]");
+  v.field("verge_roughness_m", c.verge_roughness_m, "ground roughness beside roads, 1 sigma [m]");
   v.field("road_cell_m", c.road_cell_m, "road mesh spacing [m]");
   v.field("ground_cell_m", c.ground_cell_m, "rough-ground mesh spacing [m]");
   v.field("ground_detail_reach_m", c.ground_detail_reach_m, "rough ground this far from lanes [m]");
