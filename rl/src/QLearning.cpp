@@ -125,9 +125,7 @@ struct FastEif {
   explicit FastEif(const EifConfig& cfg) {
     const PoseEif ref(cfg);
     S0 = ref.info().inverse();
-    const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
-    const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
-    R_lc = Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+    R_lc = closureNoise(cfg);
     S = S0;
   }
   void reset() { S = S0; }
