@@ -21,6 +21,12 @@ void Context::load() {
     config::loadYaml(root, cfg, config_file);
   }
   if (seed) cfg.seed = *seed;
+  try {
+    cfg.rl.coverage.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error((config_file.empty() ? std::string("config") : config_file) + ": " +
+                             e.what());
+  }
 }
 
 std::string defaultNetPath() {
