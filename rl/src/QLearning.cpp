@@ -225,7 +225,9 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
   for (int ep = 0; ep < qc.episodes; ++ep) {
     const double eps = qc.epsilon_start + (qc.epsilon_end - qc.epsilon_start) *
                                               std::min(1.0, static_cast<double>(ep) / decay_eps);
-    const int from = qc.spread_starts && ep % 2 == 1 ? static_cast<int>(rng() % static_cast<std::uint64_t>(pg.n)) : start;
+    const int from = qc.spread_starts && ep % 2 == 1
+                         ? static_cast<int>(rng() % static_cast<std::uint64_t>(pg.n))
+                         : start;
     cov.reset(from);
     eif.reset();
     node_cov[sz(from)] = eif.S;
