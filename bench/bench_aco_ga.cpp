@@ -67,8 +67,10 @@ Row runPlanner(const RoadGraph& g, const char* planner, double threshold, int se
 }
 
 void tables(const std::vector<Env>& envs, int seeds) {
-  std::printf("| env | method | l_total [m] | condition satisfied | T_cycle [s] | n(N) legs | "
-              "n(N_loop) revisits | C_average [m^2] | C_max [m^2] |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| env | method | l_total [m] | condition satisfied | T_cycle [s] | n(N) legs | "
+      "n(N_loop) revisits | C_average [m^2] | C_max [m^2] "
+      "|\n|---|---|---|---|---|---|---|---|---|\n");
   for (const Env& env : envs) {
     const RoadGraph g = rl::gridCity(env.spec);
     for (const char* p : kPlanners) {
@@ -91,20 +93,21 @@ void largeGrid() {
   s.weight_min = 0.2;
   s.seed = 1;
   const RoadGraph g = rl::gridCity(s);
-  std::printf("\n| planner | nodes | directed edges | planning [s] | distances [s] | ACO [s] | length [km] "
-              "| postman lower bound [km] |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\n| planner | nodes | directed edges | planning [s] | distances [s] | ACO [s] | length [km] "
+      "| postman lower bound [km] |\n|---|---|---|---|---|---|---|---|\n");
   for (const char* p : {"open-loop", "aco-ga"}) {
     rl::Config cfg;
     cfg.planner = p;
     const auto t0 = std::chrono::steady_clock::now();
     const Route r = rl::plan(g, cfg, 1, "grid");
-    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto x = nlohmann::json::parse(r.extra_json);
     std::printf("| %s | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f |\n", p,
                 x["plan_graph"]["nodes"].get<int>(), x["plan_graph"]["edges"].get<int>(), secs,
                 x["seconds"]["distances"].get<double>(), x["seconds"]["aco"].get<double>(),
-                r.length_m / 1000.0,
-                rl::turnFreePostmanLength(rl::PlanGraph::build(g)) / 1000.0);
+                r.length_m / 1000.0, rl::turnFreePostmanLength(rl::PlanGraph::build(g)) / 1000.0);
   }
 }
 
@@ -125,7 +128,9 @@ int main(int argc, char** argv) {
   b.rows = 4;
   b.cols = 5;
   b.spacing_m = 50.0;
-  tables({{"A, C_th 15", a, 15.0}, {"A, C_th 20", a, 20.0}, {"B, C_th 5", b, 5.0},
+  tables({{"A, C_th 15", a, 15.0},
+          {"A, C_th 20", a, 20.0},
+          {"B, C_th 5", b, 5.0},
           {"B, C_th 10", b, 10.0}},
          seeds);
   if (large) largeGrid();

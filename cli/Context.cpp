@@ -24,6 +24,12 @@ void Context::load() {
   setLogLevel(parseLogLevel(log_level));
   if (!config_file.empty()) loadConfigFile(config_file, cfg);
   if (seed) cfg.seed = *seed;
+  try {
+    cfg.rl.coverage.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error((config_file.empty() ? std::string("config") : config_file) + ": " +
+                             e.what());
+  }
 }
 
 std::string defaultNetPath() {

@@ -38,7 +38,9 @@ Candidates buildCandidates(const EdgeDistances& d, const AntColonyConfig& cfg) {
   for (int r = 0; r <= m; ++r) {
     const int from = r < m ? r : -1;
     std::iota(order.begin(), order.end(), 0);
-    auto closer = [&](int a, int b) { return d.d(from, a) < d.d(from, b) || (d.d(from, a) == d.d(from, b) && a < b); };
+    auto closer = [&](int a, int b) {
+      return d.d(from, a) < d.d(from, b) || (d.d(from, a) == d.d(from, b) && a < b);
+    };
     std::partial_sort(order.begin(), order.begin() + c.k, order.end(), closer);
     int n = 0;
     for (int i = 0; i < c.k; ++i) {
@@ -94,9 +96,9 @@ class Ant {
     scores_.clear();
     for (int i = 0; i < c.k; ++i) {
       const int s = c.city[c.at(r) + sz(i)];
-      const double sc = s >= 0 && !visited_[sz(s)] ? std::pow(c.tau[c.at(r) + sz(i)], cfg_.alpha) *
-                                                          c.heur[c.at(r) + sz(i)]
-                                                    : 0.0;
+      const double sc = s >= 0 && !visited_[sz(s)]
+                            ? std::pow(c.tau[c.at(r) + sz(i)], cfg_.alpha) * c.heur[c.at(r) + sz(i)]
+                            : 0.0;
       scores_.push_back(sc);
       total += sc;
       if (sc > best) best = sc, slot = sc > 0.0 ? i : -1;
@@ -122,7 +124,8 @@ class Ant {
     int best = -1;
     float best_d = std::numeric_limits<float>::infinity();
     for (int s : unvisited_)
-      if (d_.d(from, s) < best_d || (d_.d(from, s) == best_d && s < best)) best_d = d_.d(from, s), best = s;
+      if (d_.d(from, s) < best_d || (d_.d(from, s) == best_d && s < best))
+        best_d = d_.d(from, s), best = s;
     return best >= 0 ? best : unvisited_.front();
   }
 

@@ -12,10 +12,10 @@
 namespace slamroute::rl::detail {
 
 struct AntTour {
-  std::vector<int> cities;        ///< every directed edge once, in visiting order
-  double cost_m = 0.0;            ///< sum of leg distances (plus the return when closed) [m]
+  std::vector<int> cities;           ///< every directed edge once, in visiting order
+  double cost_m = 0.0;               ///< sum of leg distances (plus the return when closed) [m]
   double nearest_neighbour_m = 0.0;  ///< the greedy tour ACS starts its pheromone from [m]
-  int improved_at_iteration = 0;  ///< iteration of the last improvement of the best tour
+  int improved_at_iteration = 0;     ///< iteration of the last improvement of the best tour
 };
 
 /// ACS (state transition rule with exploitation q0, local and global pheromone updates) with

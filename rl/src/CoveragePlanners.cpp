@@ -32,7 +32,8 @@ detail::WalkResult runBaseline(const std::string& planner, const detail::Coverag
     return detail::walkCoverage(p, [&p](const detail::WalkState& s, const UncertaintyTracker& t) {
       return s.last ? -1 : detail::nearestRevisit(p, t, s.cur, s.after);
     });
-  return detail::walkCoverage(p, [](const detail::WalkState&, const UncertaintyTracker&) { return -1; });
+  return detail::walkCoverage(
+      p, [](const detail::WalkState&, const UncertaintyTracker&) { return -1; });
 }
 
 }  // namespace
@@ -51,8 +52,10 @@ void CoverageConfig::validate() const {
   require(aco.max_edges >= 1, "aco.max_edges", "must be >= 1");
   require(ga.chromosomes >= 2, "ga.chromosomes", "must be >= 2");
   require(ga.generations >= 0, "ga.generations", "must be >= 0");
-  require(ga.crossover_rate >= 0.0 && ga.crossover_rate <= 1.0, "ga.crossover_rate", "must be in [0, 1]");
-  require(ga.mutation_rate >= 0.0 && ga.mutation_rate <= 1.0, "ga.mutation_rate", "must be in [0, 1]");
+  require(ga.crossover_rate >= 0.0 && ga.crossover_rate <= 1.0, "ga.crossover_rate",
+          "must be in [0, 1]");
+  require(ga.mutation_rate >= 0.0 && ga.mutation_rate <= 1.0, "ga.mutation_rate",
+          "must be in [0, 1]");
   require(ga.elite >= 0 && ga.elite < ga.chromosomes, "ga.elite", "must be in [0, chromosomes)");
   require(ga.shift_legs >= 1, "ga.shift_legs", "must be >= 1");
   require(ga.stall_generations >= 1, "ga.stall_generations", "must be >= 1");
@@ -77,15 +80,22 @@ PlanOutput planCoverage(const PlanGraph& pg, const TurnPaths& paths, const Confi
   const double dist_s = secondsSince(t0);
   const detail::AntTour tour = detail::antColonyTour(dist, cc.aco, seed);
   const double aco_s = secondsSince(t0) - dist_s;
-  const detail::CoverageProblem prob{pg,      dist,         tour.cities, start,
-                                     cc.aco.closed, cfg.eif, edgeMotions(pg, cfg.eif),
-                                     cc.c_threshold_m2, cc.place_max_fraction * cc.c_threshold_m2};
+  const detail::CoverageProblem prob{pg,
+                                     dist,
+                                     tour.cities,
+                                     start,
+                                     cc.aco.closed,
+                                     cfg.eif,
+                                     edgeMotions(pg, cfg.eif),
+                                     cc.c_threshold_m2,
+                                     cc.place_max_fraction * cc.c_threshold_m2};
   std::vector<int> considered;
   detail::WalkResult walk = runBaseline(cfg.planner, prob, considered);
   nlohmann::json ga = nullptr;
   if (cfg.planner == "aco-ga") {
     const double sw_length = walk.length_m;
-    const detail::GeneticResult g = detail::geneticRevisits(prob, considered, walk, cc.ga, seed + 1);
+    const detail::GeneticResult g =
+        detail::geneticRevisits(prob, considered, walk, cc.ga, seed + 1);
     walk = g.best;
     ga = {{"generations", g.generations_run},
           {"evaluations", g.evaluations},
@@ -96,16 +106,17 @@ PlanOutput planCoverage(const PlanGraph& pg, const TurnPaths& paths, const Confi
   out.edges = walk.edges;
   out.heuristic = true;
   out.extra_json =
-      nlohmann::json{{"coverage_legs", walk.reached.size()},
-                     {"loop_closure_revisits", walk.revisit_after.size()},
-                     {"revisit_length_m", walk.revisit_length_m},
-                     {"aco",
-                      {{"tour_cost_m", tour.cost_m},
-                       {"nearest_neighbour_m", tour.nearest_neighbour_m},
-                       {"improved_at_iteration", tour.improved_at_iteration},
-                       {"cities", tour.cities.size()}}},
-                     {"ga", ga},
-                     {"seconds", {{"distances", dist_s}, {"aco", aco_s}, {"total", secondsSince(t0)}}}}
+      nlohmann::json{
+          {"coverage_legs", walk.reached.size()},
+          {"loop_closure_revisits", walk.revisit_after.size()},
+          {"revisit_length_m", walk.revisit_length_m},
+          {"aco",
+           {{"tour_cost_m", tour.cost_m},
+            {"nearest_neighbour_m", tour.nearest_neighbour_m},
+            {"improved_at_iteration", tour.improved_at_iteration},
+            {"cities", tour.cities.size()}}},
+          {"ga", ga},
+          {"seconds", {{"distances", dist_s}, {"aco", aco_s}, {"total", secondsSince(t0)}}}}
           .dump();
   return out;
 }

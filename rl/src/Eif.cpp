@@ -26,13 +26,17 @@ EdgeMotion edgeMotion(const EifConfig& cfg, double length_m, double heading_rad,
   return mo;
 }
 
+Eigen::Matrix3d closureNoise(const EifConfig& cfg) {
+  const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
+  const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
+  return Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+}
+
 PoseEif::PoseEif(const EifConfig& cfg) {
   const double sxy = std::max(cfg.init_sigma_xy_m, 1e-6);
   const double sh = std::max(cfg.init_sigma_heading_rad, 1e-9);
   L0_ = Eigen::Vector3d(1.0 / (sxy * sxy), 1.0 / (sxy * sxy), 1.0 / (sh * sh)).asDiagonal();
-  const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
-  const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
-  R_lc_ = Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+  R_lc_ = closureNoise(cfg);
   L_ = L0_;
 }
 

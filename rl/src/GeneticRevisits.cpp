@@ -86,7 +86,8 @@ void mutate(Chromosome& c, int shift, std::mt19937_64& rng) {
     c[sz(std::uniform_int_distribution<int>(0, n - 1)(rng))] = 1;
     return;
   }
-  const int i = set[sz(std::uniform_int_distribution<int>(0, static_cast<int>(set.size()) - 1)(rng))];
+  const int i =
+      set[sz(std::uniform_int_distribution<int>(0, static_cast<int>(set.size()) - 1)(rng))];
   c[sz(i)] = 0;
   if (r >= 0.5) return;  // drop
   int d = std::uniform_int_distribution<int>(1, std::max(1, shift))(rng);
@@ -133,7 +134,8 @@ GeneticResult geneticRevisits(const CoverageProblem& p, const std::vector<int>& 
   GeneticResult res;
   res.seed_length_m = switching.length_m;
   for (int g = 1; g <= cfg.generations; ++g) {
-    std::vector<Individual> next(pop.begin(), pop.begin() + std::min<int>(cfg.elite, static_cast<int>(pop.size())));
+    std::vector<Individual> next(
+        pop.begin(), pop.begin() + std::min<int>(cfg.elite, static_cast<int>(pop.size())));
     while (static_cast<int>(next.size()) < cfg.chromosomes) {
       const Individual& a = tournament(pop, rng);
       const Individual& b = tournament(pop, rng);

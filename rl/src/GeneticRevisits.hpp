@@ -2,9 +2,9 @@
 // Private helper: the lower level of `aco-ga` (paper §3.2.2). A chromosome holds one bit per
 // coverage leg of the ACO tour: 1 = drive a loop-closure revisit after that leg (to the place
 // the switching walk considered there). Fitness: routes that keep C_k <= C_threshold all along
-// come first, by total length; the others by length plus a penalty on how far they exceed it. The first
-// chromosomes are the switching schedule and the exhaustive one (the paper's N1 and N2), so the
-// result is never longer than switching when switching keeps the bound.
+// come first, by total length; the others by length plus a penalty on how far they exceed it. The
+// first chromosomes are the switching schedule and the exhaustive one (the paper's N1 and N2), so
+// the result is never longer than switching when switching keeps the bound.
 #include <cstdint>
 #include <vector>
 

@@ -125,9 +125,7 @@ struct FastEif {
   explicit FastEif(const EifConfig& cfg) {
     const PoseEif ref(cfg);
     S0 = ref.info().inverse();
-    const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
-    const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
-    R_lc = Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+    R_lc = closureNoise(cfg);
     S = S0;
   }
   void reset() { S = S0; }
@@ -227,7 +225,9 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
   for (int ep = 0; ep < qc.episodes; ++ep) {
     const double eps = qc.epsilon_start + (qc.epsilon_end - qc.epsilon_start) *
                                               std::min(1.0, static_cast<double>(ep) / decay_eps);
-    const int from = qc.spread_starts && ep % 2 == 1 ? static_cast<int>(rng() % static_cast<std::uint64_t>(pg.n)) : start;
+    const int from = qc.spread_starts && ep % 2 == 1
+                         ? static_cast<int>(rng() % static_cast<std::uint64_t>(pg.n))
+                         : start;
     cov.reset(from);
     eif.reset();
     node_cov[sz(from)] = eif.S;

@@ -32,7 +32,8 @@ class Walker {
   }
   int nextUncovered(int j) {
     const auto& cities = p_.cities;
-    while (next_ < static_cast<int>(cities.size()) && (next_ <= j || covered_[sz(cities[sz(next_)])]))
+    while (next_ < static_cast<int>(cities.size()) &&
+           (next_ <= j || covered_[sz(cities[sz(next_)])]))
       ++next_;
     return next_ < static_cast<int>(cities.size()) ? cities[sz(next_)] : -1;
   }
@@ -118,7 +119,8 @@ double lookahead(const CoverageProblem& p, const UncertaintyTracker& t, const Wa
     from = revisit;
   }
   mx = std::max(mx, simulateLeg(p, ahead, from, s.after, buf));
-  if (!s.last) mx = std::max(mx, simulateLeg(p, ahead, s.after, nearestRevisit(p, ahead, s.after, -1), buf));
+  if (!s.last)
+    mx = std::max(mx, simulateLeg(p, ahead, s.after, nearestRevisit(p, ahead, s.after, -1), buf));
   return mx;
 }
 

@@ -29,9 +29,9 @@ struct CoverageProblem {
 
 struct WalkResult {
   std::vector<int> edges;
-  std::vector<double> c_m2;       ///< C_k after each edge
-  std::vector<int> reached;       ///< city indices reached by a coverage leg, in order
-  std::vector<int> revisit_after; ///< city indices after which a revisit was driven
+  std::vector<double> c_m2;        ///< C_k after each edge
+  std::vector<int> reached;        ///< city indices reached by a coverage leg, in order
+  std::vector<int> revisit_after;  ///< city indices after which a revisit was driven
   double length_m = 0.0, revisit_length_m = 0.0;
   double max_c_m2 = 0.0, excess_m2 = 0.0;  ///< excess: sum over steps of max(0, C_k - bound)
   bool feasible() const { return excess_m2 <= 0.0; }
@@ -50,8 +50,8 @@ using RevisitPolicy = std::function<int(const WalkState& s, const UncertaintyTra
 WalkResult walkCoverage(const CoverageProblem& p, const RevisitPolicy& policy);
 
 /// Nearest loop-closure revisit from `cur` before heading to `after` (-1: nowhere): the edge f
-/// into a mapped node w != v(cur) with stored C_k <= place_max_c_m2 and below the current C_k, and a loop (at least
-/// eif.loop_min_travel_m driven since the last visit of w on arrival), minimising
+/// into a mapped node w != v(cur) with stored C_k <= place_max_c_m2 and below the current C_k, and
+/// a loop (at least eif.loop_min_travel_m driven since the last visit of w on arrival), minimising
 /// d(cur, f) + d(f, after). -1 when there is none.
 int nearestRevisit(const CoverageProblem& p, const UncertaintyTracker& t, int cur, int after);
 

@@ -29,9 +29,7 @@ UncertaintyTracker::UncertaintyTracker(const PlanGraph& pg, const EifConfig& cfg
     : pg_(&pg), cfg_(&cfg), motions_(std::move(motions)) {
   if (!motions_) motions_ = edgeMotions(pg, cfg);
   cov_ = PoseEif(cfg).info().inverse();
-  const double cxy = std::max(cfg.closure_sigma_xy_m, 1e-6);
-  const double ch = std::max(cfg.closure_sigma_heading_rad, 1e-9);
-  r_lc_ = Eigen::Vector3d(cxy * cxy, cxy * cxy, ch * ch).asDiagonal();
+  r_lc_ = closureNoise(cfg);
   node_cov_.resize(sz(pg.n));
   place_c_.assign(sz(pg.n), std::numeric_limits<double>::infinity());
   last_visit_m_.assign(sz(pg.n), 0.0);

@@ -13,16 +13,16 @@ namespace slamroute::rl {
 
 /// Upper level: Ant Colony System tour over every directed street (asymmetric, legal turns).
 struct AntColonyConfig {
-  int ants = 10;                ///< ants per iteration
-  int iterations = 60;          ///< colony iterations
-  double alpha = 1.0;           ///< pheromone exponent (paper's alpha)
-  double beta = 2.0;            ///< heuristic exponent on 1 / legal distance (paper's beta)
-  double rho = 0.1;             ///< global evaporation rate (paper's rho)
-  double xi = 0.1;              ///< local (per step) evaporation rate of the ACS local rule
-  double q0 = 0.9;              ///< probability of taking the best next street (ACS exploitation)
-  int candidates = 16;          ///< candidate list: nearest streets considered first
-  int max_edges = 6000;         ///< refuse larger graphs (two m x m matrices of 4 bytes)
-  bool closed = true;           ///< the tour returns to the start node
+  int ants = 10;         ///< ants per iteration
+  int iterations = 60;   ///< colony iterations
+  double alpha = 1.0;    ///< pheromone exponent (paper's alpha)
+  double beta = 2.0;     ///< heuristic exponent on 1 / legal distance (paper's beta)
+  double rho = 0.1;      ///< global evaporation rate (paper's rho)
+  double xi = 0.1;       ///< local (per step) evaporation rate of the ACS local rule
+  double q0 = 0.9;       ///< probability of taking the best next street (ACS exploitation)
+  int candidates = 16;   ///< candidate list: nearest streets considered first
+  int max_edges = 6000;  ///< refuse larger graphs (two m x m matrices of 4 bytes)
+  bool closed = true;    ///< the tour returns to the start node
 };
 
 template <class V>

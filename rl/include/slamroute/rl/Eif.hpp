@@ -29,6 +29,9 @@ struct EdgeMotion {
   Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
 };
 
+/// Loop-closure registration noise R_lc (covariance of x, y, heading).
+Eigen::Matrix3d closureNoise(const EifConfig& cfg);
+
 /// d: length driven [m], heading [rad], weight in [0,1].
 EdgeMotion edgeMotion(const EifConfig& cfg, double length_m, double heading_rad, double weight);
 
