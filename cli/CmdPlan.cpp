@@ -14,6 +14,7 @@
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/export/ExportRoute.hpp"
 #include "slamroute/rl/Planners.hpp"
 
 namespace slamroute::cli {
@@ -28,7 +29,8 @@ int nodeOfJunction(const RoadGraph& g, const std::string& junction) {
 }
 
 /// OUT and, when the route has SUMO edges, OUT.rou.xml, replaced together: an older OUT.rou.xml
-/// never stays beside a route it does not belong to. Returns the .rou.xml written (or empty).
+/// (or crew files) never stays beside a route it does not belong to. Returns the .rou.xml written
+/// (or empty).
 std::filesystem::path writeRouteFiles(const Route& r, const std::filesystem::path& out) {
   std::filesystem::path rou = out;
   rou.replace_extension(".rou.xml");
@@ -36,6 +38,7 @@ std::filesystem::path writeRouteFiles(const Route& r, const std::filesystem::pat
   r.writeJson(files.staged(out));
   if (r.sumo_edges.empty()) {
     files.dropAtCommit(rou);
+    for (const auto& crew : exports::crewFilePaths(out)) files.dropAtCommit(crew);
     rou.clear();
   } else {
     r.writeRouXml(files.staged(rou));

@@ -27,6 +27,11 @@ fs::path besideRoute(const fs::path& route_json, const std::string& suffix) {
   return p.replace_filename(route_json.stem().string() + suffix);
 }
 
+std::vector<fs::path> crewFilePaths(const fs::path& route_json) {
+  return {besideRoute(route_json, "_instructions.md"), besideRoute(route_json, "_instructions.csv"),
+          besideRoute(route_json, ".gpx"), besideRoute(route_json, ".kml")};
+}
+
 RouteExportResult exportRoute(const SumoNet& net, const Route& route, const fs::path& route_json,
                               const RouteExportOptions& opt) {
   if (route.sumo_edges.empty())

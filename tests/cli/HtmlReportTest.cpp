@@ -66,7 +66,7 @@ void expectPageDrawn(const Browser& b, const std::string& route_features, std::s
 TEST(HtmlReport, RunWritesAPageThatChromiumDrawsOffline) {
   if (!haveChromium()) GTEST_SKIP() << "chromium not installed (scripts/setup.sh installs it)";
   const fs::path dir = cliTempDir("html");
-  std::ofstream(dir / "fast.yaml") << "evaluate:\n  scan_stride: 5\n";
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\n";
   const std::string net = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml";
   const auto r =
       runCli("--config " + (dir / "fast.yaml").string() + " run --net " + net + " --out " +

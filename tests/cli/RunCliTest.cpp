@@ -54,7 +54,7 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
   const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
                           std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
-                          (dir / "out").string() + " --status-every 0.2";
+                          (dir / "out").string() + " --status-every 0.2 --planners qlearning,random,postman";
   const auto r = test::runCli(cmd);
   ASSERT_EQ(r.code, 0) << r.out;
   // While steps run, their progress is quoted from their logs now and then (here every 0.2 s):

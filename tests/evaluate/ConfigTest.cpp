@@ -48,7 +48,7 @@ TEST(EvaluateConfig, EveryFlatKeyOfEarlierFilesIsMapped) {
 }
 
 TEST(EvaluateConfig, ValuesThatCannotWorkAreRefusedByName) {
-  EXPECT_EQ(loadError("input: {scan_stride: 0}\n"), "input.scan_stride: 0 must be in 1..100");
+  EXPECT_EQ(loadError("input: {scan_stride: 0}\n"), "f.yaml: input.scan_stride: 0 must be in 1..100");
   EXPECT_NE(loadError("metrics: {plot_size_px: 200000}\n").find("metrics.plot_size_px"), std::string::npos);
   EXPECT_NE(loadError("metrics: {assoc_max_dt_s: -1}\n").find("assoc_max_dt_s"), std::string::npos);
   EXPECT_NE(loadError("metrics: {map_accuracy_max_m: 0}\n").find("map_accuracy_max_m"), std::string::npos);

@@ -35,5 +35,8 @@ RouteExportResult exportRoute(const SumoNet& net, const Route& route,
 /// -> "x/qlearning_instructions.md").
 std::filesystem::path besideRoute(const std::filesystem::path& route_json,
                                   const std::string& suffix);
+/// Every crew file exportRoute may write beside `route_json` (instructions, GPX, KML), so that a
+/// route replaced by one without them does not keep an older route's files beside it.
+std::vector<std::filesystem::path> crewFilePaths(const std::filesystem::path& route_json);
 
 }  // namespace slamroute::exports
