@@ -323,7 +323,10 @@ void LidarSlam::setInitialMotion(const Pose3& T_first_second, double dt_s) {
 FrameStatus LidarSlam::addScan(const Scan& scan) { return impl_->addScan(scan); }
 FrameStatus LidarSlam::addMissing(double t) { return impl_->addUnusable(t, FrameStatus::Missing); }
 Pose3 LidarSlam::currentPose() const { return impl_->motion.lastPose(); }
-void LidarSlam::setOdometry(WheelOdometry odometry) { impl_->motion.setOdometry(std::move(odometry)); }
+void LidarSlam::setOdometry(WheelOdometry odometry) {
+  impl_->loop_closer.setPlaceSearch(odometry.empty());
+  impl_->motion.setOdometry(std::move(odometry));
+}
 double LidarSlam::turnRateDegPerS() const { return impl_->motion.turnRateDegPerS(); }
 bool LidarSlam::wantsEveryScan() const {
   const Impl& s = *impl_;

@@ -13,7 +13,7 @@
 namespace slamroute::evaluate::slam {
 
 void LoopCloser::addPlace(const KeyframeGraph& graph, const Cloud& segmented_body) {
-  if (!cfg_.loop.enabled || !cfg_.loop.place_recognition) return;
+  if (!cfg_.loop.enabled || !cfg_.loop.place_recognition || !place_search_) return;
   newest_ = makePlaceDescriptor(segmented_body, sensor_height_m_, cfg_.loop.place);
   newest_kf_ = static_cast<int>(graph.size()) - 1;
   places_.add(newest_kf_, newest_, graph.back().T_world.translation());
@@ -23,7 +23,7 @@ bool LoopCloser::tryClose(KeyframeGraph& graph, StageTimes& times) {
   const double t = graph.back().t;
   if (t - last_loop_t_ < cfg_.loop.cooldown_s || t - last_attempt_t_ < 1.0) return false;
   std::optional<LoopCandidate> c = nearbyCandidate(graph);          // the estimate: same place
-  if (!c && cfg_.loop.place_recognition) c = placeCandidate(graph);  // the descriptor: same place
+  if (!c && cfg_.loop.place_recognition && place_search_) c = placeCandidate(graph);  // the descriptor
   if (!c) return false;
   last_attempt_t_ = t;
   ++stats_.candidates;

@@ -35,6 +35,10 @@ class LoopCloser {
   /// `sensor_height_m`: the LiDAR above the road (the place descriptor counts heights from it).
   LoopCloser(const Config& cfg, double sensor_height_m)
       : cfg_(cfg), sensor_height_m_(sensor_height_m), places_(cfg.loop.place) {}
+  /// Whether descriptor candidates are sought (LiDAR-only runs: with wheel odometry + gyro the
+  /// estimate stays within loop.radius_m of a revisit, and a descriptor match farther away is a
+  /// look-alike place).
+  void setPlaceSearch(bool on) { place_search_ = on; }
   /// Describes the newest keyframe's place from its segmented cloud (body frame).
   void addPlace(const KeyframeGraph& graph, const Cloud& segmented_body);
   /// Tries to close a loop from the newest keyframe; true when a closure was added (the graph
@@ -57,6 +61,7 @@ class LoopCloser {
   PlaceDatabase places_;
   PlaceDescriptor newest_;  ///< the newest described keyframe's descriptor
   int newest_kf_ = -1;      ///< ... and its index
+  bool place_search_ = true;
   LoopStats stats_;
   double last_loop_t_ = -1e18, last_attempt_t_ = -1e18;
 };

@@ -169,8 +169,9 @@ struct LoopConfig {
   double graph_odom_sigma_rad = 0.005;  ///< pose-graph odometry edge sigma (rotation) [rad]
   double graph_loop_sigma_m = 0.1;      ///< loop edge sigma (translation) [m]
   double graph_loop_sigma_rad = 0.01;   ///< loop edge sigma (rotation) [rad]
-  /// When no old keyframe lies within radius_m of the estimate (the drift since the last closure
-  /// may be larger), a keyframe whose place descriptor matches is a candidate too, within a gate
+  /// LiDAR-only runs (no wheel odometry): when no old keyframe lies within radius_m of the
+  /// estimate (the drift since the last closure may be larger), a keyframe whose place
+  /// descriptor matches is a candidate too, within a gate
   /// of radius_m + place_gate_per_m x the path since the last closure (at most place_gate_max_m):
   /// ICP starts at that keyframe turned by the descriptor's yaw, and the correction it finds must
   /// stay inside the gate (the odometry cannot have drifted further).
@@ -347,7 +348,7 @@ void visitFields(V& v, LoopConfig& c) {
   v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");
   v.field("graph_loop_sigma_rad", c.graph_loop_sigma_rad, "loop edge sigma [rad]");
   v.field("place_recognition", c.place_recognition,
-          "candidates by place descriptor when none is near the estimate");
+          "LiDAR-only: candidates by place descriptor when none is near the estimate");
   v.field("place_gate_per_m", c.place_gate_per_m, "descriptor candidates within radius_m + this x path since the last closure [m/m]");
   v.field("place_gate_max_m", c.place_gate_max_m, "... at most this far [m]");
   v.field("place_max_yaw_change_deg", c.place_max_yaw_change_deg, "ICP may turn the descriptor's yaw at most [deg]");
