@@ -87,7 +87,8 @@ struct LidarSlam::Impl {
 
   FrameStatus addScan(const Scan& raw) {
     const double t_all = cpuNow();
-    const Scan scan = deskew(raw);                                                 // 0. motion compensation
+    const std::optional<Scan> fixed = deskew(raw);                                 // 0. motion compensation
+    const Scan& scan = fixed ? *fixed : raw;
     const slam::PreparedScan p = slam::prepareScan(scan, spec, cfg, times);         // 1-2. image, features
     FrameStatus s = p.status;
     if (s != FrameStatus::Ok) s = addUnusable(scan.t, s);
@@ -127,8 +128,9 @@ struct LidarSlam::Impl {
     return m.status;
   }
 
-  Scan deskew(const Scan& raw) const {
-    if (!cfg.features.deskew || !raw.has_point_times) return raw;
+  /// The deskewed scan, or nothing when the scan is used as it is (no copy on the hot path).
+  std::optional<Scan> deskew(const Scan& raw) const {
+    if (!cfg.features.deskew || !raw.has_point_times) return std::nullopt;
     constexpr double kSweepS = 0.1;
     return slam::deskewed(raw, motion.motionOver(raw.t, kSweepS), kSweepS);
   }

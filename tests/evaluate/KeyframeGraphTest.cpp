@@ -1,6 +1,8 @@
 // The keyframe graph and the loop closer of the SLAM (evaluate/src/slam/) on known geometry.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "SyntheticScene.hpp"
 #include "slam/KeyframeGraph.hpp"
 #include "slam/LoopCloser.hpp"
@@ -85,13 +87,16 @@ TEST_P(PlaceSearch, ThePlaceDescriptorFindsARevisitTheEstimateHasDriftedAwayFrom
   slam::KeyframeGraph g(cfg);
   slam::LoopCloser closer(cfg, 1.8);
   StageTimes times;
+  // Out along the street and back; the last keyframe is 15 m off: no keyframe within 7 m of it.
   const double xs[] = {0, 10, 20, 30, 0};
-  for (int k = 0; k < 5; ++k) {
-    const Cloud c = cloudOf(test::scanScene(scene, at(xs[k], 0), spec));
-    g.add(20.0 * k, k, k == 4 ? at(0, 15) : at(xs[k], 0), c, c, c);  // 15 m off: no keyframe within 7 m
-    closer.addPlace(g, c);
-    EXPECT_EQ(closer.tryClose(g, times), k == 4) << "keyframe " << k;
-  }
+  std::vector<Cloud> clouds;
+  for (double x : xs) clouds.push_back(cloudOf(test::scanScene(scene, at(x, 0), spec)));
+  const auto revisit = [&](slam::KeyframeGraph& graph, slam::LoopCloser& lc, int k) {
+    graph.add(20.0 * k, k, k == 4 ? at(0, 15) : at(xs[k], 0), clouds[k], clouds[k], clouds[k]);
+    lc.addPlace(graph, clouds[k]);
+    return lc.tryClose(graph, times);
+  };
+  for (int k = 0; k < 5; ++k) EXPECT_EQ(revisit(g, closer, k), k == 4) << "keyframe " << k;
   ASSERT_EQ(closer.stats().loops.size(), 1u);
   EXPECT_TRUE(closer.stats().loops.front().by_place);
   EXPECT_NEAR(closer.stats().loops.front().correction_m, 15.0, 0.2);
@@ -102,12 +107,7 @@ TEST_P(PlaceSearch, ThePlaceDescriptorFindsARevisitTheEstimateHasDriftedAwayFrom
   slam::KeyframeGraph g2(cfg);
   slam::LoopCloser blind(cfg, 1.8);
   blind.setPlaceSearch(!with_odometry);
-  for (int k = 0; k < 5; ++k) {
-    const Cloud c = cloudOf(test::scanScene(scene, at(xs[k], 0), spec));
-    g2.add(20.0 * k, k, k == 4 ? at(0, 15) : at(xs[k], 0), c, c, c);
-    blind.addPlace(g2, c);
-    EXPECT_FALSE(blind.tryClose(g2, times));
-  }
+  for (int k = 0; k < 5; ++k) EXPECT_FALSE(revisit(g2, blind, k)) << "keyframe " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(OffOrWithOdometry, PlaceSearch, ::testing::Bool());
