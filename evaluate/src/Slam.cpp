@@ -186,7 +186,9 @@ struct LidarSlam::Impl {
     if (r.edge_matches < cfg.mapping.min_edge_features || r.plane_matches < cfg.mapping.min_plane_features) {
       m.status = FrameStatus::FewFeatures;
       m.failed = true;
-      if (motion.hasOdometry()) m.T_world = step.T_world;
+      // Too few features to register against: the motion model (odometry, or a car's constant
+      // velocity) predicts better than a scan-to-scan match that had even fewer to work with.
+      if (motion.hasOdometry() || motion.hasVelocity()) m.T_world = step.T_world;
       AlignOptions planes_only = fine;
       planes_only.dof_mask = kZ | kRoll | kPitch;
       const AlignResult g = scan_to_map.alignPlanes(p, m.T_world, planes_only);

@@ -40,6 +40,33 @@ TEST(MotionModel, WheelOdometryPredictsInsteadOfTheVelocity) {
   EXPECT_NEAR(m.motionOver(2.0, 0.1).translation().x(), 0.5, 1e-9);
 }
 
+// A registered step with a sideways and vertical component and a roll: without odometry the
+// prediction keeps the car's part (2 m forward, 4 deg of yaw along the chord), with
+// vehicle_motion off the whole 6-DoF motion.
+TEST(MotionModel, WithoutOdometryTheVelocityIsACarsForwardSpeedAndYawRate) {
+  Pose3 step = forward(2.0, 4.0);
+  step.translation() = Vec3(2.0, 0.3, 0.2);
+  step.linear() = step.linear() * Eigen::AngleAxisd(0.05, Vec3::UnitX()).toRotationMatrix();
+  const double d = std::hypot(2.0, 0.3), half = 2.0 * std::numbers::pi / 180.0;
+  for (const bool car : {true, false}) {
+    Config cfg;
+    cfg.odometry.vehicle_motion = car;
+    slam::MotionModel m(cfg, Pose3::Identity());
+    m.recordFrame(0.0, Pose3::Identity());
+    m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), step, 0.1);
+    m.recordFrame(0.1, Pose3::Identity());
+    const Pose3 p = m.predict(0.2);
+    if (car) {
+      EXPECT_NEAR(p.translation().x(), d * std::cos(half), 1e-9);
+      EXPECT_NEAR(p.translation().y(), d * std::sin(half), 1e-9);
+      EXPECT_NEAR(p.translation().z(), 0.0, 1e-12);
+      EXPECT_NEAR(rotationAngle(p), 2 * half, 1e-9);  // the yaw alone: no roll left
+    } else {
+      EXPECT_TRUE(p.isApprox(step, 1e-9));
+    }
+  }
+}
+
 TEST(MotionModel, BeforeTheFirstFrameItStandsAtTheStartPose) {
   const Config cfg;
   const Pose3 start = forward(7.0, 30.0);

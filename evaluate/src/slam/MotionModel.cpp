@@ -16,6 +16,20 @@ void MotionModel::setInitialMotion(const Pose3& T_first_second, double dt_s) {
   have_velocity_ = true;
 }
 
+namespace {
+/// A car's part of a motion: the same yaw and travelled distance along the chord of a constant-
+/// rate turn (heading yaw / 2), no sideways, vertical, roll or pitch component.
+Pose3 vehicleMotion(const Pose3& m) {
+  const Mat3 R = m.linear();
+  const double yaw = std::atan2(R(1, 0), R(0, 0));
+  const double d = std::copysign(m.translation().head<2>().norm(), m.translation().x());
+  Pose3 v = Pose3::Identity();
+  v.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
+  v.translation() = Vec3(d * std::cos(yaw / 2), d * std::sin(yaw / 2), 0.0);
+  return v;
+}
+}  // namespace
+
 void MotionModel::recordFrame(double t, const Pose3& T_world) {
   T_world_last_ = T_world;
   t_last_ = t;
@@ -83,6 +97,7 @@ void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
     velocity_.linear().setIdentity();
   } else if (consecutive) {
     velocity_ = T_good.inverse() * T_world;
+    if (odometry_.empty() && cfg_.odometry.vehicle_motion) velocity_ = vehicleMotion(velocity_);
     velocity_dt_ = std::max(1e-3, dt);
     have_velocity_ = true;
     // A wrong pose must not make the prediction spin on: clamp to what a car can turn.

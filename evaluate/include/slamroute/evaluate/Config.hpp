@@ -95,6 +95,11 @@ struct OdometryConfig {
   /// taken on a ramp stays for good and the height wanders.
   double imu_tilt_weight = 0.2;
   double failed_turn_decay = 0.9;  ///< a failed scan keeps the speed, the turn rate times this
+  /// Without wheel odometry the constant-velocity prediction keeps only what a car does: forward
+  /// speed and yaw rate. Its sideways and vertical speeds and roll / pitch rates are set to zero,
+  /// so an error in one registration is not extrapolated into the next prediction (on a
+  /// feature-poor street a full 6-DoF velocity let a height error grow from scan to scan).
+  bool vehicle_motion = true;
 };
 
 /// Scan-to-map registration against the local map of recent keyframes, and keyframe selection.
@@ -286,6 +291,8 @@ void visitFields(V& v, OdometryConfig& c) {
   v.field("imu_tilt_weight", c.imu_tilt_weight,
           "share of the way roll/pitch move to the IMU's after each scan (odometry.csv with roll/pitch), 0 = off");
   v.field("failed_turn_decay", c.failed_turn_decay, "turn rate kept per failed scan (share)");
+  v.field("vehicle_motion", c.vehicle_motion,
+          "without wheel odometry, predict with forward speed and yaw rate only (false = full 6-DoF velocity)");
 }
 
 template <class V>
