@@ -46,8 +46,7 @@ TEST(RoadGraph, JsonRoundTrip) {
 }
 
 TEST(RoadGraph, FromSumoNetKeepsTurnPermissions) {
-  if (!std::filesystem::exists(test::sharedNet("bologna"))) GTEST_SKIP() << "../shared/networks missing";
-  const SumoNet net = SumoNet::read(test::sharedNet("bologna"));
+  const SumoNet net = SumoNet::read(test::bolognaNet());
   const RoadGraph g = RoadGraph::fromSumoNet(net, true);
   EXPECT_EQ(g.nodes.size(), 80u);
   EXPECT_EQ(g.edges.size(), 133u);
