@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Node F1 of build-graph over survey seeds and roadgraph.nodes settings on the real city nets
-# (bench/RESULTS.md, "Node F1 over survey seeds", parameter sweep) or on other nets.
+# (bench/RESULTS.md, "Parameter sweep on the tuning nets") or on other nets.
 # Usage: bench/node_f1_sweep.sh [BUILD_DIR] [OUT_DIR] [SEEDS]
 # Surveys are made once (--depth-spacing 0: traces only) and reused; each setting then builds the
 # graph from all of them (~30 s per setting on 2 cores). Prints one Markdown row per setting:

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memory of one SLAM run (bench/RESULTS.md "Memory of a SLAM run"): runs `slamroute evaluate` on a
+# Memory of one SLAM run (bench/RESULTS.md "SLAM memory"): runs `slamroute evaluate` on a
 # drive folder, samples its resident memory every INTERVAL seconds with the SLAM progress at that
 # moment, and ends with the maximum resident set and the wall time from /usr/bin/time -v.
 # Usage: bench/slam_memory.sh BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S=5] [CONFIG.yaml]
