@@ -1,7 +1,7 @@
 // `postman`: optimal directed Chinese postman (every drivable edge at least once), made legal
 // under SUMO turn permissions.
 //
-// Method (documented choice; the issue asks for the least added length we can):
+// Method (our choice, for the least added length we can reach and bound):
 //  1. Turn-free optimum (lower bound): min-cost flow on the node imbalances in(i) - out(i)
 //     (LEMON NetworkSimplex); every edge once plus the flow's duplicates.
 //  2. Turn-legal optimum without connectivity: a min-cost circulation on the turn-expanded

@@ -31,8 +31,8 @@
 //   votes and must itself see >= 3 branches in either ring (both are always tried there), unless
 //   it holds strong_vote_factor x the median group's votes: at big junctions (SUMO clusters,
 //   4-lane arms) turning traffic links the arms in both rings around the centre while the
-//   points voting for it, off-centre, see them apart (Ingolstadt: 7 true junctions with 47-139
-//   votes were dropped by the test). Groups with fewer than min_vote_fraction of the median
+//   points voting for it, off-centre, see them apart (without the exception Ingolstadt loses 7
+//   true junctions with 47-139 votes each). Groups with fewer than min_vote_fraction of the median
 //   group's votes are dropped (a bend, a lane split, a noisy stretch collect a handful of votes,
 //   a junction tens to hundreds), and a group within merge_distance_m (18 m) of a stronger one
 //   is absorbed by it: the carriageway crossings of two divided roads and the corners of a big

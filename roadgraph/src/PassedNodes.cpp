@@ -8,7 +8,8 @@
 // vote median is 15-30 m from where the arms meet) or the arm joining them was cleared. It
 // becomes one street per branch, each ending at the passed node, unless the cluster's geodesic
 // ends are attached to that node already. Without it, eqs. 1-2 at the geodesic ends join the
-// two far contacts and the passed junction loses its arms (Bologna junction 15).
+// two far contacts and the passed junction loses its arms (on Bologna, a big junction box cut the
+// western third of the graph off that way).
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -12,7 +12,7 @@
 //   dropped; they are not streets. Unless the piece also reaches, at least clear_radius_m from
 //   both ends, the cleared disk of another node: then it is a street whose two directions are
 //   separate lanes a few metres apart, linked into one U-shaped cluster only near the far
-//   junction (Bologna: 3 such streets were lost), and it runs from its ends' node to that one.
+//   junction (Bologna has 3 such streets), and it runs from its ends' node to that one.
 // - A cluster that runs through a junction whose node lies 12-16 m off it (not cleared there) is
 //   split at that node when vehicles drive from it into the node's disk (splitAtPassedNode).
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Validation against a SUMO net and mapping of graph edges to SUMO edges.
 //
 // True intersections: junctions with >= 3 distinct neighbouring junctions over passenger edges
-// (in or out), as the issue defines them; SUMO's "priority"/"traffic_light" types are not used
+// (in or out); SUMO's "priority"/"traffic_light" types are not used
 // because SUMO also splits plain streets with degree-2 junctions (shape changes, lane changes).
 // A real road chain runs from one true intersection through degree-2 junctions to the next one.
 #include "slamroute/roadgraph/SumoMatch.hpp"

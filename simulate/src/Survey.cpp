@@ -30,7 +30,7 @@ constexpr const char* kSurveyPrefix = "survey";
 
 /// GPS-like noise: per vehicle and axis a first-order Gauss-Markov process with standard
 /// deviation sigma and correlation time tau (tau = 0: white noise). The paper's CARLA traces
-/// are exact; the issue asks for optional GPS-like noise (~1 m), so the default is 0.5 m.
+/// are exact; a real survey's GPS is not (~1 m), so by default the traces carry 0.5 m of it.
 class GpsNoise {
  public:
   GpsNoise(double sigma, double tau, double dt, std::uint64_t seed)

@@ -1,5 +1,5 @@
 // The README's commands: scripts/run_default.sh must call the program scripts/build.sh builds.
-// (It called ./build/slamroute from the first commit on, while CMake builds build/cli/slamroute.)
+// (CMake builds build/cli/slamroute, not ./build/slamroute.)
 #include "CliTestUtil.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 

@@ -111,13 +111,14 @@ TEST(SumoMatch, DefaultCityFromLaneTraces) {
 }
 
 // Lane traces drive every lane once: far thinner than a survey, and big junctions (3-lane divided
-// roads, junction boxes of 20-40 m) see little turning traffic. Issue 4 asks >= 0.9 on surveys;
-// here 0.81 is reached (what limits it: see bench/RESULTS.md, road graph section).
+// roads, junction boxes of 20-40 m) see little turning traffic. The target of 0.9 is for surveys;
+// lane traces reach 0.81 here (what limits it: bench/RESULTS.md, "Road graph: node and edge
+// accuracy").
 TEST(SumoMatch, BolognaFromLaneTraces) {
   checkNet(slamroute::test::bolognaNet(), 0.8);
 }
 
-// End to end as the issue runs it: `slamroute survey` (SUMO vehicles, 0.5 m GPS-like noise, seeded)
+// End to end as a user runs it: `slamroute survey` (SUMO vehicles, 0.5 m GPS-like noise, seeded)
 // then `slamroute build-graph --net`; returns graph.json (metadata parsed), or null when skipped.
 nlohmann::json surveyThroughTheCli(const fs::path& net, const std::string& name) {
   if (!fs::exists(net) || !fs::exists(SLAMROUTE_BINARY)) return nullptr;
@@ -147,7 +148,7 @@ TEST(SumoMatch, BolognaSurveyThroughTheCli) {
   ASSERT_FALSE(g.is_null()) << "slamroute CLI not built";
   const auto& meta = g.at("metadata");
   const auto& v = meta.at("validation");
-  // 0.887 (0.867 before roundabouts); the issue's 0.9 is not reached, see bench/RESULTS.md.
+  // 0.887 with seed 42: the target of 0.9 is not reached on Bologna (bench/RESULTS.md).
   EXPECT_GE(v.at("node_f1").get<double>(), 0.85);
   EXPECT_GE(v.at("node_recall").get<double>(), 0.8);
   // Via Andrea Costa's roundabout (radius ~18 m, two-lane ring) is the net's only one.
@@ -168,7 +169,7 @@ TEST(SumoMatch, IngolstadtSurveyReachesTheIssueTarget) {
   const auto g = surveyThroughTheCli(slamroute::test::ingolstadtNet(), "ingolstadt");
   ASSERT_FALSE(g.is_null()) << "slamroute CLI not built";
   const auto& meta = g.at("metadata");
-  EXPECT_GE(meta.at("validation").at("node_f1").get<double>(), 0.9);  // issue 4; 0.891 before
+  EXPECT_GE(meta.at("validation").at("node_f1").get<double>(), 0.9);  // the target; 0.908
   // One small three-arm roundabout (ring lane radius ~9 m) with split arms: an entry and an exit
   // junction per arm, six SUMO junctions on the ring.
   EXPECT_EQ(meta.at("stats").at("roundabouts").get<int>(), 1);

@@ -114,7 +114,7 @@ struct EdgeConfig {
   bool split_at_passed_nodes = true;  ///< split a street cluster at a junction it runs through
   /// Links between junctions too close for a street to survive the clearing (ShortLinks.cpp):
   /// A vehicle this close to a node passes its junction [m]. 12 m = clear_radius_m: the node of a
-  /// big junction lies up to 10-15 m from the lanes through it (Bologna 27: 8 m lost its link).
+  /// big junction lies up to 10-15 m from the lanes through it, so 8 m misses links there.
   double link_visit_m = 12.0;
   double link_max_m = 30.0;   ///< nodes farther apart are never linked this way [m]
   int min_link_vehicles = 2;  ///< vehicles needed to accept a direction of a link
