@@ -112,7 +112,7 @@ TEST(SumoMatch, DefaultCityFromLaneTraces) {
 
 // Lane traces drive every lane once: far thinner than a survey, and big junctions (3-lane divided
 // roads, junction boxes of 20-40 m) see little turning traffic. The target of 0.9 is for surveys;
-// lane traces reach 0.81 here (what limits it: bench/RESULTS.md, "Road graph: node and edge
+// lane traces reach 0.84 here (what limits it: bench/RESULTS.md, "Road graph: node and edge
 // accuracy").
 TEST(SumoMatch, BolognaFromLaneTraces) {
   checkNet(slamroute::test::bolognaNet(), 0.8);
