@@ -1,7 +1,8 @@
 // Fleet planning on real nets: makespan against the lower bound max(L1 / K, longest
 // depot-edge-depot round trip), total length against the single postman route L1, balance and
 // planning time, for K = 2, 4, 8 and both strategies. Depot: the first node of the planning
-// graph (rl.start_node = -1). Usage: bench_fleet [--strategies partition,postman] [--k 2,4,8]
+// graph (rl.start_node = -1). Usage:
+//   bench_fleet [--strategies partition,postman] [--k 2,4,8] [--candidates N] [--moves N]
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -32,10 +33,13 @@ int main(int argc, char** argv) {
   using namespace slamroute;
   std::vector<std::string> strategies{"partition", "postman"};
   std::vector<std::string> ks{"2", "4", "8"};
+  rl::FleetConfig defaults;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--strategies") strategies = splitList(argv[i + 1]);
     else if (a == "--k") ks = splitList(argv[i + 1]);
+    else if (a == "--candidates") defaults.candidates_per_move = std::stoi(argv[i + 1]);
+    else if (a == "--moves") defaults.balance_moves = std::stoi(argv[i + 1]);
   }
   const std::string src = SLAMROUTE_SOURCE_DIR, shared = SLAMROUTE_SHARED_DIR;
   const std::vector<Net> nets{
@@ -51,6 +55,7 @@ int main(int argc, char** argv) {
     for (const std::string& strategy : strategies)
       for (const std::string& k : ks) {
         rl::Config cfg;
+        cfg.fleet = defaults;
         cfg.fleet.vehicles = std::stoi(k);
         cfg.fleet.strategy = strategy;
         const FleetRoute f = rl::planFleet(g, cfg, {}, 1, net.name);
