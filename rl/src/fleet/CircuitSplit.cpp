@@ -93,26 +93,51 @@ std::vector<int> legRoute(const FleetContext& ctx, const std::vector<int>& circu
   return route;
 }
 
+/// The legs of the circuit and, per vehicle, the index of its leg (-1: none).
+struct AssignedLegs {
+  std::vector<Leg> legs;
+  std::vector<int> leg_of_vehicle;
+};
+
+AssignedLegs assignLegs(const FleetContext& ctx, const std::vector<int>& circuit) {
+  const LegCosts costs = legCosts(ctx, circuit);
+  AssignedLegs a{cheapestLegs(costs, ctx.vehicles()), {}};
+  std::vector<std::vector<double>> cost(sz(ctx.vehicles()));
+  for (int v = 0; v < ctx.vehicles(); ++v)
+    for (const Leg& leg : a.legs)
+      cost[sz(v)].push_back(ctx.from_depot[sz(v)][sz(circuit[sz(leg.first)])] +
+                            costs.prefix[sz(leg.last + 1)] - costs.prefix[sz(leg.first + 1)] +
+                            ctx.to_depot[sz(v)][sz(circuit[sz(leg.last)])]);
+  a.leg_of_vehicle = assignToVehicles(cost);
+  return a;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> splitCircuitRoutes(const FleetContext& ctx,
                                                  const std::vector<int>& circuit,
                                                  StrategyStats& stats) {
-  const LegCosts costs = legCosts(ctx, circuit);
-  const std::vector<Leg> legs = cheapestLegs(costs, ctx.vehicles());
-  stats.legs = static_cast<int>(legs.size());
-  std::vector<std::vector<double>> cost(sz(ctx.vehicles()));
-  for (int v = 0; v < ctx.vehicles(); ++v)
-    for (const Leg& leg : legs)
-      cost[sz(v)].push_back(ctx.from_depot[sz(v)][sz(circuit[sz(leg.first)])] +
-                            costs.prefix[sz(leg.last + 1)] - costs.prefix[sz(leg.first + 1)] +
-                            ctx.to_depot[sz(v)][sz(circuit[sz(leg.last)])]);
-  const std::vector<int> leg_of_vehicle = assignToVehicles(cost);
+  const AssignedLegs a = assignLegs(ctx, circuit);
+  stats.legs = static_cast<int>(a.legs.size());
   std::vector<std::vector<int>> routes(sz(ctx.vehicles()));
   for (int v = 0; v < ctx.vehicles(); ++v)
-    if (leg_of_vehicle[sz(v)] >= 0)
-      routes[sz(v)] = legRoute(ctx, circuit, legs[sz(leg_of_vehicle[sz(v)])], v);
+    if (a.leg_of_vehicle[sz(v)] >= 0)
+      routes[sz(v)] = legRoute(ctx, circuit, a.legs[sz(a.leg_of_vehicle[sz(v)])], v);
   return routes;
+}
+
+std::vector<int> circuitLegParts(const FleetContext& ctx, const std::vector<int>& circuit) {
+  const AssignedLegs a = assignLegs(ctx, circuit);
+  std::vector<int> vehicle_of_leg(a.legs.size(), -1);
+  for (int v = 0; v < ctx.vehicles(); ++v)
+    if (a.leg_of_vehicle[sz(v)] >= 0) vehicle_of_leg[sz(a.leg_of_vehicle[sz(v)])] = v;
+  std::vector<int> part_of_edge(sz(ctx.pg.m), -1);
+  for (std::size_t l = 0; l < a.legs.size(); ++l)
+    for (int i = a.legs[l].first; i <= a.legs[l].last; ++i) {
+      int& part = part_of_edge[sz(circuit[sz(i)])];
+      if (part < 0) part = vehicle_of_leg[l];
+    }
+  return part_of_edge;
 }
 
 }  // namespace slamroute::rl::fleet

@@ -140,7 +140,7 @@ FleetRoute planFleet(const RoadGraph& g, const Config& cfg, const std::vector<in
   const std::vector<int> circuit = planPostman(pg, paths, single, ctx.depot[0]).edges;
   fleet::StrategyStats stats;
   const auto routes = cfg.fleet.strategy == "partition"
-                          ? fleet::partitionRoutes(ctx, cfg.fleet, seed, stats)
+                          ? fleet::partitionRoutes(ctx, cfg.fleet, seed, circuit, stats)
                           : fleet::splitCircuitRoutes(ctx, circuit, stats);
   FleetRoute f = summarise(ctx, cfg, seed, routes, fleet::routeLength(pg, circuit));
   f.planning_seconds =
@@ -148,6 +148,7 @@ FleetRoute planFleet(const RoadGraph& g, const Config& cfg, const std::vector<in
   f.extra_json = nlohmann::json{{"makespan_before_moves_m", stats.makespan_before_moves_m},
                                 {"balance_moves", stats.balance_moves},
                                 {"legs", stats.legs},
+                                {"partition_start", stats.start},
                                 {"plan_graph_edges", pg.m},
                                 {"dropped_edges", pg.dropped_edges}}
                      .dump();
