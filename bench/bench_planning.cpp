@@ -105,11 +105,11 @@ int main(int argc, char** argv) {
   std::printf("\n## Real networks (largest legally drivable part)\n\n");
   std::printf("| net | plan nodes/edges | planner | seconds | length km | / postman | node cov %% | "
               "edge cov %% | illegal turns | loop closures | mean / max log det cov |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  const std::filesystem::path src(SLAMROUTE_SOURCE_DIR);
+  const std::filesystem::path shared(SLAMROUTE_SHARED_DIR), src(SLAMROUTE_SOURCE_DIR);
   const std::vector<std::pair<std::string, std::filesystem::path>> nets = {
       {"default_city", src / "networks/default_city/default_city.net.xml"},
-      {"bologna_acosta", src / "networks/real/bologna_acosta/acosta_buslanes.net.xml"},
-      {"ingolstadt21", src / "networks/real/ingolstadt21/ingolstadt21.net.xml"}};
+      {"bologna_acosta", shared / "networks/bologna_acosta/acosta_buslanes.net.xml"},
+      {"ingolstadt21", shared / "networks/ingolstadt21/ingolstadt21.net.xml"}};
   for (const auto& [name, path] : nets) {
     std::fprintf(stderr, "%s\n", name.c_str());
     if (!std::filesystem::exists(path)) {

@@ -116,6 +116,8 @@ double castPlain(const World& w, const Lidar& lidar, const std::vector<Pose3>& p
 int main(int argc, char** argv) {
   fs::path net_path = argc > 1 ? fs::path(argv[1])
                                : fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  if (argc <= 1 && !fs::exists(net_path))
+    net_path = fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml";
   const std::size_t n_scans = argc > 2 ? std::stoul(argv[2]) : 40;
   const SumoNet net = SumoNet::read(net_path);
   double t0 = now();

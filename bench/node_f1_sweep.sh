@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Node F1 of build-graph over survey seeds and roadgraph.nodes settings on the real city nets
-# (bench/RESULTS.md, "Parameter sweep on the tuning nets") or on other nets.
+# Node F1 of build-graph over survey seeds and roadgraph.nodes settings on the shared nets
+# (bench/RESULTS.md, "Node F1 over survey seeds", parameter sweep) or on other nets.
 # Usage: bench/node_f1_sweep.sh [BUILD_DIR] [OUT_DIR] [SEEDS]
 # Surveys are made once (--depth-spacing 0: traces only) and reused; each setting then builds the
 # graph from all of them (~30 s per setting on 2 cores). Prints one Markdown row per setting:
@@ -16,10 +16,10 @@ build="${1:-$here/../build}"
 out="${2:-/tmp/slamroute_node_f1}"
 seeds="${3:-42 7 1 2 3}"
 bin="$build/cli/slamroute"
-real="$here/../networks/real"
+shared="$here/../../shared/networks"
 declare -A net=()
 names=()
-for entry in ${NETS:-bologna=$real/bologna_acosta/acosta_buslanes.net.xml ingolstadt=$real/ingolstadt21/ingolstadt21.net.xml}; do
+for entry in ${NETS:-bologna=$shared/bologna_acosta/acosta_buslanes.net.xml ingolstadt=$shared/ingolstadt21/ingolstadt21.net.xml}; do
   name="${entry%%=*}"; path="${entry#*=}"
   [ -f "$path" ] || { echo "node_f1_sweep.sh: $path: no such net" >&2; exit 2; }
   net[$name]="$path"; names+=("$name")

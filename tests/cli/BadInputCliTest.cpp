@@ -1,4 +1,4 @@
-// Inputs that could run to a wrong result or fail with a library's raw text: each must give one
+// Inputs that used to run to a wrong result or fail with a library's raw text: each is now one
 // line naming the file (or option) and the problem, a non-zero exit and nothing written.
 #include <gtest/gtest.h>
 
@@ -81,7 +81,7 @@ TEST(BadInputCli, NumbersNoFileCanHold) {
   put(dir / "zero.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n0 0 0 1 0 0 0 0 0 0 0 0\n");
   test::expectCleanFailure("compare " + (dir / "zero.txt").string() + " " + (dir / "dup.tum").string(),
                            "zero.txt:2: the 3x3 part is not a rotation matrix", dir, 4);
-  // A shape point 100,000 km out: survey's world builder must refuse it, not loop for ever.
+  // A shape point 100,000 km out used to make survey's world builder loop for ever.
   std::string net = readFile(kGrid);
   const auto shape = net.find("shape=\"", net.find("<edge id=\"g00_g01\"")) + 7;
   net.insert(shape, "1e8,0 ");

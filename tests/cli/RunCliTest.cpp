@@ -95,8 +95,8 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
                         "| noise correlation time | 2.0 s | "})
     EXPECT_NE(report.find(s), std::string::npos) << s;
   EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
-  // Map accuracy: the median distance and the share beyond the 2 m clamp, from metrics.json
-  // (rather than a p95, which is the clamp whenever more than 5 % of the map lies beyond it).
+  // Map accuracy: the median distance and the share beyond the 2 m clamp, from metrics.json (a
+  // p95 of clamped distances was always the clamp).
   const auto mq = nlohmann::json::parse(readFile(out / "eval" / "qlearning" / "metrics.json"));
   // A median with half the points or more beyond the clamp is the clamp: written "> 2.0".
   auto median = [&](const char* prefix) {

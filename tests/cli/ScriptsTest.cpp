@@ -1,5 +1,5 @@
 // The README's commands: scripts/run_default.sh must call the program scripts/build.sh builds.
-// (CMake builds build/cli/slamroute, not ./build/slamroute.)
+// (It called ./build/slamroute from the first commit on, while CMake builds build/cli/slamroute.)
 #include "CliTestUtil.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 

@@ -1,6 +1,5 @@
 #pragma once
-// Helpers shared by the core tests: temp folders, small files and the nets of NetPaths.hpp.
-#include "NetPaths.hpp"
+// Helpers shared by the core tests: temp folders and small files.
 #include "TestTmp.hpp"
 #include <filesystem>
 #include <fstream>
@@ -17,6 +16,12 @@ inline std::filesystem::path tempDir(const std::string& name) {
 
 inline void writeText(const std::filesystem::path& p, const std::string& s) {
   std::ofstream(p, std::ios::binary) << s;
+}
+
+inline std::string sharedNet(const std::string& which) {
+  if (which == "bologna")
+    return std::string(SLAMROUTE_SHARED_DIR) + "/networks/bologna_acosta/acosta_buslanes.net.xml";
+  return std::string(SLAMROUTE_SHARED_DIR) + "/networks/ingolstadt21/ingolstadt21.net.xml";
 }
 
 }  // namespace slamroute::test

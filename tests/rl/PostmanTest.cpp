@@ -70,6 +70,7 @@ TEST(Postman, NoUTurnGridStaysLegal) {
 }
 
 void checkRealNet(const std::filesystem::path& net, double max_excess_over_turn_free_pct) {
+  if (!std::filesystem::exists(net)) GTEST_SKIP() << net << " missing";
   const Route r = plan(test::netGraph(net), postmanCfg(), 1, net.string());
   const auto x = test::extra(r);
   EXPECT_EQ(x["illegal_turns"].get<int>(), 0);
@@ -108,6 +109,7 @@ TEST(Postman, StartNodeIsRespected) {
 void sumoDrives(const std::filesystem::path& net, const std::string& name,
                 const std::string& planner = "postman") {
   if (!std::filesystem::exists("/usr/bin/sumo")) GTEST_SKIP() << "/usr/bin/sumo absent";
+  if (!std::filesystem::exists(net)) GTEST_SKIP() << net << " missing";
   Config cfg;
   cfg.planner = planner;
   const Route r = plan(test::netGraph(net), cfg, 1, net.string());

