@@ -14,13 +14,14 @@
 #include <map>
 #include <stdexcept>
 
+#include "Index.hpp"
+
 namespace slamroute::rl {
 
 namespace {
 
 using LineGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
 
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 
 }  // namespace
 
