@@ -110,4 +110,15 @@ Pose3 vehicleBodyPose(double x, double y, double z, double sumo_angle_deg, doubl
   return T;
 }
 
+SumoSessionOptions recordingSessionOptions(const std::filesystem::path& net, std::uint64_t seed,
+                                           double step_length_s, double time_to_teleport_s) {
+  SumoSessionOptions so;
+  so.net = net;
+  so.seed = seed;
+  so.step_length_s = step_length_s;
+  so.time_to_teleport_s = time_to_teleport_s;
+  so.extra_args = {"--lanechange.duration", "2"};
+  return so;
+}
+
 }  // namespace slamroute::simulate

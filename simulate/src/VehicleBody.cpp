@@ -39,11 +39,6 @@ void advance(Axis& a, double u0, double u1, double d, double dt, double hz, doub
   }
 }
 
-double yawOf(const Pose3& T) {
-  const Vec3 x = T.linear().col(0);
-  return std::atan2(x.y(), x.x());
-}
-
 /// Height of the carriageway under a wheel, or NaN where the wheel is over something else (a
 /// turning car's inner rear wheel may cut across a pavement's corner or the verge beside a
 /// junction in the mesh; a real one stays on the road).

@@ -1,0 +1,101 @@
+// PCL as an independent check of two of our own parts: map.pcd must load in PCL's reader (the one
+// pcl_viewer and CloudCompare's PCL plugin use) point for point, and our point-to-plane ICP must
+// find the same motion as PCL's generalized ICP on the same pair of scans.
+#include "TestTmp.hpp"
+#include <gtest/gtest.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+#include <pcl/registration/gicp.h>
+
+#include <filesystem>
+#include <numbers>
+
+#include "SyntheticScene.hpp"
+#include "slamroute/evaluate/Output.hpp"
+#include "slamroute/evaluate/Registration.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+namespace fs = std::filesystem;
+
+pcl::PointCloud<pcl::PointXYZ> loadWithPcl(const fs::path& file) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  if (pcl::io::loadPCDFile(file.string(), cloud) != 0) ADD_FAILURE() << "PCL cannot read " << file;
+  return cloud;
+}
+
+void expectSamePoints(const pcl::PointCloud<pcl::PointXYZ>& read, const Cloud& written) {
+  ASSERT_EQ(read.size(), written.size());
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    EXPECT_EQ(read[i].x, written[i].x()) << i;
+    EXPECT_EQ(read[i].y, written[i].y()) << i;
+    EXPECT_EQ(read[i].z, written[i].z()) << i;
+  }
+}
+
+TEST(PclCrossCheck, PclReadsMapPcdPointForPoint) {
+  const fs::path dir = test::testTmp() / "pcl_cross_check";
+  fs::create_directories(dir);
+  Cloud first, second;
+  for (int i = 0; i < 500; ++i) {
+    first.emplace_back(0.25f * i, -1.5f * i, 1e-3f * i);
+    second.emplace_back(-7.0f + i, 3.0e4f, -0.125f * i);
+  }
+  writePcd(dir / "whole.pcd", first);
+  expectSamePoints(loadWithPcl(dir / "whole.pcd"), first);
+  // The SLAM's map comes tile by tile through PcdWriter.
+  PcdWriter parts(dir / "parts.pcd");
+  parts.add(first);
+  parts.add(second);
+  parts.commit();
+  Cloud both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  expectSamePoints(loadWithPcl(dir / "parts.pcd"), both);
+}
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr toPcl(const Cloud& c) {
+  auto out = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : c) out->push_back({p.x(), p.y(), p.z()});
+  return out;
+}
+
+Cloud cloudOf(const Scan& s) {
+  Cloud c;
+  for (const auto& p : s.points) c.emplace_back(p.x, p.y, p.z);
+  return c;
+}
+
+TEST(PclCrossCheck, IcpFindsTheMotionPclGeneralizedIcpFinds) {
+  // Two scans of a street crossing 1.2 m and 4 degrees apart, both methods started at identity.
+  LidarSpec spec;
+  spec.channels = 16;
+  spec.horizontal_samples = 900;
+  const test::Scene scene = test::cityScene(80.0);
+  const Pose3 T_world_target = test::poseXYZYaw(0.0, 0.0, 1.8, 0.0);
+  const Pose3 T_world_source = test::poseXYZYaw(1.0, 0.6, 1.8, 4.0 * std::numbers::pi / 180.0);
+  const Cloud target = cloudOf(test::scanScene(scene, T_world_target, spec));
+  const Cloud source = cloudOf(test::scanScene(scene, T_world_source, spec));
+  const Pose3 truth = T_world_target.inverse() * T_world_source;
+
+  const IcpResult ours = IcpTarget(target).align(source, Pose3::Identity(), 30, 2.0);
+  pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
+  gicp.setInputTarget(toPcl(target));
+  gicp.setInputSource(toPcl(source));
+  gicp.setMaxCorrespondenceDistance(2.0);
+  gicp.setMaximumIterations(30);
+  pcl::PointCloud<pcl::PointXYZ> aligned;
+  gicp.align(aligned);
+  ASSERT_TRUE(gicp.hasConverged());
+  Pose3 theirs = Pose3::Identity();
+  theirs.matrix() = gicp.getFinalTransformation().cast<double>();
+
+  for (const Pose3& found : {ours.T_target_source, theirs}) {
+    const Pose3 err = truth.inverse() * found;
+    EXPECT_LT(err.translation().norm(), 0.05) << err.translation().transpose();
+    EXPECT_LT(Eigen::AngleAxisd(err.rotation()).angle(), 0.2 * std::numbers::pi / 180.0);
+  }
+  EXPECT_LT((ours.T_target_source.translation() - theirs.translation()).norm(), 0.05);
+}
+
+}  // namespace
+}  // namespace slamroute::evaluate
