@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "slamroute/core/Yaw.hpp"
+
 namespace slamroute::evaluate {
 namespace {
 

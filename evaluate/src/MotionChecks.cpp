@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "slamroute/core/Odometry.hpp"
+#include "slamroute/core/Yaw.hpp"
 
 namespace slamroute::evaluate {
 

@@ -12,11 +12,13 @@
 #include <unordered_map>
 
 #include "DriveInternal.hpp"
+#include "RecordingSession.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/simulate/SumoSession.hpp"
 #include "slamroute/simulate/VehicleBody.hpp"
 #include "slamroute/simulate/World.hpp"

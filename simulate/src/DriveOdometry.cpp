@@ -4,6 +4,7 @@
 #include <numbers>
 #include <random>
 
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/simulate/Drive.hpp"
 
 namespace slamroute::simulate {

@@ -1,6 +1,8 @@
 // SumoSession: one libsumo simulation per process, opened and closed by RAII.
 #include "slamroute/simulate/SumoSession.hpp"
 
+#include "RecordingSession.hpp"
+
 #include <libsumo/libsumo.h>
 
 #include <atomic>

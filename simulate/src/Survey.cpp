@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "RecordingSession.hpp"
 #include "SurveyInternal.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/StagingDir.hpp"

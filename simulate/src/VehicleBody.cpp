@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "slamroute/core/Yaw.hpp"
+
 namespace slamroute::simulate {
 
 namespace {

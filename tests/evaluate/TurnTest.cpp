@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "SyntheticScene.hpp"
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/evaluate/Slam.hpp"
 

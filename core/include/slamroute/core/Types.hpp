@@ -16,9 +16,4 @@ using Polyline = std::vector<Point3>;
 /// Length of a polyline in metres (3D).
 double polylineLength(const Polyline& pl);
 
-/// Heading of a rotation about the world z axis: the angle of its x axis in the x-y plane
-/// (radians, (-pi, pi]).
-double yawOf(const Mat3& R);
-double yawOf(const Pose3& T);
-
 }  // namespace slamroute

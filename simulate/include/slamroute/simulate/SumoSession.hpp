@@ -28,11 +28,6 @@ struct SumoSessionOptions {
   std::vector<std::string> extra_args;  ///< appended to the SUMO command line
 };
 
-/// Options for a session that records vehicles (survey, drive): lane changes take 2 s instead of
-/// one step, so the recorded positions never jump sideways by a lane.
-SumoSessionOptions recordingSessionOptions(const std::filesystem::path& net, std::uint64_t seed,
-                                           double step_length_s, double time_to_teleport_s);
-
 class SumoSession {
  public:
   /// Starts SUMO on the net (sets SUMO_HOME=/usr/share/sumo when unset). Throws
