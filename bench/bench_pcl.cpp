@@ -8,15 +8,16 @@
 // Usage: bench_pcl pcd ours|pcl POINTS | bench_pcl icp
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
-#include <pcl/registration/gicp.h>
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "../tests/evaluate/PclGicp.hpp"
 #include "../tests/evaluate/SyntheticScene.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/Registration.hpp"
@@ -71,18 +72,6 @@ int benchPcd(const std::string& writer, std::size_t points) {
   return 0;
 }
 
-Cloud cloudOf(const Scan& s) {
-  Cloud c;
-  for (const auto& p : s.points) c.emplace_back(p.x, p.y, p.z);
-  return c;
-}
-
-pcl::PointCloud<pcl::PointXYZ>::Ptr toPcl(const Cloud& c) {
-  auto out = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const auto& p : c) out->push_back({p.x(), p.y(), p.z()});
-  return out;
-}
-
 void printError(const char* who, const Pose3& truth, const Pose3& found, double seconds) {
   const Pose3 err = truth.inverse() * found;
   std::printf("  %-5s %.3f m %.3f deg %.3f s", who, err.translation().norm(),
@@ -95,29 +84,22 @@ int benchIcp() {
   spec.horizontal_samples = 900;
   const evaluate::test::Scene scene = evaluate::test::cityScene(80.0);
   const Pose3 T_world_target = evaluate::test::poseXYZYaw(0.0, 0.0, 1.8, 0.0);
-  const Cloud target = cloudOf(evaluate::test::scanScene(scene, T_world_target, spec));
+  const Cloud target = evaluate::test::cloudOf(evaluate::test::scanScene(scene, T_world_target, spec));
   for (double offset_m : {0.5, 1.0, 2.0, 3.0}) {
     const Pose3 T_world_source = evaluate::test::poseXYZYaw(
         offset_m, 0.5 * offset_m, 1.8, 2.0 * offset_m * std::numbers::pi / 180.0);
-    const Cloud source = cloudOf(evaluate::test::scanScene(scene, T_world_source, spec));
+    const Cloud source = evaluate::test::cloudOf(evaluate::test::scanScene(scene, T_world_source, spec));
     const Pose3 truth = T_world_target.inverse() * T_world_source;
     double t0 = now();
     const IcpResult ours = IcpTarget(target).align(source, Pose3::Identity(), 30, 2.0);
     const double ours_s = now() - t0;
     t0 = now();
-    pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
-    gicp.setInputTarget(toPcl(target));
-    gicp.setInputSource(toPcl(source));
-    gicp.setMaxCorrespondenceDistance(2.0);
-    gicp.setMaximumIterations(30);
-    pcl::PointCloud<pcl::PointXYZ> aligned;
-    gicp.align(aligned);
+    const std::optional<Pose3> theirs = evaluate::test::pclGicp(target, source, 2.0, 30);
     const double pcl_s = now() - t0;
-    Pose3 theirs = Pose3::Identity();
-    theirs.matrix() = gicp.getFinalTransformation().cast<double>();
     std::printf("icp offset %.1f m, %zu/%zu points:", offset_m, source.size(), target.size());
     printError("ours", truth, ours.T_target_source, ours_s);
-    printError("gicp", truth, theirs, pcl_s);
+    if (theirs) printError("gicp", truth, *theirs, pcl_s);
+    else std::printf("  gicp did not converge");
     std::printf("\n");
   }
   return 0;

@@ -5,11 +5,12 @@
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
-#include <pcl/registration/gicp.h>
 
 #include <filesystem>
 #include <numbers>
+#include <optional>
 
+#include "PclGicp.hpp"
 #include "SyntheticScene.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/Registration.hpp"
@@ -34,7 +35,7 @@ void expectSamePoints(const pcl::PointCloud<pcl::PointXYZ>& read, const Cloud& w
 }
 
 TEST(PclCrossCheck, PclReadsMapPcdPointForPoint) {
-  const fs::path dir = test::testTmp() / "pcl_cross_check";
+  const fs::path dir = slamroute::test::testTmp() / "pcl_cross_check";
   fs::create_directories(dir);
   Cloud first, second;
   for (int i = 0; i < 500; ++i) {
@@ -53,18 +54,6 @@ TEST(PclCrossCheck, PclReadsMapPcdPointForPoint) {
   expectSamePoints(loadWithPcl(dir / "parts.pcd"), both);
 }
 
-pcl::PointCloud<pcl::PointXYZ>::Ptr toPcl(const Cloud& c) {
-  auto out = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const auto& p : c) out->push_back({p.x(), p.y(), p.z()});
-  return out;
-}
-
-Cloud cloudOf(const Scan& s) {
-  Cloud c;
-  for (const auto& p : s.points) c.emplace_back(p.x, p.y, p.z);
-  return c;
-}
-
 TEST(PclCrossCheck, IcpFindsTheMotionPclGeneralizedIcpFinds) {
   // Two scans of a street crossing 1.2 m and 4 degrees apart, both methods started at identity.
   LidarSpec spec;
@@ -73,21 +62,14 @@ TEST(PclCrossCheck, IcpFindsTheMotionPclGeneralizedIcpFinds) {
   const test::Scene scene = test::cityScene(80.0);
   const Pose3 T_world_target = test::poseXYZYaw(0.0, 0.0, 1.8, 0.0);
   const Pose3 T_world_source = test::poseXYZYaw(1.0, 0.6, 1.8, 4.0 * std::numbers::pi / 180.0);
-  const Cloud target = cloudOf(test::scanScene(scene, T_world_target, spec));
-  const Cloud source = cloudOf(test::scanScene(scene, T_world_source, spec));
+  const Cloud target = test::cloudOf(test::scanScene(scene, T_world_target, spec));
+  const Cloud source = test::cloudOf(test::scanScene(scene, T_world_source, spec));
   const Pose3 truth = T_world_target.inverse() * T_world_source;
 
   const IcpResult ours = IcpTarget(target).align(source, Pose3::Identity(), 30, 2.0);
-  pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
-  gicp.setInputTarget(toPcl(target));
-  gicp.setInputSource(toPcl(source));
-  gicp.setMaxCorrespondenceDistance(2.0);
-  gicp.setMaximumIterations(30);
-  pcl::PointCloud<pcl::PointXYZ> aligned;
-  gicp.align(aligned);
-  ASSERT_TRUE(gicp.hasConverged());
-  Pose3 theirs = Pose3::Identity();
-  theirs.matrix() = gicp.getFinalTransformation().cast<double>();
+  const std::optional<Pose3> gicp = test::pclGicp(target, source, 2.0, 30);
+  ASSERT_TRUE(gicp.has_value());
+  const Pose3 theirs = *gicp;
 
   for (const Pose3& found : {ours.T_target_source, theirs}) {
     const Pose3 err = truth.inverse() * found;
