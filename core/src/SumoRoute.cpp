@@ -20,13 +20,8 @@ using LineGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directe
 /// length of the edge driven next) and its largest strongly connected part.
 class PassengerLineGraph {
  public:
-  explicit PassengerLineGraph(const SumoNet& net) {
-    for (const auto& e : net.edges)
-      if (e.allowsPassenger() && !e.from.empty()) {
-        index_.emplace(e.id, pax_.size());
-        pax_.push_back(&e);
-      }
-    lg_ = LineGraph(pax_.size());
+  explicit PassengerLineGraph(const SumoNet& net)
+      : pax_(passengerEdges(net, index_)), lg_(pax_.size()) {
     for (std::size_t i = 0; i < pax_.size(); ++i)
       for (const auto& c : net.connections)
         if (c.from == pax_[i]->id) {
@@ -68,8 +63,20 @@ class PassengerLineGraph {
                                         comp_size.begin());
   }
 
-  std::vector<const SumoEdge*> pax_;
+  /// The edges open to passenger cars, numbered in `index`.
+  static std::vector<const SumoEdge*> passengerEdges(
+      const SumoNet& net, std::unordered_map<std::string, std::size_t>& index) {
+    std::vector<const SumoEdge*> pax;
+    for (const auto& e : net.edges)
+      if (e.allowsPassenger() && !e.from.empty()) {
+        index.emplace(e.id, pax.size());
+        pax.push_back(&e);
+      }
+    return pax;
+  }
+
   std::unordered_map<std::string, std::size_t> index_;
+  std::vector<const SumoEdge*> pax_;
   LineGraph lg_;
   std::vector<std::size_t> comp_;
   std::size_t largest_ = 0;
