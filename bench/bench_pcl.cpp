@@ -84,11 +84,13 @@ int benchIcp() {
   spec.horizontal_samples = 900;
   const evaluate::test::Scene scene = evaluate::test::cityScene(80.0);
   const Pose3 T_world_target = evaluate::test::poseXYZYaw(0.0, 0.0, 1.8, 0.0);
-  const Cloud target = evaluate::test::cloudOf(evaluate::test::scanScene(scene, T_world_target, spec));
+  const Cloud target =
+      evaluate::test::cloudOf(evaluate::test::scanScene(scene, T_world_target, spec));
   for (double offset_m : {0.5, 1.0, 2.0, 3.0}) {
     const Pose3 T_world_source = evaluate::test::poseXYZYaw(
         offset_m, 0.5 * offset_m, 1.8, 2.0 * offset_m * std::numbers::pi / 180.0);
-    const Cloud source = evaluate::test::cloudOf(evaluate::test::scanScene(scene, T_world_source, spec));
+    const Cloud source =
+        evaluate::test::cloudOf(evaluate::test::scanScene(scene, T_world_source, spec));
     const Pose3 truth = T_world_target.inverse() * T_world_source;
     double t0 = now();
     const IcpResult ours = IcpTarget(target).align(source, Pose3::Identity(), 30, 2.0);
@@ -98,8 +100,10 @@ int benchIcp() {
     const double pcl_s = now() - t0;
     std::printf("icp offset %.1f m, %zu/%zu points:", offset_m, source.size(), target.size());
     printError("ours", truth, ours.T_target_source, ours_s);
-    if (theirs) printError("gicp", truth, *theirs, pcl_s);
-    else std::printf("  gicp did not converge");
+    if (theirs)
+      printError("gicp", truth, *theirs, pcl_s);
+    else
+      std::printf("  gicp did not converge");
     std::printf("\n");
   }
   return 0;

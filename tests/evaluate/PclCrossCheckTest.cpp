@@ -1,7 +1,6 @@
 // PCL as an independent check of two of our own parts: map.pcd must load in PCL's reader (the one
 // pcl_viewer and CloudCompare's PCL plugin use) point for point, and our point-to-plane ICP must
 // find the same motion as PCL's generalized ICP on the same pair of scans.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
@@ -12,6 +11,7 @@
 
 #include "PclGicp.hpp"
 #include "SyntheticScene.hpp"
+#include "TestTmp.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/Registration.hpp"
 

@@ -1,7 +1,6 @@
 // The planners on the real SUMO nets, one parameterised suite per property: every node covered
 // with legal turns (planner x net), the postman's length against its lower bounds (per net) and
 // SUMO driving the route to its end without teleports (planner x net).
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -13,6 +12,7 @@
 #include <tuple>
 
 #include "RlTestUtil.hpp"
+#include "TestTmp.hpp"
 
 namespace slamroute::rl {
 namespace {
@@ -112,10 +112,9 @@ TEST_P(SumoDrivesRoute, ToItsEndWithoutTeleports) {
   fs::create_directories(dir);
   r.writeRouXml(dir / "route.rou.xml");
   const fs::path log = dir / "sumo.log";
-  const std::string cmd = "/usr/bin/sumo -n " + net.string() + " -r " +
-                          (dir / "route.rou.xml").string() +
-                          " --end 200000 --no-step-log --duration-log.statistics > " +
-                          log.string() + " 2>&1";
+  const std::string cmd =
+      "/usr/bin/sumo -n " + net.string() + " -r " + (dir / "route.rou.xml").string() +
+      " --end 200000 --no-step-log --duration-log.statistics > " + log.string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
   const std::string out = readFile(log);
   EXPECT_EQ(rc, 0) << out;
