@@ -25,11 +25,6 @@ struct Context {
 /// Throws std::runtime_error / std::invalid_argument with one line naming the file.
 void loadConfigFile(const std::string& file, AppConfig& cfg);
 
-/// Thrown by commands that do not exist yet; main() prints it and exits with code 2.
-struct NotImplemented : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 void registerNetworkInfo(CLI::App& app, Context& ctx);
 void registerConfig(CLI::App& app, Context& ctx);
 void registerSurvey(CLI::App& app, Context& ctx);

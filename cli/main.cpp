@@ -85,9 +85,6 @@ int main(int argc, char** argv) {
     std::cerr << "slamroute: error: " << (e.path1().empty() ? "" : e.path1().string() + ": ")
               << e.code().message() << "\n";
     return 1;
-  } catch (const cli::NotImplemented& e) {
-    std::cerr << "slamroute: " << e.what() << "\n";
-    return 2;
   } catch (const std::exception& e) {
     std::cerr << "slamroute: error: " << e.what() << "\n";
     return 1;
