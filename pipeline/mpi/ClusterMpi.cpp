@@ -29,10 +29,11 @@ class MpiCluster : public Cluster {
   void send(int to, Tag tag, const std::string& text) override {
     // Buffered: the message is copied out and the call returns at once, even when the
     // receiver is busy or gone.
+    auto copy = std::make_unique<std::string>(text);  // the buffer must outlive the send
     MPI_Request req;
-    if (MPI_Isend(text.data(), static_cast<int>(text.size()), MPI_CHAR, to, static_cast<int>(tag),
+    if (MPI_Isend(copy->data(), static_cast<int>(copy->size()), MPI_CHAR, to, static_cast<int>(tag),
                   MPI_COMM_WORLD, &req) == MPI_SUCCESS)
-      pending_.push_back({std::make_unique<std::string>(text), req});
+      pending_.push_back({std::move(copy), req});
     reap();
   }
 
