@@ -10,6 +10,7 @@ PACKAGES=(
   libeigen3-dev libboost-graph-dev libpcl-dev libopencv-dev libembree-dev liblemon-dev
   libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   libtbb-dev libpugixml-dev libnanoflann-dev zlib1g-dev mpi-default-dev
+  libopenmpi-dev openmpi-bin            # `slamroute sweep` over MPI ranks; its tests run mpirun
   libproj-dev                           # net x/y -> WGS84 lon/lat for GPX / KML
   libxml2-utils                         # xmllint: tests validate GPX against its schema
   chromium                              # headless browser: the report.html test opens the page

@@ -160,6 +160,30 @@ std::string summaryPlots(const std::vector<RowResult>& results, const fs::path& 
   return md.str();
 }
 
+const char* stateName(TaskState s) {
+  switch (s) {
+    case TaskState::Waiting: return "waiting";
+    case TaskState::Ready: return "ready";
+    case TaskState::Running: return "running";
+    case TaskState::Done: return "done";
+    case TaskState::Failed: return "failed";
+    case TaskState::Skipped: return "skipped";
+  }
+  return "?";
+}
+
+/// One line per task: how it ended, its starts and the run time of its successful start.
+std::string tasksCsv(const SweepOutcome& o) {
+  std::ostringstream csv;
+  csv << "task,state,attempts,kept,seconds\n";
+  for (std::size_t i = 0; i < o.tasks.size(); ++i) {
+    const TaskStatus& s = o.status[i];
+    csv << o.tasks[i].name << "," << stateName(s.state) << "," << s.attempts << "," << (s.kept ? 1 : 0) << ","
+        << num(s.seconds) << "\n";
+  }
+  return csv.str();
+}
+
 std::string failedList(const SweepOutcome& o) {
   std::ostringstream txt;
   for (std::size_t i = 0; i < o.tasks.size(); ++i) {
@@ -194,6 +218,7 @@ void writeSweepResults(const std::vector<RowResult>& results, const SweepOutcome
                        const fs::path& out, const std::string& command) {
   writeFileAtomic(out / "results.csv", resultsCsv(results));
   writeFileAtomic(out / "failed_tasks.txt", failedList(outcome));
+  writeFileAtomic(out / "tasks.csv", tasksCsv(outcome));
   std::ostringstream md;
   md << "# Sweep summary\n\nCommand: `" << command << "`  \n" << taskCounts(outcome)
      << ".\n\nMean ± sample standard deviation over the seeds of each net, config variant and "

@@ -1,7 +1,8 @@
 #pragma once
 // A sweep's results: DIR/results.csv (one row per net x variant x planner x seed with every
 // metric of its route and SLAM evaluation), DIR/summary.md (mean +- sd per net x variant x
-// planner, a plot per headline metric) and DIR/failed_tasks.txt.
+// planner, a plot per headline metric), DIR/failed_tasks.txt and DIR/tasks.csv (each task's
+// fate and run time).
 #include <filesystem>
 #include <map>
 #include <string>
@@ -26,7 +27,7 @@ struct RowResult {
 std::vector<RowResult> collectResults(const std::vector<SweepRow>& rows, const SweepOutcome& outcome,
                                       const std::filesystem::path& out);
 
-/// Writes results.csv, summary.md (+ summary/*.png) and failed_tasks.txt under `out`.
+/// Writes results.csv, summary.md (+ summary/*.png), failed_tasks.txt and tasks.csv under `out`.
 void writeSweepResults(const std::vector<RowResult>& results, const SweepOutcome& outcome,
                        const std::filesystem::path& out, const std::string& command);
 
