@@ -16,7 +16,7 @@ measure() {  # NAME COMMAND...
   local name="$1"; shift
   local t0 t1
   t0=$(date +%s.%N)
-  "$@" > "$OUT/$name.log" 2>&1
+  "$@" > "$OUT/$name.log" 2>&1 || echo "$name: exit code $? (see $OUT/$name/failed_tasks.txt)"
   t1=$(date +%s.%N)
   python3 - "$OUT/$name" "$t0" "$t1" "$name" <<'PY'
 import csv, sys

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Elapsed.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -18,10 +19,7 @@
 namespace slamroute::pipeline {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using nlohmann::json;
-
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 struct RankState {
   bool alive = true;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Elapsed.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/pipeline/Memory.hpp"
@@ -15,10 +16,7 @@
 namespace slamroute::pipeline {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using nlohmann::json;
-
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 struct Running {
   std::size_t task;

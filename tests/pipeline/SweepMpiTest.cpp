@@ -43,7 +43,15 @@ std::string mpirunSweep(int ranks, bool recovery, const fs::path& spec, const fs
          " " + extra;
 }
 
-bool haveMpirun() { return test::runCommand("command -v mpirun").code == 0; }
+/// Why the MPI tests cannot run here; empty when they can.
+std::string whyNoMpi() {
+#ifndef SLAMROUTE_WITH_MPI
+  return "slamroute built without MPI (scripts/setup.sh installs libopenmpi-dev)";
+#endif
+  if (test::runCommand("command -v mpirun").code != 0)
+    return "mpirun not found (scripts/setup.sh installs openmpi-bin)";
+  return "";
+}
 
 /// results.csv's rows: every metric but the run's own timings (left out of the file).
 std::vector<std::string> csvLines(const fs::path& csv) {
@@ -54,10 +62,7 @@ std::vector<std::string> csvLines(const fs::path& csv) {
 }
 
 TEST(SweepMpi, TwoRanksGiveTheRowsOfALocalSweep) {
-#ifndef SLAMROUTE_WITH_MPI
-  GTEST_SKIP() << "slamroute built without MPI (scripts/setup.sh installs libopenmpi-dev)";
-#endif
-  if (!haveMpirun()) GTEST_SKIP() << "mpirun not found (scripts/setup.sh installs openmpi-bin)";
+  if (const std::string why = whyNoMpi(); !why.empty()) GTEST_SKIP() << why;
   const auto dir = test::cliTempDir("sweep_mpi");
   const fs::path spec = writeSpec(dir);
   const auto mpi = test::runCommand(mpirunSweep(2, false, spec, dir / "mpi", ""));
@@ -84,10 +89,7 @@ TEST(SweepMpi, TwoRanksGiveTheRowsOfALocalSweep) {
 }
 
 TEST(SweepMpi, AKilledWorkersTaskIsRequeued) {
-#ifndef SLAMROUTE_WITH_MPI
-  GTEST_SKIP() << "slamroute built without MPI (scripts/setup.sh installs libopenmpi-dev)";
-#endif
-  if (!haveMpirun()) GTEST_SKIP() << "mpirun not found (scripts/setup.sh installs openmpi-bin)";
+  if (const std::string why = whyNoMpi(); !why.empty()) GTEST_SKIP() << why;
   const auto dir = test::cliTempDir("sweep_kill");
   const fs::path spec = writeSpec(dir), out = dir / "out";
   const fs::path log = dir / "sweep.log";
