@@ -28,8 +28,9 @@ std::string commandLine(const Context& ctx, const SweepOpts& o, int ranks) {
 
 /// Rank 0: the study's tasks run to the end, then its results; throws when tasks failed.
 void scheduleStudy(Context& ctx, const SweepOpts& o, pipeline::Cluster& cluster, const fs::path& out) {
-  const pipeline::SweepSpec spec = pipeline::SweepSpec::readYaml(o.spec);
+  const pipeline::SweepSpec spec = pipeline::SweepSpec::readYaml(o.spec);  // before DIR exists
   const auto rows = spec.expand();
+  fs::create_directories(out);
   auto tasks = pipeline::sweepTasks(spec, rows, out, childOptions(ctx));
   logInfo("sweep: " + std::to_string(rows.size()) + " runs, " + std::to_string(tasks.size()) + " tasks on " +
           std::to_string(cluster.size()) + " rank(s), " + std::to_string(o.run.jobs_per_rank) + " at once each");
@@ -50,7 +51,6 @@ void runSweep(Context& ctx, const SweepOpts& o) {
   const fs::path out = fs::weakly_canonical(fs::absolute(o.out));
   const auto cluster = pipeline::joinCluster();
   if (cluster->rank() > 0) return pipeline::serveSweep(*cluster, out, o.run);
-  fs::create_directories(out);
   try {
     scheduleStudy(ctx, o, *cluster, out);
   } catch (...) {
