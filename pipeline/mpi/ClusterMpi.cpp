@@ -22,7 +22,17 @@ class MpiCluster : public Cluster {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
-  ~MpiCluster() override { MPI_Finalize(); }
+  ~MpiCluster() override {
+    // Sends still pending go to a rank that died: cancelled, or MPI_Finalize would wait for them.
+    for (auto& p : pending_) {
+      MPI_Cancel(&p.req);
+      MPI_Request_free(&p.req);
+    }
+    // MPI_Finalize synchronises with every rank and would wait for a dead one forever; the
+    // launcher ends the job once this process exits.
+    if (!peer_died_) MPI_Finalize();
+  }
+  void peerDied(int) override { peer_died_ = true; }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
 
@@ -69,6 +79,7 @@ class MpiCluster : public Cluster {
   }
 
   int rank_ = 0, size_ = 1;
+  bool peer_died_ = false;
   std::vector<Pending> pending_;
 };
 

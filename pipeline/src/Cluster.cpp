@@ -16,6 +16,7 @@ class SingleRank : public Cluster {
     throw std::logic_error("sweep: a single rank has no one to send to");
   }
   std::optional<Message> poll() override { return std::nullopt; }
+  void peerDied(int) override {}
 };
 
 const char* envOf(const char* name) { return std::getenv(name); }

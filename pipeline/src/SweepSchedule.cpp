@@ -97,6 +97,7 @@ class Scheduler {
       RankState& s = rank(r);
       if (!s.alive || secondsSince(s.heard) < o_.worker_timeout_s) continue;
       s.alive = false;
+      c_.peerDied(r);
       logWarn("rank " + std::to_string(r) + " silent for " + std::to_string(static_cast<int>(o_.worker_timeout_s)) +
               " s: taken for dead, its " + std::to_string(s.running.size()) + " task(s) re-queued");
       for (std::size_t i : s.running) {

@@ -26,6 +26,8 @@ class Cluster {
   virtual void send(int to, Tag tag, const std::string& text) = 0;
   /// A message that has arrived, if any (never waits).
   virtual std::optional<Message> poll() = 0;
+  /// The scheduler took rank `r` for dead: the cluster does not wait for it when it shuts down.
+  virtual void peerDied(int r) = 0;
 };
 
 /// Whether this process was started by an MPI launcher (mpirun, srun with PMI/PMIx).
