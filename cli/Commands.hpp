@@ -35,6 +35,7 @@ void registerEvaluate(CLI::App& app, Context& ctx);
 void registerCompare(CLI::App& app, Context& ctx);
 void registerRun(CLI::App& app, Context& ctx);
 void registerExperiment(CLI::App& app, Context& ctx);
+void registerSweep(CLI::App& app, Context& ctx);
 
 /// The shipped default city (networks/default_city/default_city.net.xml).
 std::string defaultNetPath();

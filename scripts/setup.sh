@@ -10,6 +10,7 @@ PACKAGES=(
   libeigen3-dev libboost-graph-dev libopencv-dev libembree-dev liblemon-dev
   libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   libtbb-dev libpugixml-dev libnanoflann-dev zlib1g-dev mpi-default-dev
+  libopenmpi-dev openmpi-bin            # `slamroute sweep` over MPI ranks; its tests run mpirun
   libproj-dev                           # net x/y -> WGS84 lon/lat for GPX / KML
   libpcl-dev                            # tests and bench_pcl: PCL checks map.pcd and our ICP
   libxml2-utils                         # xmllint: tests validate GPX against its schema
