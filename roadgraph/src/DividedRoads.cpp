@@ -197,6 +197,32 @@ void contractPlaces(GraphBuildResult& out, UnionFind& sets) {
   out.node_is_end = std::move(is_end);
 }
 
+/// A place whose every edge ran inside it has none left: a planner must reach every node, so it
+/// goes (as assembleGraph drops nodes without streets).
+void dropNodesWithoutEdges(GraphBuildResult& out) {
+  RoadGraph& g = out.graph;
+  std::vector<int> new_id(g.nodes.size(), -1);
+  for (const auto& e : g.edges)
+    new_id[static_cast<std::size_t>(e.u)] = new_id[static_cast<std::size_t>(e.v)] = 0;
+  if (std::count(new_id.begin(), new_id.end(), -1) == 0) return;
+  std::vector<RoadNode> nodes;
+  std::vector<char> is_end;
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    if (new_id[n] < 0) continue;
+    new_id[n] = static_cast<int>(nodes.size());
+    nodes.push_back(g.nodes[n]);
+    nodes.back().id = new_id[n];
+    is_end.push_back(out.node_is_end[n]);
+  }
+  for (auto& e : g.edges) {
+    e.u = new_id[static_cast<std::size_t>(e.u)];
+    e.v = new_id[static_cast<std::size_t>(e.v)];
+  }
+  out.stats.isolated_nodes_dropped += g.nodes.size() - nodes.size();
+  g.nodes = std::move(nodes);
+  out.node_is_end = std::move(is_end);
+}
+
 /// Step 3: one street id for the two carriageways (one-way u -> v and v -> u, similar length).
 std::size_t pairCarriageways(RoadGraph& g, const DividedRoadConfig& cfg) {
   const std::vector<int> per_street = edgesPerStreet(g);
@@ -243,7 +269,10 @@ void mergeDividedRoads(GraphBuildResult& out, const DividedRoadConfig& cfg, doub
   std::size_t pairs = 0;
   UnionFind sets = carriagewayPartners(out, cfg, half_height_m, pairs);
   out.stats.divided_node_pairs = pairs;
-  if (pairs > 0) contractPlaces(out, sets);
+  if (pairs > 0) {
+    contractPlaces(out, sets);
+    dropNodesWithoutEdges(out);
+  }
   out.stats.divided_streets = pairCarriageways(out.graph, cfg);
   if (pairs > 0 || out.stats.divided_streets > 0) recount(out.graph, out.node_is_end, out.stats);
 }

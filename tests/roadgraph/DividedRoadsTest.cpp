@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "DividedRoads.hpp"
 #include "LaneTraces.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/roadgraph/GraphBuilder.hpp"
@@ -113,6 +114,55 @@ TEST(DividedRoads, EachDirectionDrivesItsOwnCarriageway) {
   EXPECT_NEAR(middle(*west).y(), 311.2, 1.5);
   EXPECT_EQ(east->sumo_edges, std::vector<std::string>{"g10s_g11s"});
   EXPECT_EQ(west->sumo_edges, std::vector<std::string>{"g11n_g10n"});
+}
+
+RoadEdge straightEdge(int id, int street, int u, int v, const Point3& a, const Point3& b) {
+  RoadEdge e;
+  e.id = id;
+  e.street = street;
+  e.u = u;
+  e.v = v;
+  for (int k = 0; k <= 10; ++k) e.polyline.push_back(a + (b - a) * (k / 10.0));
+  e.length_m = polylineLength(e.polyline);
+  return e;
+}
+
+// The merge on a hand-made graph: carriageways y = -8 (eastbound) and y = +8 (westbound) between
+// x = 0 and x = 200, crossing streets joining the two carriageway nodes at each end (two-way),
+// and a two-way side street from the east place north to (200, 100). Known answer: the four
+// carriageway nodes become two at (0, 0) and (200, 0), the crossing streets inside them go, the
+// carriageways are one street whose edges start and end at the merged nodes.
+TEST(DividedRoads, CarriagewayNodesMergeIntoOnePlaceEach) {
+  GraphBuildResult out;
+  RoadGraph& g = out.graph;
+  const std::vector<Point3> pos = {{0, -8, 0}, {0, 8, 0}, {200, -8, 0}, {200, 8, 0}, {200, 100, 0}};
+  for (std::size_t k = 0; k < pos.size(); ++k) g.nodes.push_back({static_cast<int>(k), pos[k], ""});
+  out.node_is_end = {0, 0, 0, 0, 1};
+  g.edges = {straightEdge(0, 0, 0, 2, pos[0], pos[2]), straightEdge(1, 1, 3, 1, pos[3], pos[1]),
+             straightEdge(2, 2, 0, 1, pos[0], pos[1]), straightEdge(3, 2, 1, 0, pos[1], pos[0]),
+             straightEdge(4, 3, 2, 3, pos[2], pos[3]), straightEdge(5, 3, 3, 2, pos[3], pos[2]),
+             straightEdge(6, 4, 3, 4, pos[3], pos[4]), straightEdge(7, 4, 4, 3, pos[4], pos[3])};
+  detail::mergeDividedRoads(out, DividedRoadConfig{}, 5.0);
+  ASSERT_EQ(g.nodes.size(), 3u);
+  EXPECT_EQ(out.stats.divided_node_pairs, 2u);
+  EXPECT_EQ(out.stats.divided_streets, 1u);
+  EXPECT_EQ(out.stats.intersections, 2u);
+  EXPECT_EQ(out.stats.streets, 2u);
+  EXPECT_TRUE(g.nodes[0].pos.isApprox(Point3(0, 0, 0)));
+  EXPECT_TRUE(g.nodes[1].pos.isApprox(Point3(200, 0, 0)));
+  ASSERT_EQ(g.edges.size(), 4u);  // the two carriageways and the side street's two directions
+  const RoadEdge &east = g.edges[0], &west = g.edges[1];
+  EXPECT_EQ(east.u, 0);
+  EXPECT_EQ(east.v, 1);
+  EXPECT_EQ(west.u, 1);
+  EXPECT_EQ(west.v, 0);
+  EXPECT_EQ(east.street, west.street);
+  EXPECT_TRUE(east.polyline.front().isApprox(g.nodes[0].pos));
+  EXPECT_TRUE(west.polyline.back().isApprox(g.nodes[0].pos));
+  EXPECT_NEAR(east.polyline[5].y(), -8.0, 1e-9);  // each direction keeps its carriageway
+  EXPECT_NEAR(west.polyline[5].y(), 8.0, 1e-9);
+  EXPECT_EQ(g.edges[2].u, 1);  // the side street now leaves the east place
+  g.validate("merged graph");
 }
 
 // Without the merge each carriageway crossing is a node of its own: the junction-level answer.
