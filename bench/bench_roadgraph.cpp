@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
       const int g = std::max(3, static_cast<int>(std::ceil(std::sqrt(n / 4.0 / 200.0))) + 1);
       const Traces tr = cityTraces(n, g, 42);
       const auto t0 = std::chrono::steady_clock::now();
-      const auto r = buildRoadGraph(tr, Config{});
+      const auto r = graphFromTraces(tr, Config{});
       const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::printf("%10zu %3dx%-3d %9zu %13zu %12d %9zu %10.2f\n", n, g, g, r.stats.voxels,
                   r.stats.intersections, g * g - 4, r.stats.streets, sec);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Offline test of a loop-closure gate (bench/RESULTS.md "Loop closures confirmed by a second
+# Offline test of a loop-closure gate (docs/NOTES.md "Loop closures confirmed by a second
 # match"): for every accepted closure of the drives in an `experiment paper` / `run` folder, is it
 # false (its measured relative pose > 2 m off the ground truth's, as bench/loop_closure_check.py
 # counts) and does another closure within 15 s repeat its correction magnitude within 0.3 m?

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks on build-graph's node validation (bench/RESULTS.md, "Node F1 over survey seeds").
+"""Checks on build-graph's node validation (bench/RESULTS.md, "Road graph: node and edge accuracy").
 
 Usage: bench/node_f1_checks.py NET.net.xml GRAPH.json [GRAPH.json ...] [--diagnose]
 

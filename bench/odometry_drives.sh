@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SLAM accuracy on drives from `slamroute drive` in the default city (bench/RESULTS.md,
-# "Odometry" > "Accuracy"). Usage: bench/odometry_drives.sh [BUILD_DIR] [OUT_DIR]
+# "Odometry: accuracy on drives from `slamroute drive`"). Usage: bench/odometry_drives.sh [BUILD_DIR] [OUT_DIR]
 #   route1k: 1.2 km through building-lined and open streets; loop: one block, back to its start;
 #   city: the three 7 km routes of `slamroute run` (out/default_city/routes, if it exists).
 # Drives record wheel odometry + gyro + IMU roll/pitch (odometry.csv); "lidar_only" rows ignore it.

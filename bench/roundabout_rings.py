@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Candidate roundabout rings of a survey and the figures of the ring test, for the diagnosis in
-bench/RESULTS.md ("Roundabouts"). An independent re-implementation of roadgraph/src/Roundabouts.cpp
+bench/RESULTS.md ("Road graph: node and edge accuracy"). An independent re-implementation of roadgraph/src/Roundabouts.cpp
 steps 1-3 with its default parameters, which prints every candidate ring (>= 3 vehicles circling
 one centre), not only the accepted ones.
 

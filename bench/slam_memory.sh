@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Memory of one SLAM run (bench/RESULTS.md "Memory of a SLAM run"): runs `slamroute evaluate` on a
+# Memory of one SLAM run (bench/RESULTS.md "SLAM memory"): runs `slamroute evaluate` on a
 # drive folder, samples its resident memory every INTERVAL seconds with the SLAM progress at that
 # moment, and ends with the maximum resident set and the wall time from /usr/bin/time -v.
 # Usage: bench/slam_memory.sh BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S=5] [CONFIG.yaml]
-# Example: bench/slam_memory.sh build out/default_city/drives/qlearning /tmp/slam_mem
+# Example: bench/slam_memory.sh build out/default_city/drives/qlearning out/slam_mem
 # (CONFIG with `evaluate: {output: {keyframe_clouds_on_disk: false}}` measures the clouds kept in memory.)
 set -euo pipefail
 if [ $# -lt 3 ]; then

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Where a drive's trajectory error lies (bench/RESULTS.md "Corner features at grazing incidence"):
+# Where a drive's trajectory error lies (docs/NOTES.md "Corner features at grazing incidence"):
 # ATE RMSE after a rigid (Umeyama, no scale) alignment split into along-street, across-street and
 # height components (in the ground truth's heading), and the per-scan relative-pose error summed
 # separately over turns (|yaw rate| > 5 deg/s) and straight stretches: a negative "along, straight"

@@ -39,7 +39,7 @@ void registerBuildGraph(CLI::App& app, Context& ctx) {
     if (o->no_depth) in.depth_index.clear();
     in.net = o->net;
     roadgraph::checkOutputsAreNotInputs(in, o->out);
-    const auto res = roadgraph::buildGraph(in, ctx.cfg.roadgraph);
+    const auto res = roadgraph::buildGraphFromInputs(in, ctx.cfg.roadgraph);
     roadgraph::writeGraphOutputs(res.built.graph, o->out);
     const auto& st = res.built.stats;
     std::cout << "graph:          " << o->out << "\n"
@@ -61,6 +61,13 @@ void registerBuildGraph(CLI::App& app, Context& ctx) {
                 << v.detected_streets << ")\n"
                 << "edge recall:    " << v.edge_recall << " (" << v.found_chains << "/"
                 << v.true_chains << ")\n";
+    }
+    if (res.place_validation) {
+      const auto& v = *res.place_validation;
+      std::cout << "places (divided roads as one street): node F1 " << v.node_f1 << " ("
+                << v.matched_nodes << " of " << v.detected_nodes << " nodes, "
+                << v.true_intersections << " places), edge precision " << v.edge_precision
+                << ", recall " << v.edge_recall << "\n";
     }
   });
 }

@@ -16,10 +16,12 @@
 
 #include "Commands.hpp"
 #include "Pipeline.hpp"
-#include "Resume.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/pipeline/JsonFile.hpp"
+#include "slamroute/pipeline/Stages.hpp"
+#include "slamroute/pipeline/Statistics.hpp"
 #include "slamroute/rl/Planners.hpp"
 #include "slamroute/rl/SyntheticGraph.hpp"
 
@@ -35,26 +37,84 @@ struct Variant {
 const std::vector<Variant> kVariants = {
     {"qlearning", "qlearning", "full"}, {"random", "random", "full"}, {"qlearning_accuracy", "qlearning", "accuracy"}};
 
-struct Stat {
-  std::vector<double> v;
-  std::string str(int prec) const {
-    if (v.empty()) return "–";
-    const double m = std::accumulate(v.begin(), v.end(), 0.0) / v.size();
-    double s = 0;
-    for (double x : v) s += (x - m) * (x - m);
-    s = v.size() > 1 ? std::sqrt(s / (v.size() - 1)) : 0.0;
-    std::ostringstream o;
-    o << std::fixed << std::setprecision(prec) << m << " ± " << s;
-    return o.str();
-  }
-};
+/// The route ids of the pipeline runs: variant name and seed.
+std::string runId(const Variant& v, int seed) { return v.name + "_s" + std::to_string(seed); }
 
-json readJsonFile(const fs::path& p) {
-  try {
-    return json::parse(readFile(p));
-  } catch (const std::exception&) {
-    return json::object();
-  }
+/// Plans, drives and evaluates every variant for seeds 1..`seeds` on one survey and graph.
+void runPaperPipeline(const Context& ctx, const std::string& net_path, const fs::path& out, int seeds,
+                      int jobs, bool resume, double status_every) {
+  const SumoNet net = SumoNet::read(net_path);
+  const pipeline::RunLayout run{out};
+  const pipeline::ChildOptions child = childOptions(ctx);
+  pipeline::StageRunner stages(resume, status_every);
+  logInfo("[1/4] survey and road graph");
+  pipeline::surveyAndGraph(stages, child, run, net_path);
+  logInfo("[2/4] planning " + std::to_string(seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
+  std::vector<pipeline::PlanRequest> plans;
+  std::vector<std::string> ids;
+  std::vector<long long> id_seeds;
+  for (int s = 1; s <= seeds; ++s)
+    for (const auto& v : kVariants) {
+      // The random walk's budget: the same seed's Q-learning route length.
+      plans.push_back({runId(v, s), v.planner, v.reward, s,
+                       v.planner == "random" ? runId(kVariants[0], s) : std::string()});
+      ids.push_back(runId(v, s));
+      id_seeds.push_back(s);
+    }
+  pipeline::planRoutes(stages, child, run, plans, jobs);
+  for (const auto& id : ids) pipeline::makeRouteDrivable(net, run.route(id));
+  logInfo("[3/4] driving and LiDAR SLAM");
+  pipeline::driveRoutes(stages, child, run, net_path, ids, id_seeds, false, jobs);
+  pipeline::evaluateDrives(stages, child, run, ids, id_seeds, 0, jobs,
+                           ctx.cfg.evaluate.output.keyframe_clouds_on_disk);
+}
+
+/// Per variant and quantity, the values over the seeds.
+using Samples = std::map<std::string, std::map<std::string, std::vector<double>>>;
+
+Samples collectSamples(const fs::path& out, int seeds) {
+  const pipeline::RunLayout run{out};
+  Samples st;
+  for (int s = 1; s <= seeds; ++s)
+    for (const auto& v : kVariants) {
+      const json r = pipeline::readJsonIfPresent(run.route(runId(v, s)));
+      const json m = pipeline::readJsonIfPresent(run.metrics(runId(v, s)));
+      auto add = [&](const json& j, const char* k, const std::string& key, double scale = 1.0) {
+        if (j.contains(k) && j[k].is_number()) st[v.name][key].push_back(j[k].get<double>() * scale);
+      };
+      add(m, "ate_rmse_m", "ate_rmse");
+      add(m, "ate_mean_m", "ate_mean");
+      add(m, "rpe_trans_pct", "rpe");
+      add(m, "loop_closures", "lc");
+      add(r, "length_m", "len", 1e-3);
+      add(r, "edge_coverage_pct", "cov");
+      add(r, "node_coverage_pct", "ncov");
+    }
+  return st;
+}
+
+/// Tables 1 and 2 from the evaluations of every seed.
+std::string paperTables12(const fs::path& out, int seeds) {
+  Samples st = collectSamples(out, seeds);
+  auto row = [&](const std::string& v) {
+    auto& x = st[v];
+    auto cell = [&](const char* k, int prec) { return pipeline::formatMeanSd(pipeline::meanSd(x[k]), prec); };
+    return "| " + v + " | " + cell("ate_mean", 3) + " | " + cell("ate_rmse", 3) + " | " + cell("rpe", 2) + " | " +
+           cell("lc", 1) + " | " + cell("len", 2) + " | " + cell("cov", 1) + " | " + cell("ncov", 1) + " |\n";
+  };
+  const std::string head =
+      "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | street coverage [%] | node coverage [%] |\n"
+      "|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream md;
+  md << "## Table 1: Q-learning vs random route (mean ± std over " << seeds << (seeds == 1 ? " seed" : " seeds")
+     << ")\n\n"
+     << "Paper: proposed 0.4006 m vs random 0.5745 m average trajectory error (−30 %). Here the "
+        "random walk drives as far as the same seed's Q-learning route (equal budget).\n\n"
+     << head << row("qlearning") << row("random") << "\n";
+  md << "## Table 2: full reward vs accuracy-only reward\n\n"
+     << "Paper: accuracy-only had the lower error (0.1645 m vs 0.4006 m) but covered about half the area.\n\n"
+     << head << row("qlearning") << row("qlearning_accuracy") << "\n";
+  return md.str();
 }
 
 std::string table3(const std::vector<int>& sizes, std::uint64_t seed, const rl::Config& base) {
@@ -122,8 +182,6 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     const auto t0 = std::chrono::steady_clock::now();
     const fs::path out = fs::weakly_canonical(fs::absolute(o->out));
     fs::create_directories(out / "logs");
-    // Every step is stamped; with --resume, steps done before from the same inputs are kept.
-    auto todo = [&o](std::vector<Step> steps) { return stepsToRun(std::move(steps), o->resume); };
     std::ostringstream md;
     // The command that reproduces these tables, with every setting that shapes them.
     std::string sizes;
@@ -136,111 +194,9 @@ void registerExperiment(CLI::App& app, Context& ctx) {
 
     if (!o->table3_only) {
       const std::string net_path = fs::weakly_canonical(fs::absolute(o->net.empty() ? defaultNetPath() : o->net)).string();
-      const SumoNet net = SumoNet::read(net_path);
       md << "Net: `" << net_path << "`\n\n";
-      logInfo("[1/4] survey and road graph");
-      std::vector<Step> s1{childStep(ctx, "survey", {"survey", "--net", net_path, "--out", (out / "survey").string()},
-                                     out / "logs" / "survey.log")};
-      s1[0].output = out / "survey" / "survey.json";
-      runSteps(todo(s1), 1, o->status_every);
-      const fs::path graph = out / "graph" / "graph.json";
-      std::vector<Step> s2{childStep(ctx, "build-graph",
-                                     {"build-graph", "--survey", (out / "survey").string(), "--net", net_path,
-                                      "--out", graph.string()},
-                                     out / "logs" / "build-graph.log")};
-      s2[0].output = fs::path(graph).replace_extension(".png");  // the last of graph.json's siblings
-      runSteps(todo(s2), 1, o->status_every);
-
-      logInfo("[2/4] planning " + std::to_string(o->seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
-      std::vector<Step> plans, random_plans, drives, evals;
-      std::vector<std::string> eval_ids;  // route ids of `evals`
-      for (int s = 1; s <= o->seeds; ++s)
-        for (const auto& v : kVariants) {
-          const std::string id = v.name + "_s" + std::to_string(s);
-          std::vector<std::string> a{"plan", "--graph", graph.string(), "--planner", v.planner, "--reward",
-                                     v.reward, "--out", (out / "routes" / (id + ".json")).string()};
-          if (v.planner == "random") {
-            // Equal driving budget: the same seed's Q-learning route length.
-            const fs::path q = out / "routes" / ("qlearning_s" + std::to_string(s) + ".json");
-            a.push_back("--max-length");
-            a.push_back("@" + q.string());  // filled in after the Q-learning plans exist
-          }
-          (v.planner == "random" ? random_plans : plans)
-              .push_back(childStep(ctx, "plan " + id, a, out / "logs" / ("plan-" + id + ".log"), s));
-          (v.planner == "random" ? random_plans : plans).back().output = out / "routes" / (id + ".json");
-          drives.push_back(childStep(ctx, "drive " + id,
-                                     {"drive", "--net", net_path, "--route", (out / "routes" / (id + ".json")).string(),
-                                      "--out", (out / "drives" / id).string()},
-                                     out / "logs" / ("drive-" + id + ".log"), s));
-          drives.back().output = out / "drives" / id / "drive.json";  // the folder appears complete
-          eval_ids.push_back(id);
-          evals.push_back(childStep(ctx, "evaluate " + id,
-                                    {"evaluate", "--drive", (out / "drives" / id).string(), "--out",
-                                     (out / "eval" / id).string()},
-                                    out / "logs" / ("evaluate-" + id + ".log"), s));
-          evals.back().output = out / "eval" / id / "metrics.json";  // written last
-        }
-      runSteps(todo(plans), o->jobs, o->status_every);
-      for (auto& st : random_plans)
-        for (auto& a : st.args)
-          if (!a.empty() && a[0] == '@') a = std::to_string(routeLength(a.substr(1)));
-      runSteps(todo(random_plans), o->jobs, o->status_every);
-      for (int s = 1; s <= o->seeds; ++s)
-        for (const auto& v : kVariants) makeRouteDrivable(net, out / "routes" / (v.name + "_s" + std::to_string(s) + ".json"));
-      logInfo("[3/4] driving and LiDAR SLAM");
-      runSteps(todo(drives), o->jobs, o->status_every);
-      {
-        // As many SLAM runs at once as the memory holds (slamMemoryGb per route length).
-        std::vector<double> lengths;
-        for (const auto& id : eval_ids) lengths.push_back(routeLength(out / "routes" / (id + ".json")));
-        const auto left = todo(evals);
-        std::string mem;
-        const int fit = slamJobsThatFit(lengths, o->jobs, ctx.cfg.evaluate.output.keyframe_clouds_on_disk, &mem);
-        if (fit < std::min<int>(o->jobs, static_cast<int>(left.size())))
-          logInfo("  " + std::to_string(fit) + " SLAM run(s) at once to fit the memory (" + mem + ")");
-        runSteps(left, fit, o->status_every);
-      }
-
-      std::map<std::string, std::map<std::string, Stat>> st;
-      for (int s = 1; s <= o->seeds; ++s)
-        for (const auto& v : kVariants) {
-          const std::string id = v.name + "_s" + std::to_string(s);
-          const json r = readJsonFile(out / "routes" / (id + ".json"));
-          const json m = readJsonFile(out / "eval" / id / "metrics.json");
-          auto add = [&](const json& j, const char* k, const std::string& key) {
-            if (j.contains(k) && j[k].is_number()) st[v.name][key].v.push_back(j[k].get<double>());
-          };
-          add(m, "ate_rmse_m", "ate_rmse");
-          add(m, "ate_mean_m", "ate_mean");
-          add(m, "rpe_trans_pct", "rpe");
-          add(m, "loop_closures", "lc");
-          add(r, "length_m", "len");
-          add(r, "edge_coverage_pct", "cov");
-          add(r, "node_coverage_pct", "ncov");
-        }
-      auto row = [&](const std::string& v) {
-        auto& x = st[v];
-        std::ostringstream o2;
-        o2 << "| " << v << " | " << x["ate_mean"].str(3) << " | " << x["ate_rmse"].str(3) << " | " << x["rpe"].str(2)
-           << " | " << x["lc"].str(1) << " | " << Stat{[&] {
-                auto l = x["len"].v;
-                for (auto& e : l) e /= 1000.0;
-                return l;
-              }()}.str(2)
-           << " | " << x["cov"].str(1) << " | " << x["ncov"].str(1) << " |\n";
-        return o2.str();
-      };
-      const std::string head =
-          "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | street coverage [%] | node coverage [%] |\n"
-          "|---|---|---|---|---|---|---|---|\n";
-      md << "## Table 1: Q-learning vs random route (mean ± std over " << o->seeds << (o->seeds == 1 ? " seed" : " seeds")
-         << ")\n\n"
-         << "Paper: proposed 0.4006 m vs random 0.5745 m average trajectory error (−30 %). Here the "
-            "random walk drives as far as the same seed's Q-learning route (equal budget).\n\n"
-         << head << row("qlearning") << row("random") << "\n";
-      md << "## Table 2: full reward vs accuracy-only reward\n\n"
-         << "Paper: accuracy-only had the lower error (0.1645 m vs 0.4006 m) but covered about half the area.\n\n"
-         << head << row("qlearning") << row("qlearning_accuracy") << "\n";
+      runPaperPipeline(ctx, net_path, out, o->seeds, o->jobs, o->resume, o->status_every);
+      md << paperTables12(out, o->seeds);
     }
 
     logInfo("[4/4] planning time vs graph size");

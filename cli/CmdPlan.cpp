@@ -9,6 +9,7 @@
 
 #include "Commands.hpp"
 #include "CrewFiles.hpp"
+#include "PlanFleet.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/RoadGraph.hpp"
@@ -54,6 +55,7 @@ void registerPlan(CLI::App& app, Context& ctx) {
     std::string graph, net, planner, out, start_junction, reward, goal, geo_origin;
     int start = -1;
     double max_length_m = -1.0;
+    FleetPlanOptions fleet;
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("plan", "Plan a mapping route on a graph or net (paper 3.2)");
@@ -62,7 +64,14 @@ void registerPlan(CLI::App& app, Context& ctx) {
   g_opt->excludes(n_opt);
   sub->add_option("--planner", o->planner,
                   "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | "
-                  "switching (default: rl.planner)");
+                  "switching | partition (fleet only) (default: rl.planner)");
+  sub->add_option("--vehicles", o->fleet.vehicles,
+                  "K vehicles share the streets (postman or partition; default: rl.fleet.vehicles)")
+      ->check(CLI::Range(1, 1000));
+  auto* d_opt = sub->add_option("--depot", o->fleet.depot,
+                                "fleet: SUMO edge every vehicle leaves from and returns to");
+  sub->add_option("--depots", o->fleet.depots, "fleet: one depot SUMO edge per vehicle, E1,E2,..")
+      ->excludes(d_opt);
   sub->add_option("--out", o->out, "output route (route.json)")->required();
   auto* s_opt = sub->add_option("--start", o->start, "start node id (default: rl.start_node)");
   sub->add_option("--start-junction", o->start_junction, "start at the node of this SUMO junction")
@@ -98,8 +107,10 @@ void registerPlan(CLI::App& app, Context& ctx) {
     }
     if (o->start >= 0) cfg.start_node = o->start;
     if (!o->start_junction.empty()) cfg.start_node = nodeOfJunction(g, o->start_junction);
-    const Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
     const std::filesystem::path out(o->out);
+    if (isFleetRequest(cfg, o->fleet))
+      return planFleetCommand(ctx, g, cfg, o->fleet, where, out, net.has_value());
+    const Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
     if (r.sumo_edges.empty() && !o->net.empty())
       throw std::runtime_error("plan: the route has no SUMO edges; cannot write the .rou.xml");
     const std::filesystem::path rou = writeRouteFiles(r, out);

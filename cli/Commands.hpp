@@ -25,11 +25,6 @@ struct Context {
 /// Throws std::runtime_error / std::invalid_argument with one line naming the file.
 void loadConfigFile(const std::string& file, AppConfig& cfg);
 
-/// Thrown by commands that do not exist yet; main() prints it and exits with code 2.
-struct NotImplemented : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 void registerNetworkInfo(CLI::App& app, Context& ctx);
 void registerConfig(CLI::App& app, Context& ctx);
 void registerSurvey(CLI::App& app, Context& ctx);
@@ -40,6 +35,7 @@ void registerEvaluate(CLI::App& app, Context& ctx);
 void registerCompare(CLI::App& app, Context& ctx);
 void registerRun(CLI::App& app, Context& ctx);
 void registerExperiment(CLI::App& app, Context& ctx);
+void registerSweep(CLI::App& app, Context& ctx);
 
 /// The shipped default city (networks/default_city/default_city.net.xml).
 std::string defaultNetPath();

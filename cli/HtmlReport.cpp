@@ -16,6 +16,7 @@
 #include "slamroute/core/Trajectory.hpp"
 #include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/export/GeoProjection.hpp"
+#include "slamroute/pipeline/JsonFile.hpp"
 
 namespace slamroute::cli {
 namespace fs = std::filesystem;
@@ -41,14 +42,6 @@ struct MapFrame {
     return out;
   }
 };
-
-json readJsonOr(const fs::path& p) {
-  try {
-    return fs::exists(p) ? json::parse(readFile(p)) : json::object();
-  } catch (const std::exception&) {
-    return json::object();
-  }
-}
 
 json streetsLayer(const SumoNet& net, const MapFrame& f) {
   json out = json::array();
@@ -136,8 +129,8 @@ std::string cell(const json& j, const char* key, int prec, double scale = 1.0) {
 json resultsTable(const ReportInputs& in) {
   json rows = json::array();
   for (const auto& p : in.planners) {
-    const json r = readJsonOr(in.out / "routes" / (p + ".json"));
-    const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
+    const json r = pipeline::readJsonIfPresent(in.out / "routes" / (p + ".json"));
+    const json m = pipeline::readJsonIfPresent(in.out / "eval" / p / "metrics.json");
     rows.push_back({p, cell(r, "length_m", 2, 1e-3), cell(r, "edge_coverage_pct", 1),
                     cell(r, "node_coverage_pct", 1), cell(r, "loop_closures", 0),
                     cell(m, "ate_rmse_m", 3), cell(m, "ate_mean_m", 3), cell(m, "rpe_trans_pct", 2),
@@ -198,7 +191,7 @@ json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& ne
   // The map from above coloured by its distance to the world surface (evaluate's picture).
   if (const fs::path png = in.out / "eval" / p / "map_error_top.png"; fs::exists(png))
     pd["map_error_png"] = "data:image/png;base64," + base64(readFile(png));
-  const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
+  const json m = pipeline::readJsonIfPresent(in.out / "eval" / p / "metrics.json");
   pd["metrics"] = json::object();
   for (const char* k : {"ate_rmse_m", "ate_max_m", "rpe_trans_pct", "map_median_dist_m",
                         "map_far_share", "map_aligned_median_dist_m", "loop_closures"})

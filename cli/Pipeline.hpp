@@ -1,53 +1,30 @@
 #pragma once
-// Pieces shared by `run` and `experiment`: child steps carrying the global options, and making a
-// planned route drivable in SUMO.
+// The pipeline library (pipeline/) as the commands use it: child steps carrying the global
+// options of this invocation, and the library's names in this namespace.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "Commands.hpp"
 #include "Subprocess.hpp"
-
-namespace slamroute {
-struct SumoNet;
-}
+#include "slamroute/pipeline/Memory.hpp"
+#include "slamroute/pipeline/Steps.hpp"
 
 namespace slamroute::cli {
+
+using pipeline::availableMemoryGb;
+using pipeline::makeRouteDrivable;
+using pipeline::routeLength;
+using pipeline::slamJobsForMemory;
+using pipeline::slamJobsThatFit;
+using pipeline::slamMemoryGb;
+
+/// The global options of this invocation (seed, config file, log level) for child steps.
+pipeline::ChildOptions childOptions(const Context& ctx);
 
 /// A child step `slamroute [--seed S] [--config C] [--log-level L] ARGS…`; `seed` overrides the
 /// context's seed when >= 0.
 Step childStep(const Context& ctx, const std::string& label, std::vector<std::string> args,
                const std::filesystem::path& log, long long seed = -1);
-
-/// Length of a planned route [m] (route.json's length_m).
-double routeLength(const std::filesystem::path& route_json);
-
-/// Peak memory of one SLAM run (`evaluate`) of a drive of `route_km` [GB]; it grows with the
-/// length (bench/RESULTS.md "Memory of a SLAM run"). With the keyframe clouds on disk (the
-/// default, evaluate.output.keyframe_clouds_on_disk) and the map merged tile by tile: measured 330,444 kB
-/// for 14.9 km (default city, qlearning) and 698,780 kB for 74.5 km (Ingolstadt, postman),
-/// estimated as 0.3 GB + 0.008 GB/km. With the clouds in memory: 601,096 kB and 2,496,008 kB,
-/// estimated as 0.3 GB + 0.04 GB/km. Both lie 25-50 % above the measured peaks.
-double slamMemoryGb(double route_km, bool clouds_on_disk = true);
-
-/// Memory new processes can have now [GB = 10^9 bytes] (MemAvailable in /proc/meminfo); 0 when
-/// unknown.
-double availableMemoryGb();
-
-/// SLAM runs to start at once: at most `max_jobs`, and no more than the largest k whose k biggest
-/// needs (`need_gb`, one per run) fit in `budget_gb`; at least 1. A budget <= 0 (unknown) limits
-/// nothing.
-int slamJobsForMemory(std::vector<double> need_gb, double budget_gb, int max_jobs);
-
-/// SLAM runs of drives of `route_m` [m] to start at once (at most `max_jobs`): slamJobsForMemory
-/// with each run's slamMemoryGb against 90 % of availableMemoryGb(). `why` (optional) receives
-/// "largest SLAM estimated at X GB, Y GB available".
-int slamJobsThatFit(const std::vector<double>& route_m, int max_jobs, bool clouds_on_disk,
-                    std::string* why = nullptr);
-
-/// Routes planned on a trace-built graph know its turns only loosely: joins consecutive SUMO
-/// edges with the shortest legal detour where SUMO forbids the turn (noted in the route), and
-/// writes ROUTE.rou.xml beside it. Throws when the route has no SUMO edges.
-void makeRouteDrivable(const SumoNet& net, const std::filesystem::path& route_json);
 
 }  // namespace slamroute::cli

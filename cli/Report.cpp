@@ -1,8 +1,6 @@
 #include "Report.hpp"
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +18,8 @@
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/Drive.hpp"
+#include "slamroute/pipeline/JsonFile.hpp"
+#include "slamroute/pipeline/Plot.hpp"
 #include "slamroute/simulate/World.hpp"
 
 namespace slamroute::cli {
@@ -27,30 +27,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-std::vector<double> ranks(const std::vector<double>& x) {
-  std::vector<std::size_t> idx(x.size());
-  std::iota(idx.begin(), idx.end(), 0);
-  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
-  std::vector<double> r(x.size());
-  for (std::size_t i = 0; i < idx.size();) {
-    std::size_t j = i;
-    while (j + 1 < idx.size() && x[idx[j + 1]] == x[idx[i]]) ++j;
-    const double mean_rank = 0.5 * static_cast<double>(i + j) + 1.0;
-    for (std::size_t k = i; k <= j; ++k) r[idx[k]] = mean_rank;
-    i = j + 1;
-  }
-  return r;
-}
-
-json readJsonOr(const fs::path& p, json fallback = json::object()) {
-  if (!fs::exists(p)) return fallback;
-  try {
-    return json::parse(readFile(p));
-  } catch (const std::exception&) {
-    return fallback;
-  }
-}
 
 std::string fmt(double v, int prec = 2) {
   if (!std::isfinite(v)) return "–";
@@ -72,7 +48,7 @@ void uncertaintyTable(std::ostringstream& md, const ReportInputs& in) {
      << "| planner | C_max [m^2] | C_average [m^2] | C_threshold [m^2] | bound kept | loop-closure "
         "revisits |\n|---|---|---|---|---|---|\n";
   for (const auto& p : in.planners) {
-    const json r = readJsonOr(in.out / "routes" / (p + ".json"));
+    const json r = pipeline::readJsonIfPresent(in.out / "routes" / (p + ".json"));
     const json x = r.value("extra", json::object());
     const json u = x.value("uncertainty", json::object());
     md << "| " << p << " | " << num(u, "c_max_m2", 1) << " | " << num(u, "c_average_m2", 1) << " | "
@@ -133,59 +109,14 @@ std::string driftByStreetKind(const simulate::World& world,
   return md.str();
 }
 
-void scatterPng(const fs::path& path, const std::vector<double>& x, const std::vector<double>& y,
-                const std::string& xlabel, const std::string& ylabel) {
-  const int W = 640, H = 480, m = 60;
-  cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
-  if (x.empty()) return;
-  const auto [xmin, xmax] = std::minmax_element(x.begin(), x.end());
-  const auto [ymin, ymax] = std::minmax_element(y.begin(), y.end());
-  const double x0 = *xmin, x1 = std::max(*xmax, *xmin + 1e-9), y0 = 0.0, y1 = std::max(*ymax, 1e-9);
-  (void)ymin;
-  cv::rectangle(img, {m, m / 2}, {W - m / 2, H - m}, cv::Scalar(0, 0, 0));
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const int px = m + static_cast<int>((x[i] - x0) / (x1 - x0) * (W - 1.5 * m));
-    const int py = H - m - static_cast<int>((y[i] - y0) / (y1 - y0) * (H - 1.5 * m));
-    cv::circle(img, {px, py}, 4, cv::Scalar(180, 90, 30), -1, cv::LINE_AA);
-  }
-  auto text = [&](const std::string& s, cv::Point p) {
-    cv::putText(img, s, p, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-  };
-  text(xlabel, {W / 2 - 80, H - 15});
-  text(ylabel, {5, 20});
-  text(fmt(x0, 2), {m - 10, H - m + 18});
-  text(fmt(x1, 2), {W - m, H - m + 18});
-  text(fmt(y1, 1), {5, m / 2 + 5});
-  text("0", {m - 15, H - m});
-  std::vector<uchar> buf;
-  cv::imencode(".png", img, buf);
-  writeFileAtomic(path, std::string(buf.begin(), buf.end()));
-}
-
 }  // namespace
-
-double spearman(const std::vector<double>& a, const std::vector<double>& b) {
-  const std::size_t n = a.size();
-  if (n < 3 || b.size() != n) return std::numeric_limits<double>::quiet_NaN();
-  const auto ra = ranks(a), rb = ranks(b);
-  const double ma = std::accumulate(ra.begin(), ra.end(), 0.0) / n;
-  const double mb = std::accumulate(rb.begin(), rb.end(), 0.0) / n;
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sab += (ra[i] - ma) * (rb[i] - mb);
-    saa += (ra[i] - ma) * (ra[i] - ma);
-    sbb += (rb[i] - mb) * (rb[i] - mb);
-  }
-  if (saa <= 0 || sbb <= 0) return std::numeric_limits<double>::quiet_NaN();
-  return sab / std::sqrt(saa * sbb);
-}
 
 void writeReport(const ReportInputs& in) {
   const fs::path rep = in.out / "report";
   fs::create_directories(rep);
   const RoadGraph graph = RoadGraph::readJson(in.graph_json);
   const json gmeta = json::parse(graph.metadata_json.empty() ? "{}" : graph.metadata_json);
-  const json survey = readJsonOr(in.survey_dir / "survey.json");
+  const json survey = pipeline::readJsonIfPresent(in.survey_dir / "survey.json");
 
   std::ostringstream md;
   md << "# slamroute report\n\n"
@@ -233,8 +164,8 @@ void writeReport(const ReportInputs& in) {
         "than the clamp [%] | the same, map aligned like the ATE |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : in.planners) {
-    const json r = readJsonOr(in.out / "routes" / (p + ".json"));
-    const json m = readJsonOr(in.out / "eval" / p / "metrics.json");
+    const json r = pipeline::readJsonIfPresent(in.out / "routes" / (p + ".json"));
+    const json m = pipeline::readJsonIfPresent(in.out / "eval" / p / "metrics.json");
     // The median and the share beyond the clamp (map_accuracy_max_m, 2 m): a mean or a p95 of
     // clamped distances says more about the clamp than about the map. As built (in the frame the
     // estimate starts in) and aligned (evaluate's map_aligned_*: the map's own deformation).
@@ -301,7 +232,7 @@ void writeReport(const ReportInputs& in) {
      << " SUMO edges. The paper's premise predicts rho < 0 (a higher weight, i.e. more varied "
         "surface normals, should mean less drift).\n\n";
   if (!w.empty()) {
-    scatterPng(rep / "weight_vs_drift.png", w, d, "edge weight", "drift [%]");
+    pipeline::scatterPng(rep / "weight_vs_drift.png", w, d, "edge weight", "drift [%]");
     md << "![weight vs drift](report/weight_vs_drift.png)\n\n";
   }
 

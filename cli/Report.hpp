@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "slamroute/pipeline/Statistics.hpp"
+
 namespace slamroute::cli {
 
 struct ReportInputs {
@@ -18,9 +20,7 @@ struct ReportInputs {
   std::vector<std::pair<std::string, double>> step_seconds;  ///< NaN: kept from an earlier run (--resume)
 };
 
-/// Spearman rank correlation of two equally long samples (ties get mean ranks). NaN when n < 3
-/// or a sample is constant.
-double spearman(const std::vector<double>& a, const std::vector<double>& b);
+using pipeline::spearman;
 
 /// Writes out/report.md and out/report/*.png. Throws std::runtime_error naming a missing input.
 void writeReport(const ReportInputs& in);

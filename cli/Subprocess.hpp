@@ -1,59 +1,14 @@
 #pragma once
-// Runs slamroute's own subcommands as child processes. libsumo allows one simulation per
-// process, so the pipeline runs every SUMO step (survey, each drive) in its own process; this
-// also lets independent steps use both cores.
-#include <filesystem>
-#include <stdexcept>
-#include <string>
-#include <vector>
+// The pipeline's child-process runner (pipeline/Subprocess.hpp), under the names the commands use.
+#include "slamroute/pipeline/Subprocess.hpp"
 
 namespace slamroute::cli {
-
-struct Step {
-  std::string label;               ///< shown in progress lines
-  std::vector<std::string> args;   ///< arguments after the program name
-  std::filesystem::path log;       ///< child's stdout+stderr go here
-  /// The file the step writes last (atomically); `--resume` may keep a step whose output exists.
-  /// Empty: always run.
-  std::filesystem::path output{};
-  /// What the step is run from (Resume.hpp's stepStamp); runSteps writes it to stampPath() when
-  /// the step succeeds and removes an older one when it starts. Empty: no stamp.
-  std::string stamp{};
-};
-
-/// Where a step's stamp lives: beside its log, LOG with the extension .done.
-std::filesystem::path stampPath(const Step& s);
-
-struct StepResult {
-  int exit_code = -1;
-  double seconds = 0.0;
-};
-
-/// runSteps was stopped by SIGINT, SIGTERM or SIGHUP: the running steps were stopped too.
-struct Interrupted : std::runtime_error {
-  Interrupted(int sig, const std::string& what) : std::runtime_error(what), signal(sig) {}
-  int signal;  ///< the signal that stopped the run; the program exits with 128 + it
-};
-
-/// In a step started by runSteps: asks the kernel to send SIGTERM when the parent dies (SIGKILL
-/// of `run` included), so no step goes on as an orphan writing results nobody stamps; SIGTERM
-/// removes the step's staging folder. Does nothing in a process not started by runSteps.
-void stopWithParent();
-
-/// Path of the running slamroute binary (/proc/self/exe).
-std::string selfExe();
-
-/// Runs `steps` with at most `jobs` at once, prints one line per start/finish and, every
-/// `status_every_s` seconds (0 = never), one line per running step quoting the last line of its
-/// log (its progress: a SLAM run on a city takes an hour). A step that succeeds gets its stamp
-/// written (Step::stamp). SIGINT, SIGTERM or SIGHUP while steps run (a job scheduler stopping
-/// the run, a closed terminal) are passed on to the running steps, which are waited for; then
-/// Interrupted is thrown. Throws std::runtime_error naming the
-/// first failed step and quoting the last line of its log.
-std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s = 60.0);
-
-/// The last non-blank line of a log (text after the last '\r' of a progress line), reading at
-/// most its last `max_bytes`; empty when the file is missing or blank.
-std::string lastLogLine(const std::filesystem::path& log, std::size_t max_bytes = 4096);
-
+using pipeline::Interrupted;
+using pipeline::lastLogLine;
+using pipeline::runSteps;
+using pipeline::selfExe;
+using pipeline::stampPath;
+using pipeline::Step;
+using pipeline::StepResult;
+using pipeline::stopWithParent;
 }  // namespace slamroute::cli

@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   cli::registerCompare(app, ctx);
   cli::registerRun(app, ctx);
   cli::registerExperiment(app, ctx);
+  cli::registerSweep(app, ctx);
 
   // One line per error, like every other error of slamroute (CLI11 adds a second).
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
@@ -85,9 +86,6 @@ int main(int argc, char** argv) {
     std::cerr << "slamroute: error: " << (e.path1().empty() ? "" : e.path1().string() + ": ")
               << e.code().message() << "\n";
     return 1;
-  } catch (const cli::NotImplemented& e) {
-    std::cerr << "slamroute: " << e.what() << "\n";
-    return 2;
   } catch (const std::exception& e) {
     std::cerr << "slamroute: error: " << e.what() << "\n";
     return 1;

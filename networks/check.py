@@ -25,7 +25,10 @@ NETS = {
     "grid3x3": "test/grid3x3.net.xml",
     "ring": "test/ring.net.xml",
     "overpass": "test/overpass.net.xml",
+    "divided_avenue": "test/divided_avenue.net.xml",
+    "divided_cross": "test/divided_cross.net.xml",
 }
+DIVIDED = {"divided_avenue", "divided_cross"}
 sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True  # keep networks/ free of __pycache__
 import generate  # noqa: E402
@@ -172,7 +175,8 @@ def check_net(name, rel, failures):
     if len(real) >= 2:
         d, a, b = closest(real)
         print("  closest intersections (degree >= 3): %.1f m (%s, %s)" % (d, a, b))
-        if d < 35.0:
+        # The divided nets' carriageway crossings are close by design (one place per pair).
+        if d < 35.0 and name not in DIVIDED:
             failures.append("%s: intersections %s and %s only %.1f m apart" % (name, a, b, d))
     d, a, b = closest(junctions)
     print("  closest junctions: %.1f m (%s, %s)" % (d, a, b))

@@ -175,6 +175,78 @@ def grid3x3_net():
     return n
 
 
+DIVIDED_GRID = [100, 300, 500]  # m: rows (y) and columns (x) of the divided-avenue grids
+
+
+def divided_grid_net(name, half_gap, divided_columns):
+    """3 x 3 grid 200 m apart (x, y in {100, 300, 500}) whose middle row y = 300 is a divided
+    avenue: two one-way carriageways of 2 lanes each, y = 300 -+ half_gap (eastbound south,
+    westbound north, right-hand traffic), from the west to the east column. With
+    divided_columns, the middle column x = 300 is divided the same way (northbound east,
+    southbound west), so the centre is a junction box of four carriageway crossings. Every other
+    street is two-way with one lane per direction. Junction ids: g<row><col>, and where a
+    carriageway crosses a street g<row><col><side> with side s/n (the avenue's south / north
+    carriageway) or w/e (the divided column's west / east carriageway)."""
+    n = Net(name, "test/%s.net.xml" % name)
+    v = DIVIDED_GRID
+    h = half_gap
+
+    def ys(i):  # y of the carriageways of row i (one value for an undivided row)
+        return [(v[i] - h, "s"), (v[i] + h, "n")] if i == 1 else [(v[i], "")]
+
+    def xs(j):
+        return [(v[j] - h, "w"), (v[j] + h, "e")] if j == 1 and divided_columns else [(v[j], "")]
+
+    for i in range(3):
+        for j in range(3):
+            for y, sy in ys(i):
+                for x, sx in xs(j):
+                    n.node("g%d%d%s%s" % (i, j, sy, sx), x, y, "priority")
+
+    def node(i, j, sy="", sx=""):
+        return "g%d%d%s%s" % (i, j, sy, sx)
+
+    # Rows: the undivided ones two-way; the avenue's carriageways one-way (2 lanes); inside a
+    # junction box of the divided column, the avenue's carriageways cross both of its sides.
+    for i in (0, 2):
+        for j in range(2):
+            for sx in [s for _, s in xs(j)][-1:]:
+                for tx in [s for _, s in xs(j + 1)][:1]:
+                    n.two_way(node(i, j, "", sx), node(i, j + 1, "", tx))
+        if divided_columns:
+            n.two_way(node(i, 1, "", "w"), node(i, 1, "", "e"))
+    east = [node(1, j, "s", sx) for j in range(3) for _, sx in xs(j)]
+    west = [node(1, j, "n", sx) for j in range(3) for _, sx in xs(j)][::-1]
+    for seq in (east, west):
+        for a, b in zip(seq, seq[1:]):
+            n.edge("%s_%s" % (a, b), a, b, "avenue")
+    # Columns: the undivided ones two-way across both carriageways; the divided column's
+    # carriageways one-way (2 lanes), northbound on the east side.
+    for j in range(3):
+        for _, sx in xs(j):
+            chain = [node(i, j, sy, sx) for i in range(3) for _, sy in ys(i)]
+            if sx == "":
+                for a, b in zip(chain, chain[1:]):
+                    n.two_way(a, b)
+            else:
+                seq = chain if sx == "e" else chain[::-1]
+                for a, b in zip(seq, seq[1:]):
+                    n.edge("%s_%s" % (a, b), a, b, "avenue")
+    return n
+
+
+def divided_avenue_net():
+    """Divided-avenue grid: carriageways 16 m apart (divided_grid_net). 12 junctions, 28
+    passenger edges."""
+    return divided_grid_net("divided_avenue", 8.0, False)
+
+
+def divided_cross_net():
+    """Two divided avenues crossing: middle row and middle column divided, carriageways 20 m
+    apart (divided_grid_net)."""
+    return divided_grid_net("divided_cross", 10.0, True)
+
+
 RING_CENTRE = (500.0, 500.0)
 RING_RADIUS = 160.0  # m: 8 arcs of 45 deg, 2*pi*160 = 1005 m around
 RING_JUNCTIONS = 8
@@ -382,6 +454,8 @@ NETS = {
     "grid3x3": grid3x3_net,
     "ring": ring_net,
     "overpass": overpass_net,
+    "divided_avenue": divided_avenue_net,
+    "divided_cross": divided_cross_net,
     "default_city": default_city_net,
 }
 

@@ -7,11 +7,14 @@ PACKAGES=(
   build-essential cmake pkg-config ccache git python3
   python3-numpy python3-scipy            # bench/*.py analysis scripts
   sumo sumo-tools                       # SUMO binaries, libsumo (libsumocpp.so + headers), tools
-  libeigen3-dev libboost-graph-dev libpcl-dev libopencv-dev libembree-dev liblemon-dev
+  libeigen3-dev libboost-graph-dev libopencv-dev libembree-dev liblemon-dev
   libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
   libtbb-dev libpugixml-dev libnanoflann-dev zlib1g-dev mpi-default-dev
+  libopenmpi-dev openmpi-bin            # `slamroute sweep` over MPI ranks; its tests run mpirun
   libproj-dev                           # net x/y -> WGS84 lon/lat for GPX / KML
+  libpcl-dev                            # tests and bench_pcl: PCL checks map.pcd and our ICP
   libxml2-utils                         # xmllint: tests validate GPX against its schema
+  clang-format                          # scripts/check_format.sh
   chromium                              # headless browser: the report.html test opens the page
 )
 # npm vendors Leaflet into the build for report.html (scripts/vendor_js.sh). A Node.js from

@@ -85,8 +85,86 @@ void RoadGraph::writeGraphML(const std::filesystem::path& path) const {
   writeFileAtomic(path, os.str());
 }
 
-void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& attribute,
-                          const std::vector<double>& values, int width_px) const {
+namespace {
+
+constexpr double kMarginPx = 40, kBarPx = 70;
+
+/// World x/y to image pixels: one scale on both axes, y up.
+struct PngFrame {
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300, scale = 1.0;
+  int rows = 0;
+  void grow(const Point3& p) {
+    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+  }
+  cv::Point px(const Point3& p) const {
+    return cv::Point(static_cast<int>(kMarginPx + (p.x() - xmin) * scale),
+                     static_cast<int>(rows - kMarginPx - (p.y() - ymin) * scale));
+  }
+};
+
+/// The viridis colour of a value in [vmin, vmax]; grey where there is no value.
+struct ValueColours {
+  double vmin = 1e300, vmax = -1e300;
+  cv::Mat colours;
+  explicit ValueColours(const std::vector<double>& values) {
+    for (double v : values)
+      if (std::isfinite(v)) vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+    if (!(vmax > vmin)) vmax = vmin + 1.0;
+    cv::Mat lut(1, 256, CV_8UC1);
+    for (int i = 0; i < 256; ++i) lut.at<uchar>(i) = static_cast<uchar>(i);
+    cv::applyColorMap(lut, colours, cv::COLORMAP_VIRIDIS);
+  }
+  cv::Scalar operator()(double v) const {
+    if (!std::isfinite(v)) return cv::Scalar(180, 180, 180);
+    const int k = std::clamp(static_cast<int>(255.0 * (v - vmin) / (vmax - vmin)), 0, 255);
+    const cv::Vec3b c = colours.at<cv::Vec3b>(0, k);
+    return cv::Scalar(c[0], c[1], c[2]);
+  }
+};
+
+/// An edge's polyline in pixels, shifted shift_px to the right of its travel direction.
+std::vector<cv::Point> shiftedPixels(const std::vector<Point3>& world, const PngFrame& frame,
+                                     double shift_px) {
+  std::vector<cv::Point> pts;
+  for (std::size_t k = 0; k < world.size(); ++k) {
+    const Point3 a = world[k == 0 ? 0 : k - 1], b = world[k == 0 ? 1 : k];
+    Eigen::Vector2d d(b.x() - a.x(), b.y() - a.y());
+    const double n = d.norm();
+    // Right of travel in the image (y points down): (dy, -dx) in world -> (dy, dx) in pixels.
+    Eigen::Vector2d right = Eigen::Vector2d::Zero();
+    if (n > 1e-9) right = Eigen::Vector2d(d.y(), -d.x()) / n;
+    const cv::Point p0 = frame.px(world[k]);
+    pts.emplace_back(p0.x + static_cast<int>(std::lround(right.x() * shift_px)),
+                     p0.y - static_cast<int>(std::lround(right.y() * shift_px)));
+  }
+  return pts;
+}
+
+/// Colour bar with the value range, the attribute's name and a 100 m scale bar.
+void drawLegend(cv::Mat& img, const ValueColours& colour, const std::string& attribute,
+                double scale, int width_px) {
+  const int margin = static_cast<int>(kMarginPx);
+  const int bx = width_px - static_cast<int>(kBarPx) + 10, by0 = margin, by1 = img.rows - margin;
+  for (int y = by0; y <= by1; ++y) {
+    const double v = colour.vmax - (colour.vmax - colour.vmin) * (y - by0) / std::max(1, by1 - by0);
+    cv::line(img, {bx, y}, {bx + 15, y}, colour(v));
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", colour.vmax);
+  cv::putText(img, buf, {bx - 5, by0 - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0));
+  std::snprintf(buf, sizeof buf, "%.3g", colour.vmin);
+  cv::putText(img, buf, {bx - 5, by1 + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0));
+  cv::putText(img, attribute, {margin, 22}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0));
+  const int sb = static_cast<int>(100.0 * scale);
+  cv::line(img, {margin, img.rows - 15}, {margin + sb, img.rows - 15}, cv::Scalar(0, 0, 0), 2);
+  cv::putText(img, "100 m", {margin + sb + 6, img.rows - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
+              cv::Scalar(0, 0, 0));
+}
+
+/// The value drawn per edge: `values` (NaN past its end), else the edge's length or weight.
+std::vector<double> edgeValues(const std::vector<RoadEdge>& edges, const std::string& attribute,
+                               const std::vector<double>& values) {
   std::vector<double> val(edges.size(), 0.0);
   for (std::size_t i = 0; i < edges.size(); ++i) {
     if (!values.empty()) {
@@ -97,38 +175,25 @@ void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& 
       val[i] = edges[i].weight;
     }
   }
-  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-  auto grow = [&](const Point3& p) {
-    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
-    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
-  };
-  for (const auto& n : nodes) grow(n.pos);
+  return val;
+}
+
+}  // namespace
+
+void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& attribute,
+                          const std::vector<double>& values, int width_px) const {
+  const std::vector<double> val = edgeValues(edges, attribute, values);
+  PngFrame frame;
+  for (const auto& n : nodes) frame.grow(n.pos);
   for (const auto& e : edges)
-    for (const auto& p : e.polyline) grow(p);
-  if (nodes.empty()) xmin = ymin = 0, xmax = ymax = 1;
-  const double margin = 40, bar = 70;
-  const double span = std::max({xmax - xmin, ymax - ymin, 1.0});
-  const double scale = (width_px - 2 * margin - bar) / span;
-  const int height = static_cast<int>((ymax - ymin) * scale + 2 * margin + 30);
+    for (const auto& p : e.polyline) frame.grow(p);
+  if (nodes.empty()) frame.xmin = frame.ymin = 0, frame.xmax = frame.ymax = 1;
+  const double span = std::max({frame.xmax - frame.xmin, frame.ymax - frame.ymin, 1.0});
+  frame.scale = (width_px - 2 * kMarginPx - kBarPx) / span;
+  const int height = static_cast<int>((frame.ymax - frame.ymin) * frame.scale + 2 * kMarginPx + 30);
   cv::Mat img(std::max(height, 200), width_px, CV_8UC3, cv::Scalar(255, 255, 255));
-  auto px = [&](const Point3& p) {
-    return cv::Point(static_cast<int>(margin + (p.x() - xmin) * scale),
-                     static_cast<int>(img.rows - margin - (p.y() - ymin) * scale));
-  };
-  double vmin = 1e300, vmax = -1e300;
-  for (double v : val)
-    if (std::isfinite(v)) vmin = std::min(vmin, v), vmax = std::max(vmax, v);
-  if (!(vmax > vmin)) vmax = vmin + 1.0;
-  cv::Mat lut(1, 256, CV_8UC1);
-  for (int i = 0; i < 256; ++i) lut.at<uchar>(i) = static_cast<uchar>(i);
-  cv::Mat colours;
-  cv::applyColorMap(lut, colours, cv::COLORMAP_VIRIDIS);
-  auto colour = [&](double v) {
-    if (!std::isfinite(v)) return cv::Scalar(180, 180, 180);
-    const int k = std::clamp(static_cast<int>(255.0 * (v - vmin) / (vmax - vmin)), 0, 255);
-    const cv::Vec3b c = colours.at<cv::Vec3b>(0, k);
-    return cv::Scalar(c[0], c[1], c[2]);
-  };
+  frame.rows = img.rows;
+  const ValueColours colour(val);
   // Both directions of a street share a centreline: draw each directed edge shifted a few
   // pixels to the right of its travel direction, and the edges without a value (grey) first so
   // they never hide coloured ones.
@@ -137,45 +202,15 @@ void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& 
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return !std::isfinite(val[a]) && std::isfinite(val[b]);
   });
-  const double shift_px = 2.5;
   for (std::size_t i : order) {
     const auto& e = edges[i];
     std::vector<Point3> world = e.polyline;
     if (world.size() < 2) world = {nodes[static_cast<std::size_t>(e.u)].pos, nodes[static_cast<std::size_t>(e.v)].pos};
-    std::vector<cv::Point> pts;
-    for (std::size_t k = 0; k < world.size(); ++k) {
-      const Point3 a = world[k == 0 ? 0 : k - 1], b = world[k == 0 ? 1 : k];
-      Eigen::Vector2d d(b.x() - a.x(), b.y() - a.y());
-      const double n = d.norm();
-      // Right of travel in the image (y points down): (dy, -dx) in world -> (dy, dx) in pixels.
-      Eigen::Vector2d right = Eigen::Vector2d::Zero();
-      if (n > 1e-9) right = Eigen::Vector2d(d.y(), -d.x()) / n;
-      const cv::Point p0 = px(world[k]);
-      pts.emplace_back(p0.x + static_cast<int>(std::lround(right.x() * shift_px)),
-                       p0.y - static_cast<int>(std::lround(right.y() * shift_px)));
-    }
-    cv::polylines(img, pts, false, colour(val[i]), 3, cv::LINE_AA);
+    cv::polylines(img, shiftedPixels(world, frame, 2.5), false, colour(val[i]), 3, cv::LINE_AA);
   }
-  for (const auto& n : nodes) cv::circle(img, px(n.pos), 4, cv::Scalar(40, 40, 40), -1, cv::LINE_AA);
-  // Colour bar with the value range.
-  const int bx = width_px - static_cast<int>(bar) + 10, by0 = static_cast<int>(margin), by1 = img.rows - static_cast<int>(margin);
-  for (int y = by0; y <= by1; ++y) {
-    const double v = vmax - (vmax - vmin) * (y - by0) / std::max(1, by1 - by0);
-    cv::line(img, {bx, y}, {bx + 15, y}, colour(v));
-  }
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3g", vmax);
-  cv::putText(img, buf, {bx - 5, by0 - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0));
-  std::snprintf(buf, sizeof buf, "%.3g", vmin);
-  cv::putText(img, buf, {bx - 5, by1 + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0));
-  cv::putText(img, attribute, {static_cast<int>(margin), 22}, cv::FONT_HERSHEY_SIMPLEX, 0.6,
-              cv::Scalar(0, 0, 0));
-  // Scale bar: 100 m.
-  const int sb = static_cast<int>(100.0 * scale);
-  cv::line(img, {static_cast<int>(margin), img.rows - 15}, {static_cast<int>(margin) + sb, img.rows - 15},
-           cv::Scalar(0, 0, 0), 2);
-  cv::putText(img, "100 m", {static_cast<int>(margin) + sb + 6, img.rows - 10}, cv::FONT_HERSHEY_SIMPLEX,
-              0.4, cv::Scalar(0, 0, 0));
+  for (const auto& n : nodes)
+    cv::circle(img, frame.px(n.pos), 4, cv::Scalar(40, 40, 40), -1, cv::LINE_AA);
+  drawLegend(img, colour, attribute, frame.scale, width_px);
   std::vector<uchar> png;
   if (!cv::imencode(".png", img, png)) throw std::runtime_error(path.string() + ": PNG encoding failed");
   writeFileAtomic(path, std::string(png.begin(), png.end()));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -129,107 +130,139 @@ bool SumoNet::turnAllowed(const std::string& from, const std::string& to) const 
   return std::find(it->second.begin(), it->second.end(), to) != it->second.end();
 }
 
-struct SumoNetBuilder {
-  static void addTurn(SumoNet& net, const std::string& from, const std::string& to) {
-    auto& v = net.turns_[from];
-    if (std::find(v.begin(), v.end(), to) == v.end()) v.push_back(to);
-  }
-};
+namespace {
 
-SumoNet SumoNet::read(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::string data = readMaybeGzip(path);
-  pugi::xml_document doc;
+SumoLocation readLocation(const pugi::xml_node& loc, const std::string& name) {
+  SumoLocation location;
+  const auto off = splitWords(loc.attribute("netOffset").as_string());
+  if (!off.empty()) {
+    const auto pl = parseShape(loc.attribute("netOffset").as_string(), name + " <location>");
+    if (!pl.empty()) location.net_offset = pl.front().head<2>();
+  }
+  location.conv_boundary = loc.attribute("convBoundary").as_string();
+  location.orig_boundary = loc.attribute("origBoundary").as_string();
+  location.proj_parameter = loc.attribute("projParameter").as_string();
+  return location;
+}
+
+SumoLane readLane(const pugi::xml_node& l, const std::string& where) {
+  SumoLane lane;
+  lane.id = l.attribute("id").as_string();
+  lane.index = l.attribute("index").as_int();
+  lane.length_m = laneNumber(l, "length", where);
+  lane.speed_mps = laneNumber(l, "speed", where);
+  lane.width_m = l.attribute("width").as_double(3.2);
+  lane.allow = splitWords(l.attribute("allow").as_string());
+  lane.disallow = splitWords(l.attribute("disallow").as_string());
+  lane.shape = parseShape(l.attribute("shape").as_string(), where);
+  return lane;
+}
+
+/// A normal edge with its lanes; nothing for an internal (junction) edge.
+std::optional<SumoEdge> readEdge(const pugi::xml_node& e, const std::string& name) {
+  SumoEdge edge;
+  edge.id = e.attribute("id").as_string();
+  edge.function = e.attribute("function").as_string();
+  if (edge.isInternal() || (!edge.id.empty() && edge.id[0] == ':')) return std::nullopt;
+  const std::string where = name + ": edge '" + edge.id + "'";
+  edge.from = e.attribute("from").as_string();
+  edge.to = e.attribute("to").as_string();
+  edge.type = e.attribute("type").as_string();
+  edge.name = e.attribute("name").as_string();
+  edge.priority = e.attribute("priority").as_int(-1);
+  for (auto l : e.children("lane")) edge.lanes.push_back(readLane(l, where));
+  if (edge.lanes.empty()) throw std::invalid_argument(where + " has no lanes");
+  // Always the centre lane's shape (where cars drive): netconvert writes an edge's own shape
+  // attribute only for custom-shaped edges, and there it is the road's centreline, shared by
+  // both directions.
+  edge.shape = edge.lanes[edge.lanes.size() / 2].shape;
+  return edge;
+}
+
+/// A junction; nothing for an internal one.
+std::optional<SumoJunction> readJunction(const pugi::xml_node& j, const std::string& name) {
+  SumoJunction jn;
+  jn.type = j.attribute("type").as_string();
+  if (jn.type == "internal") return std::nullopt;
+  jn.id = j.attribute("id").as_string();
+  jn.pos = junctionPosition(j, name);
+  jn.inc_lanes = splitWords(j.attribute("incLanes").as_string());
+  return jn;
+}
+
+/// Whether passenger cars may take a connection: both lanes and the connection allow them.
+bool connectionAllowsPassenger(const pugi::xml_node& c, const SumoConnection& con,
+                               const SumoEdge& from, const SumoEdge& to) {
+  bool passenger = false;
+  for (const auto& l : from.lanes)
+    if (l.index == con.from_lane) passenger = l.allowsPassenger();
+  for (const auto& l : to.lanes)
+    if (l.index == con.to_lane) passenger = passenger && l.allowsPassenger();
+  if (c.attribute("allow") || c.attribute("disallow"))
+    passenger = passenger && passengerAllowed(splitWords(c.attribute("allow").as_string()),
+                                              splitWords(c.attribute("disallow").as_string()));
+  return passenger;
+}
+
+pugi::xml_node parseNet(pugi::xml_document& doc, const std::string& data, const std::string& name) {
   const pugi::xml_parse_result res = doc.load_buffer(data.data(), data.size());
   if (!res)
     throw std::invalid_argument(name + ": not valid XML (" + res.description() + " at byte " +
                                 std::to_string(res.offset) + ")");
   const pugi::xml_node root = doc.child("net");
   if (!root) throw std::invalid_argument(name + ": not a SUMO network (no <net> root element)");
+  return root;
+}
 
+}  // namespace
+
+struct SumoNetBuilder {
+  static void addTurn(SumoNet& net, const std::string& from, const std::string& to) {
+    auto& v = net.turns_[from];
+    if (std::find(v.begin(), v.end(), to) == v.end()) v.push_back(to);
+  }
+
+  /// The connections between normal edges; those passenger cars may take are the allowed turns.
+  static void readConnections(SumoNet& net, const pugi::xml_node& root) {
+    for (auto c : root.children("connection")) {
+      SumoConnection con;
+      con.from = c.attribute("from").as_string();
+      con.to = c.attribute("to").as_string();
+      const SumoEdge* fe = net.findEdge(con.from);
+      const SumoEdge* te = net.findEdge(con.to);
+      if (!fe || !te) continue;  // internal-lane connections
+      con.from_lane = c.attribute("fromLane").as_int();
+      con.to_lane = c.attribute("toLane").as_int();
+      con.dir = c.attribute("dir").as_string();
+      con.via = c.attribute("via").as_string();
+      if (connectionAllowsPassenger(c, con, *fe, *te)) addTurn(net, con.from, con.to);
+      net.connections.push_back(std::move(con));
+    }
+  }
+};
+
+SumoNet SumoNet::read(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const std::string data = readMaybeGzip(path);
+  pugi::xml_document doc;
+  const pugi::xml_node root = parseNet(doc, data, name);
   SumoNet net;
   net.source = path;
-  if (auto loc = root.child("location")) {
-    const auto off = splitWords(loc.attribute("netOffset").as_string());
-    if (!off.empty()) {
-      const auto pl = parseShape(loc.attribute("netOffset").as_string(), name + " <location>");
-      if (!pl.empty()) net.location.net_offset = pl.front().head<2>();
+  if (auto loc = root.child("location")) net.location = readLocation(loc, name);
+  for (auto e : root.children("edge"))
+    if (auto edge = readEdge(e, name)) {
+      net.edge_index[edge->id] = net.edges.size();
+      net.edges.push_back(std::move(*edge));
     }
-    net.location.conv_boundary = loc.attribute("convBoundary").as_string();
-    net.location.orig_boundary = loc.attribute("origBoundary").as_string();
-    net.location.proj_parameter = loc.attribute("projParameter").as_string();
-  }
-
-  for (auto e : root.children("edge")) {
-    SumoEdge edge;
-    edge.id = e.attribute("id").as_string();
-    edge.function = e.attribute("function").as_string();
-    if (edge.isInternal() || (!edge.id.empty() && edge.id[0] == ':')) continue;
-    const std::string where = name + ": edge '" + edge.id + "'";
-    edge.from = e.attribute("from").as_string();
-    edge.to = e.attribute("to").as_string();
-    edge.type = e.attribute("type").as_string();
-    edge.name = e.attribute("name").as_string();
-    edge.priority = e.attribute("priority").as_int(-1);
-    for (auto l : e.children("lane")) {
-      SumoLane lane;
-      lane.id = l.attribute("id").as_string();
-      lane.index = l.attribute("index").as_int();
-      lane.length_m = laneNumber(l, "length", where);
-      lane.speed_mps = laneNumber(l, "speed", where);
-      lane.width_m = l.attribute("width").as_double(3.2);
-      lane.allow = splitWords(l.attribute("allow").as_string());
-      lane.disallow = splitWords(l.attribute("disallow").as_string());
-      lane.shape = parseShape(l.attribute("shape").as_string(), where);
-      edge.lanes.push_back(std::move(lane));
+  for (auto j : root.children("junction"))
+    if (auto jn = readJunction(j, name)) {
+      net.junction_index[jn->id] = net.junctions.size();
+      net.junctions.push_back(std::move(*jn));
     }
-    if (edge.lanes.empty()) throw std::invalid_argument(where + " has no lanes");
-    // Always the centre lane's shape (where cars drive): netconvert writes an edge's own shape
-    // attribute only for custom-shaped edges, and there it is the road's centreline, shared by
-    // both directions.
-    edge.shape = edge.lanes[edge.lanes.size() / 2].shape;
-    net.edge_index[edge.id] = net.edges.size();
-    net.edges.push_back(std::move(edge));
-  }
-
-  for (auto j : root.children("junction")) {
-    SumoJunction jn;
-    jn.type = j.attribute("type").as_string();
-    if (jn.type == "internal") continue;
-    jn.id = j.attribute("id").as_string();
-    jn.pos = junctionPosition(j, name);
-    jn.inc_lanes = splitWords(j.attribute("incLanes").as_string());
-    net.junction_index[jn.id] = net.junctions.size();
-    net.junctions.push_back(std::move(jn));
-  }
-
-  for (auto c : root.children("connection")) {
-    SumoConnection con;
-    con.from = c.attribute("from").as_string();
-    con.to = c.attribute("to").as_string();
-    const SumoEdge* fe = net.findEdge(con.from);
-    const SumoEdge* te = net.findEdge(con.to);
-    if (!fe || !te) continue;  // internal-lane connections
-    con.from_lane = c.attribute("fromLane").as_int();
-    con.to_lane = c.attribute("toLane").as_int();
-    con.dir = c.attribute("dir").as_string();
-    con.via = c.attribute("via").as_string();
-    bool passenger = false;
-    for (const auto& l : fe->lanes)
-      if (l.index == con.from_lane) passenger = l.allowsPassenger();
-    for (const auto& l : te->lanes)
-      if (l.index == con.to_lane) passenger = passenger && l.allowsPassenger();
-    if (c.attribute("allow") || c.attribute("disallow"))
-      passenger = passenger && passengerAllowed(splitWords(c.attribute("allow").as_string()),
-                                                splitWords(c.attribute("disallow").as_string()));
-    if (passenger) SumoNetBuilder::addTurn(net, con.from, con.to);
-    net.connections.push_back(std::move(con));
-  }
-
+  SumoNetBuilder::readConnections(net, root);
   for (auto r : root.children("roundabout"))
     net.roundabouts.push_back({splitWords(r.attribute("nodes").as_string()),
                                splitWords(r.attribute("edges").as_string())});
-
   if (net.edges.empty() && net.junctions.empty())
     throw std::invalid_argument(name + ": SUMO network has no edges and no junctions");
   return net;

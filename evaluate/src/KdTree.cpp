@@ -1,6 +1,6 @@
-// k-d tree behind the KdTree interface: nanoflann (header-only, Debian libnanoflann-dev). It was
-// PCL's KdTreeFLANN; that one allocates on every query (malloc/free were ~12 % of the SLAM time
-// and the search ~60 %).
+// k-d tree behind the KdTree interface: nanoflann (header-only, Debian libnanoflann-dev) rather
+// than PCL's KdTreeFLANN, which allocates on every query (with it, malloc/free took ~12 % of the
+// SLAM time and the search ~60 %).
 #include "slamroute/evaluate/KdTree.hpp"
 
 #include <nanoflann.hpp>

@@ -4,11 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "slamroute/core/Yaw.hpp"
+
 namespace slamroute::evaluate {
 namespace {
-
-/// Yaw of a rotation about z, taken from its x axis [rad].
-double yawOf(const Pose3& T) { return std::atan2(T.rotation()(1, 0), T.rotation()(0, 0)); }
 
 /// |a - b| wrapped into [0, pi].
 double angleBetween(double a, double b) {

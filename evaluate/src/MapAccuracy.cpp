@@ -72,87 +72,122 @@ Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3
   return a + ab * v + ac * w;
 }
 
+/// A PLY header: its format and elements; `pos` ends at the first byte of the body.
+struct PlyHeader {
+  std::string format;
+  std::vector<Element> elems;
+};
+
+/// The header line starting at pos (without "\r\n"); pos moves past it.
+std::string headerLine(const std::string& data, std::size_t& pos, const std::string& where) {
+  const std::size_t e = data.find('\n', pos);
+  if (e == std::string::npos) throw std::runtime_error(where + ": truncated PLY header");
+  std::string l = data.substr(pos, e - pos);
+  if (!l.empty() && l.back() == '\r') l.pop_back();
+  pos = e + 1;
+  return l;
+}
+
+Prop readProperty(std::istringstream& ss) {
+  Prop p;
+  std::string t;
+  ss >> t;
+  if (t == "list") {
+    ss >> p.count_type >> p.type >> p.name;
+  } else {
+    p.type = t;
+    ss >> p.name;
+  }
+  return p;
+}
+
+PlyHeader readHeader(const std::string& data, std::size_t& pos, const std::string& where) {
+  if (headerLine(data, pos, where) != "ply") throw std::runtime_error(where + ": not a PLY file");
+  PlyHeader h;
+  for (;;) {
+    std::istringstream ss(headerLine(data, pos, where));
+    std::string kw;
+    ss >> kw;
+    if (kw == "end_header") break;
+    if (kw == "format") {
+      ss >> h.format;
+    } else if (kw == "element") {
+      Element e;
+      ss >> e.name >> e.count;
+      h.elems.push_back(e);
+    } else if (kw == "property") {
+      if (h.elems.empty()) throw std::runtime_error(where + ": property before element");
+      h.elems.back().props.push_back(readProperty(ss));
+    }
+  }
+  if (h.format != "binary_little_endian" && h.format != "ascii")
+    throw std::runtime_error(where + ": unsupported PLY format '" + h.format + "'");
+  return h;
+}
+
+/// The values of a PLY body, one after the other, in binary (little-endian) or ASCII.
+class PlyBody {
+ public:
+  PlyBody(const std::string& data, std::size_t pos, bool binary, const std::string& where)
+      : data_(data), pos_(pos), binary_(binary), where_(where),
+        ascii_(binary ? std::string() : data.substr(pos)) {}
+  double value(const std::string& type) {
+    if (binary_) {
+      const int s = typeSize(type);
+      if (s == 0) throw std::runtime_error(where_ + ": unknown PLY type '" + type + "'");
+      if (pos_ + static_cast<std::size_t>(s) > data_.size())
+        throw std::runtime_error(where_ + ": truncated PLY body");
+      const double v = readBinary(data_.data() + pos_, type);
+      pos_ += static_cast<std::size_t>(s);
+      return v;
+    }
+    double v;
+    if (!(ascii_ >> v)) throw std::runtime_error(where_ + ": truncated PLY body");
+    return v;
+  }
+
+ private:
+  const std::string& data_;
+  std::size_t pos_;
+  bool binary_;
+  const std::string& where_;
+  std::istringstream ascii_;
+};
+
+/// One item of element e: a vertex's x, y, z or a face's vertex list (fanned into triangles);
+/// other elements and properties are read past.
+void readItem(const Element& e, PlyBody& body, Mesh& mesh) {
+  Eigen::Vector3f v = Eigen::Vector3f::Zero();
+  for (const Prop& p : e.props) {
+    if (!p.count_type.empty()) {
+      const int n = static_cast<int>(body.value(p.count_type));
+      std::vector<int> idx(static_cast<std::size_t>(std::max(n, 0)));
+      for (int k = 0; k < n; ++k) idx[static_cast<std::size_t>(k)] = static_cast<int>(body.value(p.type));
+      if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index"))
+        for (int k = 2; k < n; ++k)
+          mesh.faces.push_back({idx[0], idx[static_cast<std::size_t>(k - 1)], idx[static_cast<std::size_t>(k)]});
+      continue;
+    }
+    const double x = body.value(p.type);
+    if (e.name != "vertex") continue;
+    if (p.name == "x") v.x() = static_cast<float>(x);
+    if (p.name == "y") v.y() = static_cast<float>(x);
+    if (p.name == "z") v.z() = static_cast<float>(x);
+  }
+  if (e.name == "vertex") mesh.vertices.push_back(v);
+}
+
 }  // namespace
 
 Mesh readPly(const std::filesystem::path& path) {
   const std::string data = readFile(path);
   const std::string where = path.string();
   std::size_t pos = 0;
-  auto nextLine = [&]() {
-    const std::size_t e = data.find('\n', pos);
-    if (e == std::string::npos) throw std::runtime_error(where + ": truncated PLY header");
-    std::string l = data.substr(pos, e - pos);
-    if (!l.empty() && l.back() == '\r') l.pop_back();
-    pos = e + 1;
-    return l;
-  };
-  if (nextLine() != "ply") throw std::runtime_error(where + ": not a PLY file");
-  std::string format;
-  std::vector<Element> elems;
-  for (;;) {
-    const std::string l = nextLine();
-    std::istringstream ss(l);
-    std::string kw;
-    ss >> kw;
-    if (kw == "end_header") break;
-    if (kw == "format") ss >> format;
-    else if (kw == "element") {
-      Element e;
-      ss >> e.name >> e.count;
-      elems.push_back(e);
-    } else if (kw == "property") {
-      if (elems.empty()) throw std::runtime_error(where + ": property before element");
-      Prop p;
-      std::string t;
-      ss >> t;
-      if (t == "list") ss >> p.count_type >> p.type >> p.name;
-      else {
-        p.type = t;
-        ss >> p.name;
-      }
-      elems.back().props.push_back(p);
-    }
-  }
-  const bool binary = format == "binary_little_endian";
-  if (!binary && format != "ascii")
-    throw std::runtime_error(where + ": unsupported PLY format '" + format + "'");
+  const PlyHeader header = readHeader(data, pos, where);
+  PlyBody body(data, pos, header.format == "binary_little_endian", where);
   Mesh mesh;
-  std::istringstream ascii(binary ? std::string() : data.substr(pos));
-  auto value = [&](const std::string& type) -> double {
-    if (binary) {
-      const int s = typeSize(type);
-      if (s == 0) throw std::runtime_error(where + ": unknown PLY type '" + type + "'");
-      if (pos + static_cast<std::size_t>(s) > data.size()) throw std::runtime_error(where + ": truncated PLY body");
-      const double v = readBinary(data.data() + pos, type);
-      pos += static_cast<std::size_t>(s);
-      return v;
-    }
-    double v;
-    if (!(ascii >> v)) throw std::runtime_error(where + ": truncated PLY body");
-    return v;
-  };
-  for (const Element& e : elems) {
-    for (std::size_t i = 0; i < e.count; ++i) {
-      Eigen::Vector3f v = Eigen::Vector3f::Zero();
-      for (const Prop& p : e.props) {
-        if (!p.count_type.empty()) {
-          const int n = static_cast<int>(value(p.count_type));
-          std::vector<int> idx(static_cast<std::size_t>(std::max(n, 0)));
-          for (int k = 0; k < n; ++k) idx[static_cast<std::size_t>(k)] = static_cast<int>(value(p.type));
-          if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index"))
-            for (int k = 2; k < n; ++k) mesh.faces.push_back({idx[0], idx[static_cast<std::size_t>(k - 1)], idx[static_cast<std::size_t>(k)]});
-        } else {
-          const double x = value(p.type);
-          if (e.name == "vertex") {
-            if (p.name == "x") v.x() = static_cast<float>(x);
-            if (p.name == "y") v.y() = static_cast<float>(x);
-            if (p.name == "z") v.z() = static_cast<float>(x);
-          }
-        }
-      }
-      if (e.name == "vertex") mesh.vertices.push_back(v);
-    }
-  }
+  for (const Element& e : header.elems)
+    for (std::size_t i = 0; i < e.count; ++i) readItem(e, body, mesh);
   const int nv = static_cast<int>(mesh.vertices.size());
   for (const auto& f : mesh.faces)
     for (int k : f)

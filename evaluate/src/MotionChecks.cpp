@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "slamroute/core/Odometry.hpp"
+#include "slamroute/core/Yaw.hpp"
 
 namespace slamroute::evaluate {
 
@@ -35,7 +36,7 @@ bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt) {
   const Pose3 d = pred.inverse() * result;
   const double scale = std::max(1.0, dt / 0.1);
-  const double yaw = std::abs(std::atan2(d.rotation()(1, 0), d.rotation()(0, 0)));
+  const double yaw = std::abs(yawOf(d));
   return d.translation().head<2>().norm() <= scale * cfg.odometry.wheel_translation_slack_m &&
          yaw <= scale * cfg.odometry.wheel_rotation_slack_deg * std::numbers::pi / 180.0;
 }
@@ -47,7 +48,7 @@ bool plausibleLoopCorrection(double correction_m, double driven_m, const Config&
 
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
   const Mat3 R = T.rotation();
-  const double yaw = std::atan2(R(1, 0), R(0, 0));
+  const double yaw = yawOf(R);
   const Attitude now = attitudeOf(R);
   const auto towards = [w](double a, double b) { return a + w * std::remainder(b - a, 2.0 * std::numbers::pi); };
   Pose3 out = T;

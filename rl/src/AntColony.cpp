@@ -13,11 +13,11 @@
 #include <numeric>
 #include <random>
 
+#include "Index.hpp"
+
 namespace slamroute::rl::detail {
 
 namespace {
-
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 
 /// Row r of the candidate lists: row m is the start node, rows 0..m-1 the cities.
 struct Candidates {

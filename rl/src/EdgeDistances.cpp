@@ -4,11 +4,9 @@
 #include <algorithm>
 #include <limits>
 
-namespace slamroute::rl::detail {
+#include "Index.hpp"
 
-namespace {
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
-}  // namespace
+namespace slamroute::rl::detail {
 
 EdgeDistances::EdgeDistances(const PlanGraph& pg, const TurnPaths& paths, int start)
     : pg_(&pg), m_(pg.m), start_(start) {

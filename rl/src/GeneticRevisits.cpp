@@ -9,11 +9,11 @@
 #include <string>
 #include <unordered_map>
 
+#include "Index.hpp"
+
 namespace slamroute::rl::detail {
 
 namespace {
-
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 
 using Chromosome = std::string;  // one char (0/1) per revisit position
 

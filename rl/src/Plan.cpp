@@ -31,9 +31,7 @@ nlohmann::json uncertaintyJson(const PlanGraph& pg, const Config& cfg, int start
           {"c_along_m2", s.c_m2}};
 }
 
-}  // namespace
-
-Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std::string& where) {
+void checkSettings(const Config& cfg) {
   const std::string& p = cfg.planner;
   if (p != "qlearning" && p != "random" && p != "tsp" && p != "postman" && !isCoveragePlanner(p))
     throw std::invalid_argument("unknown planner '" + p +
@@ -43,46 +41,39 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
   if (cfg.reward != "full" && cfg.reward != "accuracy")
     throw std::invalid_argument("unknown reward '" + cfg.reward + "' (expected full or accuracy)");
   parseGoal(cfg.goal);
-  const auto t0 = std::chrono::steady_clock::now();
-  const PlanGraph pg = PlanGraph::build(g, where);
-  if (pg.dropped_nodes > 0 || pg.dropped_edges > 0)
-    logWarn(where + ": not strongly connected under its turn permissions; planning on the largest "
-                    "part (" + std::to_string(pg.n) + " nodes, " + std::to_string(pg.m) +
-            " edges; dropped " + std::to_string(pg.dropped_nodes) + " nodes, " +
-            std::to_string(pg.dropped_edges) + " edges)");
-  int start = 0;
-  if (cfg.start_node >= 0) {
-    if (cfg.start_node >= static_cast<int>(g.nodes.size()))
-      throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
-                                  " does not exist (the graph has " +
-                                  std::to_string(g.nodes.size()) + " nodes)");
-    start = pg.node_local[static_cast<std::size_t>(cfg.start_node)];
-    if (start < 0)
-      throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
-                                  " is unreachable (outside the largest part that is strongly connected under the turn "
-                                  "permissions)");
-  }
-  const TurnPaths paths(pg);
-  PlanOutput out;
-  if (p == "qlearning") out = planQLearning(pg, paths, cfg, start, seed);
-  else if (p == "random") out = planRandom(pg, paths, cfg, start, seed);
-  else if (p == "tsp") out = planTsp(pg, paths, cfg, start);
-  else if (p == "postman") out = planPostman(pg, paths, cfg, start);
-  else out = planCoverage(pg, paths, cfg, start, seed);
-  const double secs =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
-  Route r;
-  r.planner = p;
-  r.seed = seed;
-  fillRouteMetrics(pg, g, start, out.edges, cfg.eif, r);
-  r.planning_seconds = secs;
-  r.heuristic = out.heuristic;
-  r.completed_by_shortest_paths = out.completed_by_shortest_paths;
-  r.notes = out.notes;
+/// The start node in the planning graph's numbering (its node 0 unless cfg.start_node is set).
+int localStart(const RoadGraph& g, const PlanGraph& pg, const Config& cfg, const std::string& where) {
+  if (cfg.start_node < 0) return 0;
+  if (cfg.start_node >= static_cast<int>(g.nodes.size()))
+    throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
+                                " does not exist (the graph has " +
+                                std::to_string(g.nodes.size()) + " nodes)");
+  const int start = pg.node_local[static_cast<std::size_t>(cfg.start_node)];
+  if (start < 0)
+    throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
+                                " is unreachable (outside the largest part that is strongly connected under the turn "
+                                "permissions)");
+  return start;
+}
+
+PlanOutput runPlanner(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
+                      std::uint64_t seed) {
+  const std::string& p = cfg.planner;
+  if (p == "qlearning") return planQLearning(pg, paths, cfg, start, seed);
+  if (p == "random") return planRandom(pg, paths, cfg, start, seed);
+  if (p == "tsp") return planTsp(pg, paths, cfg, start);
+  if (p == "postman") return planPostman(pg, paths, cfg, start);
+  return planCoverage(pg, paths, cfg, start, seed);
+}
+
+/// route.json's "extra": the planner's own figures plus the planning graph and the route's checks.
+std::string extraJson(const RoadGraph& g, const PlanGraph& pg, const Config& cfg, int start,
+                      const PlanOutput& out) {
   nlohmann::json extra = nlohmann::json::parse(out.extra_json.empty() ? "{}" : out.extra_json);
   extra["goal"] = cfg.goal;
-  if (p == "qlearning") extra["reward"] = cfg.reward;
+  if (cfg.planner == "qlearning") extra["reward"] = cfg.reward;
   extra["plan_graph"] = {{"nodes", pg.n},
                          {"edges", pg.m},
                          {"dropped_nodes", pg.dropped_nodes},
@@ -96,7 +87,35 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
     without_sumo += g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges.empty();
   extra["edges_without_sumo"] = without_sumo;
   extra["start_node"] = pg.node_orig[static_cast<std::size_t>(start)];
-  r.extra_json = extra.dump();
+  return extra.dump();
+}
+
+}  // namespace
+
+Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std::string& where) {
+  checkSettings(cfg);
+  const auto t0 = std::chrono::steady_clock::now();
+  const PlanGraph pg = PlanGraph::build(g, where);
+  if (pg.dropped_nodes > 0 || pg.dropped_edges > 0)
+    logWarn(where + ": not strongly connected under its turn permissions; planning on the largest "
+                    "part (" + std::to_string(pg.n) + " nodes, " + std::to_string(pg.m) +
+            " edges; dropped " + std::to_string(pg.dropped_nodes) + " nodes, " +
+            std::to_string(pg.dropped_edges) + " edges)");
+  const int start = localStart(g, pg, cfg, where);
+  const TurnPaths paths(pg);
+  const PlanOutput out = runPlanner(pg, paths, cfg, start, seed);
+  const double secs =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  Route r;
+  r.planner = cfg.planner;
+  r.seed = seed;
+  fillRouteMetrics(pg, g, start, out.edges, cfg.eif, r);
+  r.planning_seconds = secs;
+  r.heuristic = out.heuristic;
+  r.completed_by_shortest_paths = out.completed_by_shortest_paths;
+  r.notes = out.notes;
+  r.extra_json = extraJson(g, pg, cfg, start, out);
   return r;
 }
 

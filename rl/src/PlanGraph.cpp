@@ -14,53 +14,63 @@
 #include <map>
 #include <stdexcept>
 
+#include "Index.hpp"
+
 namespace slamroute::rl {
 
 namespace {
 
 using LineGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
 
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
+/// The strongly connected parts of the line graph (edge e -> f for every allowed turn) and the
+/// largest one that a route can drive.
+struct TurnComponents {
+  std::vector<std::vector<int>> nexts;  ///< allowed successors per edge
+  std::vector<int> comp;                ///< component per edge
+  int largest = -1;                     ///< the largest component with a cycle
+};
 
-}  // namespace
+/// A component is drivable when it has a cycle: more than one edge, or an edge with a self-turn.
+bool hasCycle(const TurnComponents& tc, int c, int size) {
+  if (size > 1) return true;
+  for (std::size_t e = 0; e < tc.comp.size(); ++e)
+    if (tc.comp[e] == c)
+      for (int f : tc.nexts[e])
+        if (f == static_cast<int>(e)) return true;
+  return false;
+}
 
-PlanGraph PlanGraph::build(const RoadGraph& g, const std::string& where) {
-  if (g.nodes.empty() || g.edges.empty())
-    throw std::invalid_argument(where + ": the graph is empty (no nodes or no edges)");
-  g.validate(where);
+TurnComponents turnComponents(const RoadGraph& g, const std::string& where) {
   const int m0 = static_cast<int>(g.edges.size());
-  // Components of the line graph: edge e -> f for every allowed turn (Boost strong_components).
+  TurnComponents tc;
   LineGraph lg(sz(m0));
-  std::vector<std::vector<int>> nexts(sz(m0));
+  tc.nexts.resize(sz(m0));
   for (int e = 0; e < m0; ++e) {
-    nexts[sz(e)] = g.nextEdges(e);
-    for (int f : nexts[sz(e)]) boost::add_edge(sz(e), sz(f), lg);
+    tc.nexts[sz(e)] = g.nextEdges(e);
+    for (int f : tc.nexts[sz(e)]) boost::add_edge(sz(e), sz(f), lg);
   }
-  std::vector<int> comp(sz(m0));
+  tc.comp.resize(sz(m0));
   const int ncomp = boost::strong_components(
-      lg, boost::make_iterator_property_map(comp.begin(), boost::get(boost::vertex_index, lg)));
-  // The largest component that contains a cycle (a single edge without a self-turn is no part).
+      lg, boost::make_iterator_property_map(tc.comp.begin(), boost::get(boost::vertex_index, lg)));
   std::vector<int> count(sz(ncomp), 0);
-  for (int c : comp) ++count[sz(c)];
-  int best = -1;
-  for (int c = 0; c < ncomp; ++c) {
-    bool cyclic = count[sz(c)] > 1;
-    if (!cyclic)
-      for (int e = 0; e < m0 && !cyclic; ++e)
-        if (comp[sz(e)] == c)
-          for (int f : nexts[sz(e)]) cyclic = cyclic || f == e;
-    if (cyclic && (best < 0 || count[sz(c)] > count[sz(best)])) best = c;
-  }
-  if (best < 0)
+  for (int c : tc.comp) ++count[sz(c)];
+  for (int c = 0; c < ncomp; ++c)
+    if (hasCycle(tc, c, count[sz(c)]) && (tc.largest < 0 || count[sz(c)] > count[sz(tc.largest)]))
+      tc.largest = c;
+  if (tc.largest < 0)
     throw std::invalid_argument(where + ": no route can be driven legally (no cycle under the turn "
                                         "permissions)");
+  return tc;
+}
 
-  PlanGraph pg;
-  pg.restricted = g.restricted_turns;
+/// Numbers the nodes and edges of the largest component locally; returns the local id of each
+/// original edge (-1 outside it).
+std::vector<int> keepLargest(PlanGraph& pg, const RoadGraph& g, const TurnComponents& tc) {
+  const int m0 = static_cast<int>(g.edges.size());
   pg.node_local.assign(g.nodes.size(), -1);
   std::vector<int> edge_local(sz(m0), -1);
   for (int e = 0; e < m0; ++e) {
-    if (comp[sz(e)] != best) continue;
+    if (tc.comp[sz(e)] != tc.largest) continue;
     const RoadEdge& re = g.edges[sz(e)];
     for (int x : {re.u, re.v})
       if (pg.node_local[sz(x)] < 0) {
@@ -72,12 +82,15 @@ PlanGraph PlanGraph::build(const RoadGraph& g, const std::string& where) {
   }
   pg.dropped_nodes = static_cast<int>(g.nodes.size()) - pg.n;
   pg.dropped_edges = m0 - pg.m;
+  return edge_local;
+}
 
+/// Per local edge: ends, length, normalised weight, heading and street; counts out-edges.
+void addEdges(PlanGraph& pg, const RoadGraph& g) {
   double wmax = 0.0;
   for (int e : pg.edge_orig) wmax = std::max(wmax, g.edges[sz(e)].weight);
   std::map<int, int> street_id;
   pg.out_off.assign(sz(pg.n) + 1, 0);
-  pg.next_off.assign(sz(pg.m) + 1, 0);
   for (int le = 0; le < pg.m; ++le) {
     const RoadEdge& re = g.edges[sz(pg.edge_orig[sz(le)])];
     const int lu = pg.node_local[sz(re.u)], lv = pg.node_local[sz(re.v)];
@@ -99,15 +112,34 @@ PlanGraph PlanGraph::build(const RoadGraph& g, const std::string& where) {
     ++pg.out_off[sz(lu) + 1];
     pg.total_edge_len += pg.len.back();
   }
+}
+
+/// The out-edges per node and the allowed next edges per edge, both as CSR arrays.
+void linkEdges(PlanGraph& pg, const TurnComponents& tc, const std::vector<int>& edge_local) {
   for (int i = 0; i < pg.n; ++i) pg.out_off[sz(i) + 1] += pg.out_off[sz(i)];
   pg.out.assign(sz(pg.m), 0);
   std::vector<int> fill(pg.out_off.begin(), pg.out_off.end() - 1);
   for (int le = 0; le < pg.m; ++le) pg.out[sz(fill[sz(pg.u[sz(le)])]++)] = le;
+  pg.next_off.assign(sz(pg.m) + 1, 0);
   for (int le = 0; le < pg.m; ++le) {
-    for (int f : nexts[sz(pg.edge_orig[sz(le)])])
+    for (int f : tc.nexts[sz(pg.edge_orig[sz(le)])])
       if (edge_local[sz(f)] >= 0) pg.next.push_back(edge_local[sz(f)]);
     pg.next_off[sz(le) + 1] = static_cast<int>(pg.next.size());
   }
+}
+
+}  // namespace
+
+PlanGraph PlanGraph::build(const RoadGraph& g, const std::string& where) {
+  if (g.nodes.empty() || g.edges.empty())
+    throw std::invalid_argument(where + ": the graph is empty (no nodes or no edges)");
+  g.validate(where);
+  const TurnComponents tc = turnComponents(g, where);
+  PlanGraph pg;
+  pg.restricted = g.restricted_turns;
+  const std::vector<int> edge_local = keepLargest(pg, g, tc);
+  addEdges(pg, g);
+  linkEdges(pg, tc, edge_local);
   for (double l : pg.street_len) pg.total_street_len += l;
   pg.mean_len = std::max(pg.total_edge_len / pg.m, 1e-6);
   return pg;

@@ -1,7 +1,7 @@
 // `postman`: optimal directed Chinese postman (every drivable edge at least once), made legal
 // under SUMO turn permissions.
 //
-// Method (documented choice; the issue asks for the least added length we can):
+// Method (our choice, for the least added length we can reach and bound):
 //  1. Turn-free optimum (lower bound): min-cost flow on the node imbalances in(i) - out(i)
 //     (LEMON NetworkSimplex); every edge once plus the flow's duplicates.
 //  2. Turn-legal optimum without connectivity: a min-cost circulation on the turn-expanded
@@ -20,38 +20,25 @@
 #include <lemon/smart_graph.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
+#include "Index.hpp"
+#include "slamroute/core/UnionFind.hpp"
 #include "slamroute/rl/Planners.hpp"
 
 namespace slamroute::rl {
 
 namespace {
 
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 long long mm(double metres) { return std::llround(metres * 1000.0); }
 
-struct UnionFind {
-  std::vector<int> p;
-  explicit UnionFind(int n) : p(sz(n)) { std::iota(p.begin(), p.end(), 0); }
-  int find(int x) {
-    while (p[sz(x)] != x) x = p[sz(x)] = p[sz(p[sz(x)])];
-    return x;
-  }
-  bool unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    p[sz(b)] = a;
-    return true;
-  }
+/// A turn: the index into pg.next of "drive `from`, then pg.next[turn]".
+struct UsedTurn {
+  int from, turn;
 };
 
 int turnIndex(const PlanGraph& pg, int e, int f) {
@@ -91,161 +78,308 @@ std::vector<int> legalCirculation(const PlanGraph& pg, const std::vector<int>& f
   return y;
 }
 
-struct Trails {
-  std::vector<int> y;  ///< turn counts
-  int swaps = 0, one_way = 0, detours = 0;
-  double detour_len = 0.0;
-  double length(const PlanGraph& pg) const {
-    double l = 0.0;
-    for (int e = 0; e < pg.m; ++e)
-      for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) l += y[sz(k)] * pg.len[sz(pg.next[sz(k)])];
-    return l;
-  }
-};
-
-UnionFind supportComponents(const PlanGraph& pg, const std::vector<int>& y) {
-  UnionFind uf(pg.m);
+/// Length driven by a circulation given as turn counts y.
+double circulationLength(const PlanGraph& pg, const std::vector<int>& y) {
+  double length = 0.0;
   for (int e = 0; e < pg.m; ++e)
     for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k)
-      if (y[sz(k)] > 0) uf.unite(e, pg.next[sz(k)]);
-  return uf;
+      length += y[sz(k)] * pg.len[sz(pg.next[sz(k)])];
+  return length;
 }
 
-int countRoots(UnionFind& uf, int m) {
-  int c = 0;
-  for (int e = 0; e < m; ++e) c += uf.find(e) == e ? 1 : 0;
-  return c;
+/// A circulation made one closed trail, with what the merging did.
+struct Connection {
+  std::vector<int> y;  ///< turn counts
+  int swaps = 0, one_way = 0, detours = 0;
+};
+
+/// The closed trails of a circulation: edges joined by the turns it takes.
+UnionFind supportComponents(const PlanGraph& pg, const std::vector<int>& y) {
+  UnionFind trails(sz(pg.m));
+  for (int e = 0; e < pg.m; ++e)
+    for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k)
+      if (y[sz(k)] > 0) trails.unite(e, pg.next[sz(k)]);
+  return trails;
+}
+
+/// The turns taken at junction j: arriving edge and turn index.
+std::vector<UsedTurn> usedTurnsAt(const PlanGraph& pg, const std::vector<int>& arriving,
+                                  const std::vector<int>& y) {
+  std::vector<UsedTurn> used;
+  for (int a : arriving)
+    for (int k = pg.nextBegin(a); k < pg.nextEnd(a); ++k)
+      if (y[sz(k)] > 0) used.push_back({a, k});
+  return used;
+}
+
+/// Swaps the successors of two trails at one junction (a->a', b->b' becomes a->b', b->a') when
+/// both new turns are legal. True when it merged two trails.
+bool swapSuccessors(const PlanGraph& pg, const std::vector<UsedTurn>& used, std::vector<int>& y,
+                    UnionFind& trails) {
+  for (std::size_t p = 0; p < used.size(); ++p)
+    for (std::size_t q = p + 1; q < used.size(); ++q) {
+      const auto [a, ka] = used[p];
+      const auto [b, kb] = used[q];
+      if (trails.find(a) == trails.find(b)) continue;
+      const int kab = turnIndex(pg, a, pg.next[sz(kb)]), kba = turnIndex(pg, b, pg.next[sz(ka)]);
+      if (kab < 0 || kba < 0) continue;
+      --y[sz(ka)], --y[sz(kb)], ++y[sz(kab)], ++y[sz(kba)];
+      trails.unite(a, b);
+      return true;
+    }
+  return false;
+}
+
+/// Rotates the successors of three trails at one junction (a->b', b->c', c->a'), which merges
+/// trails where swaps cannot. True when it merged three trails.
+bool rotateSuccessors(const PlanGraph& pg, const std::vector<UsedTurn>& used, std::vector<int>& y,
+                      UnionFind& trails) {
+  for (std::size_t p = 0; p < used.size(); ++p)
+    for (std::size_t q = 0; q < used.size(); ++q)
+      for (std::size_t r = 0; r < used.size(); ++r) {
+        if (p == q || q == r || p == r) continue;
+        const auto [a, ka] = used[p];
+        const auto [b, kb] = used[q];
+        const auto [c, kc] = used[r];
+        const int root_a = trails.find(a), root_b = trails.find(b), root_c = trails.find(c);
+        // Three distinct trails, else the rotation splits one.
+        if (root_a == root_b || root_b == root_c || root_a == root_c) continue;
+        if (ka == kb || kb == kc || ka == kc) continue;
+        const int k1 = turnIndex(pg, a, pg.next[sz(kb)]);
+        const int k2 = turnIndex(pg, b, pg.next[sz(kc)]);
+        const int k3 = turnIndex(pg, c, pg.next[sz(ka)]);
+        if (k1 < 0 || k2 < 0 || k3 < 0) continue;
+        --y[sz(ka)], --y[sz(kb)], --y[sz(kc)], ++y[sz(k1)], ++y[sz(k2)], ++y[sz(k3)];
+        trails.unite(a, b);
+        trails.unite(a, c);
+        return true;
+      }
+  return false;
 }
 
 /// Step 3a: free merges (swaps and rotations of successors at junctions).
-void freeMerges(const PlanGraph& pg, const std::vector<std::vector<int>>& into, std::vector<int>& y,
-                UnionFind& uf, int& swaps) {
-  for (int j = 0; j < pg.n; ++j) {
-    bool merged = true;
-    while (merged) {
-      merged = false;
-      std::vector<std::pair<int, int>> used;  // (from edge, turn index)
-      for (int a : into[sz(j)])
-        for (int k = pg.nextBegin(a); k < pg.nextEnd(a); ++k)
-          if (y[sz(k)] > 0) used.emplace_back(a, k);
-      for (std::size_t p = 0; p < used.size() && !merged; ++p)
-        for (std::size_t q = p + 1; q < used.size() && !merged; ++q) {
-          const auto [a, ka] = used[p];
-          const auto [b, kb] = used[q];
-          if (uf.find(a) == uf.find(b)) continue;
-          const int a2 = pg.next[sz(ka)], b2 = pg.next[sz(kb)];
-          const int kab = turnIndex(pg, a, b2), kba = turnIndex(pg, b, a2);
-          if (kab < 0 || kba < 0) continue;
-          --y[sz(ka)], --y[sz(kb)], ++y[sz(kab)], ++y[sz(kba)];
-          uf.unite(a, b);
-          ++swaps;
-          merged = true;
-        }
-      // Rotations of three successors (a->b', b->c', c->a') merge trails where swaps cannot.
-      for (std::size_t p = 0; p < used.size() && !merged; ++p)
-        for (std::size_t q = 0; q < used.size() && !merged; ++q)
-          for (std::size_t r = 0; r < used.size() && !merged; ++r) {
-            if (p == q || q == r || p == r) continue;
-            const auto [a, ka] = used[p];
-            const auto [b, kb] = used[q];
-            const auto [c, kc] = used[r];
-            const int ra = uf.find(a), rb = uf.find(b), rc = uf.find(c);
-            if (ra == rb || rb == rc || ra == rc) continue;  // three distinct trails, else it splits
-            if (ka == kb || kb == kc || ka == kc) continue;
-            const int k1 = turnIndex(pg, a, pg.next[sz(kb)]);
-            const int k2 = turnIndex(pg, b, pg.next[sz(kc)]);
-            const int k3 = turnIndex(pg, c, pg.next[sz(ka)]);
-            if (k1 < 0 || k2 < 0 || k3 < 0) continue;
-            --y[sz(ka)], --y[sz(kb)], --y[sz(kc)], ++y[sz(k1)], ++y[sz(k2)], ++y[sz(k3)];
-            uf.unite(a, b);
-            uf.unite(a, c);
-            ++swaps;
-            merged = true;
-          }
+void freeMerges(const PlanGraph& pg, const std::vector<std::vector<int>>& arriving,
+                std::vector<int>& y, UnionFind& trails, int& swaps) {
+  for (int j = 0; j < pg.n; ++j)
+    while (true) {
+      const std::vector<UsedTurn> used = usedTurnsAt(pg, arriving[sz(j)], y);
+      if (!swapSuccessors(pg, used, y, trails) && !rotateSuccessors(pg, used, y, trails)) break;
+      ++swaps;
     }
+}
+
+/// Adds a walk's turns to the circulation and joins its edges' trails.
+void addWalk(const PlanGraph& pg, const std::vector<int>& walk, std::vector<int>& y,
+             UnionFind& trails) {
+  for (std::size_t i = 1; i < walk.size(); ++i) {
+    ++y[sz(turnIndex(pg, walk[i - 1], walk[i]))];
+    trails.unite(walk[0], walk[i]);
   }
 }
 
-/// Steps 3b-3c: merges that cost a detour.
-void detourMerges(const PlanGraph& pg, const TurnPaths& paths, const std::vector<std::vector<int>>& into,
-                  std::vector<int>& y, UnionFind& uf, int e0, Trails& t) {
-  int& one_way = t.one_way;
-  int& detours = t.detours;
-  double& detour_len = t.detour_len;
-  // Step 3b: merges that need one detour: at a junction where trail A takes a->a' and trail B
-  // takes b->b', with a->b' legal but b->a' not, replace b->a' by the shortest legal path from b
-  // to a'. The cheapest such merge is applied first, repeatedly. What still stays apart is
-  // joined by the shortest legal closed walk to the main trail (step 3c).
-  auto addWalk = [&](const std::vector<int>& walk) {
-    for (std::size_t i = 1; i < walk.size(); ++i) {
-      ++y[sz(turnIndex(pg, walk[i - 1], walk[i]))];
-      uf.unite(walk[0], walk[i]);
+/// A merge of two trails at a junction where trail A takes a->a' and trail B takes b->b', a->b'
+/// is legal but b->a' is not: b->a' becomes the shortest legal path from b to a'.
+struct OneWayMerge {
+  double cost_m = std::numeric_limits<double>::infinity();
+  int drop_a = -1, drop_b = -1, add = -1;
+  std::vector<int> path;  ///< b, then the path's edges
+};
+
+void cheapestOneWayMergeAt(const PlanGraph& pg, const TurnPaths& paths,
+                           const std::vector<UsedTurn>& used, UnionFind& trails, OneWayMerge& best) {
+  for (std::size_t p = 0; p < used.size(); ++p)
+    for (std::size_t q = 0; q < used.size(); ++q) {
+      const auto [a, ka] = used[p];
+      const auto [b, kb] = used[q];
+      if (p == q || trails.find(a) == trails.find(b)) continue;
+      const int a2 = pg.next[sz(ka)];
+      const int kab = turnIndex(pg, a, pg.next[sz(kb)]);
+      if (kab < 0) continue;
+      auto path = paths.toNearest(b, -1, [a2](int e) { return e == a2; });
+      if (!path) continue;
+      const double cost = path->length_m - pg.len[sz(a2)];
+      if (cost < best.cost_m) {
+        best.cost_m = cost;
+        best.drop_a = ka, best.drop_b = kb, best.add = kab;
+        best.path.assign(1, b);
+        best.path.insert(best.path.end(), path->edges.begin(), path->edges.end());
+      }
     }
-  };
-  while (countRoots(uf, pg.m) > 1) {
-    double best = std::numeric_limits<double>::infinity();
-    int best_drop1 = -1, best_drop2 = -1, best_add = -1;
-    std::vector<int> best_path;
-    for (int j = 0; j < pg.n; ++j) {
-      std::vector<std::pair<int, int>> used;
-      for (int a : into[sz(j)])
-        for (int k = pg.nextBegin(a); k < pg.nextEnd(a); ++k)
-          if (y[sz(k)] > 0) used.emplace_back(a, k);
-      for (std::size_t p = 0; p < used.size(); ++p)
-        for (std::size_t q = 0; q < used.size(); ++q) {
-          const auto [a, ka] = used[p];
-          const auto [b, kb] = used[q];
-          if (p == q || uf.find(a) == uf.find(b)) continue;
-          const int a2 = pg.next[sz(ka)], b2 = pg.next[sz(kb)];
-          const int kab = turnIndex(pg, a, b2);
-          if (kab < 0) continue;
-          auto path = paths.toNearest(b, -1, [a2](int e) { return e == a2; });
-          if (!path) continue;
-          const double cost = path->length_m - pg.len[sz(a2)];
-          if (cost < best) {
-            best = cost;
-            best_drop1 = ka, best_drop2 = kb, best_add = kab;
-            best_path.assign(1, b);
-            best_path.insert(best_path.end(), path->edges.begin(), path->edges.end());
-          }
-        }
-    }
-    if (best_path.empty()) break;
-    --y[sz(best_drop1)], --y[sz(best_drop2)], ++y[sz(best_add)];
-    uf.unite(best_path.front(), pg.next[sz(best_add)]);
-    addWalk(best_path);
-    ++one_way;
-    detour_len += best;
+}
+
+/// Step 3b: one-way merges, the cheapest first, while there are any. Returns the added length.
+double oneWayMerges(const PlanGraph& pg, const TurnPaths& paths,
+                    const std::vector<std::vector<int>>& arriving, std::vector<int>& y,
+                    UnionFind& trails, int& count) {
+  double added_m = 0.0;
+  while (trails.count() > 1) {
+    OneWayMerge best;
+    for (int j = 0; j < pg.n; ++j)
+      cheapestOneWayMergeAt(pg, paths, usedTurnsAt(pg, arriving[sz(j)], y), trails, best);
+    if (best.path.empty()) break;
+    --y[sz(best.drop_a)], --y[sz(best.drop_b)], ++y[sz(best.add)];
+    trails.unite(best.path.front(), pg.next[sz(best.add)]);
+    addWalk(pg, best.path, y, trails);
+    ++count;
+    added_m += best.cost_m;
   }
-  // Step 3c: closed walks from what is left to the main trail.
+  return added_m;
+}
+
+/// The shortest legal closed walk from the trail of c0 to the main trail (the one of e0), tried
+/// from the first few edges of that trail.
+std::vector<int> closedWalkToMain(const PlanGraph& pg, const TurnPaths& paths, UnionFind& trails,
+                                  int c0, int e0, double& length_m) {
+  const int comp = trails.find(c0);
+  std::vector<int> best_walk;
+  length_m = std::numeric_limits<double>::infinity();
+  int tried = 0;
+  for (int c = c0; c < pg.m && tried < 8; ++c) {
+    if (trails.find(c) != comp) continue;
+    ++tried;
+    const int main_root = trails.find(e0);
+    auto there = paths.toNearest(c, -1, [&](int e) { return trails.find(e) == main_root; });
+    if (!there) continue;
+    auto back = paths.toNearest(there->edges.back(), -1, [c](int e) { return e == c; });
+    if (!back || there->length_m + back->length_m >= length_m) continue;
+    length_m = there->length_m + back->length_m;
+    best_walk.assign(1, c);
+    best_walk.insert(best_walk.end(), there->edges.begin(), there->edges.end());
+    best_walk.insert(best_walk.end(), back->edges.begin(), back->edges.end());
+  }
+  return best_walk;
+}
+
+/// Step 3c: closed walks from what is still apart to the main trail.
+void closedWalkMerges(const PlanGraph& pg, const TurnPaths& paths, std::vector<int>& y,
+                      UnionFind& trails, int e0, int& count) {
   for (int c0 = 0; c0 < pg.m; ++c0) {
-    if (uf.find(c0) == uf.find(e0)) continue;
-    const int comp = uf.find(c0);
-    std::vector<int> best_walk;
-    double best = std::numeric_limits<double>::infinity();
-    int tried = 0;
-    for (int c = c0; c < pg.m && tried < 8; ++c) {
-      if (uf.find(c) != comp) continue;
-      ++tried;
-      const int main_root = uf.find(e0);
-      auto p1 = paths.toNearest(c, -1, [&](int e) { return uf.find(e) == main_root; });
-      if (!p1) continue;
-      auto p2 = paths.toNearest(p1->edges.back(), -1, [c](int e) { return e == c; });
-      if (!p2 || p1->length_m + p2->length_m >= best) continue;
-      best = p1->length_m + p2->length_m;
-      best_walk.assign(1, c);
-      best_walk.insert(best_walk.end(), p1->edges.begin(), p1->edges.end());
-      best_walk.insert(best_walk.end(), p2->edges.begin(), p2->edges.end());
-    }
-    if (best_walk.empty())
+    if (trails.find(c0) == trails.find(e0)) continue;
+    double length_m = 0.0;
+    const std::vector<int> walk = closedWalkToMain(pg, paths, trails, c0, e0, length_m);
+    if (walk.empty())
       throw std::runtime_error("postman: cannot connect edge " + std::to_string(c0) +
                                " to the main circuit");
-    addWalk(best_walk);
-    uf.unite(e0, c0);
-    ++detours;
-    detour_len += best;
+    addWalk(pg, walk, y, trails);
+    trails.unite(e0, c0);
+    ++count;
   }
+}
 
+/// What the planner needs throughout: the graph, its paths, the edges arriving at each node and
+/// the first edge of the circuit.
+struct PostmanGraph {
+  const PlanGraph& pg;
+  const TurnPaths& paths;
+  std::vector<std::vector<int>> arriving;
+  int e0;
+  PostmanGraph(const PlanGraph& g, const TurnPaths& p, int start)
+      : pg(g), paths(p), arriving(sz(g.n)), e0(g.out[sz(g.outBegin(start))]) {
+    for (int e = 0; e < g.m; ++e) arriving[sz(g.v[sz(e)])].push_back(e);
+  }
+};
+
+/// Step 3 on one circulation: free merges, then merges that cost a detour.
+Connection connect(const PostmanGraph& g, std::vector<int> y) {
+  Connection t;
+  UnionFind trails = supportComponents(g.pg, y);
+  freeMerges(g.pg, g.arriving, y, trails, t.swaps);
+  if (trails.count() > 1) {
+    oneWayMerges(g.pg, g.paths, g.arriving, y, trails, t.one_way);
+    closedWalkMerges(g.pg, g.paths, y, trails, g.e0, t.detours);
+  }
+  t.y = std::move(y);
+  return t;
+}
+
+/// The smallest trail apart from the main one (ties: the lowest root).
+int smallestOtherTrail(UnionFind& trails, int m, int e0) {
+  std::map<int, int> size;
+  for (int e = 0; e < m; ++e) ++size[trails.find(e)];
+  int small = -1;
+  for (auto& [root, count] : size)
+    if (root != trails.find(e0) && (small < 0 || count < size[small])) small = root;
+  return small;
+}
+
+/// The cheapest circulation that also takes one unused legal turn into trail `small`; the
+/// chosen turn is appended to `forced` (nothing when there is no such turn).
+std::vector<int> cheapestForcing(const PlanGraph& pg, const std::vector<int>& y,
+                                 UnionFind& trails, int small, std::vector<int>& forced) {
+  double best_m = std::numeric_limits<double>::infinity();
+  std::vector<int> best_y;
+  int best_turn = -1;
+  for (int e = 0; e < pg.m; ++e) {
+    if (trails.find(e) == small) continue;
+    for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) {
+      if (trails.find(pg.next[sz(k)]) != small || y[sz(k)] > 0) continue;
+      forced.push_back(k);
+      std::vector<int> trial = legalCirculation(pg, forced);
+      forced.pop_back();
+      const double length_m = circulationLength(pg, trial);
+      if (length_m < best_m) best_m = length_m, best_y = std::move(trial), best_turn = k;
+    }
+  }
+  if (best_turn >= 0) forced.push_back(best_turn);
+  return best_y;
+}
+
+/// Step 3, two ways, the shorter wins: (A) merge the trails of the optimal circulation y0 with
+/// free swaps + detours; (B) re-solve the circulation forcing one legal turn into a still
+/// separate trail (the flow re-routes optimally around it), a few rounds.
+Connection connectBest(const PostmanGraph& g, const std::vector<int>& y0, int max_rounds,
+                   int& forcing_rounds) {
+  Connection best = connect(g, y0);
+  double best_len = circulationLength(g.pg, best.y);
+  std::vector<int> forced, y = y0;
+  for (forcing_rounds = 0; forcing_rounds < max_rounds; ++forcing_rounds) {
+    UnionFind trails = supportComponents(g.pg, y);
+    int swaps = 0;
+    std::vector<int> merged = y;
+    freeMerges(g.pg, g.arriving, merged, trails, swaps);
+    if (trails.count() == 1) break;
+    const int small = smallestOtherTrail(trails, g.pg.m, g.e0);
+    std::vector<int> forced_y = cheapestForcing(g.pg, y, trails, small, forced);
+    if (forced_y.empty()) break;
+    y = std::move(forced_y);
+    Connection t = connect(g, y);
+    const double length_m = circulationLength(g.pg, t.y);
+    if (length_m < best_len) best = std::move(t), best_len = length_m;
+  }
+  return best;
+}
+
+/// Step 4: Hierholzer on the line multigraph with turn counts y, starting with e0. The circuit
+/// returns to e0; the returned route ends at the start node.
+std::vector<int> eulerCircuit(const PlanGraph& pg, std::vector<int> y, int e0) {
+  std::vector<int> next_turn(pg.next_off.begin(), pg.next_off.end() - 1);
+  std::vector<int> stack{e0}, circuit;
+  while (!stack.empty()) {
+    const int e = stack.back();
+    int& k = next_turn[sz(e)];
+    while (k < pg.nextEnd(e) && y[sz(k)] == 0) ++k;
+    if (k < pg.nextEnd(e)) {
+      --y[sz(k)];
+      stack.push_back(pg.next[sz(k)]);
+    } else {
+      circuit.push_back(e);
+      stack.pop_back();
+    }
+  }
+  std::reverse(circuit.begin(), circuit.end());
+  if (std::any_of(y.begin(), y.end(), [](int c) { return c != 0; }))
+    throw std::logic_error("postman: Euler circuit left turns unused (disconnected support)");
+  circuit.pop_back();
+  return circuit;
+}
+
+/// An open route: the circuit up to the last edge driven for the first time.
+void trimAfterLastNewEdge(std::vector<int>& circuit, int m) {
+  std::vector<char> seen(sz(m), 0);
+  std::size_t last_new = 0;
+  for (std::size_t i = 0; i < circuit.size(); ++i)
+    if (!seen[sz(circuit[i])]) seen[sz(circuit[i])] = 1, last_new = i;
+  circuit.resize(last_new + 1);
 }
 
 }  // namespace
@@ -272,112 +406,26 @@ double turnFreePostmanLength(const PlanGraph& pg) {
 
 PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start) {
   const double lower_bound = turnFreePostmanLength(pg);
-  const int e0 = pg.out[sz(pg.outBegin(start))];
-  std::vector<std::vector<int>> into(sz(pg.n));
-  for (int e = 0; e < pg.m; ++e) into[sz(pg.v[sz(e)])].push_back(e);
-  std::vector<int> forced;
-  const std::vector<int> y0 = legalCirculation(pg, forced);
-  Trails first;
-  first.y = y0;
-  const double circulation_len = first.length(pg);
-  UnionFind uf0 = supportComponents(pg, y0);
-  const int components = countRoots(uf0, pg.m);
-
-  // Connect (step 3), two ways, the shorter wins: (A) merge the trails of the optimal
-  // circulation with free swaps + detours; (B) re-solve the circulation forcing one legal turn
-  // into a still separate trail (the flow re-routes optimally around it), a few rounds.
-  auto connect = [&](std::vector<int> y) {
-    Trails t;
-    UnionFind uf = supportComponents(pg, y);
-    freeMerges(pg, into, y, uf, t.swaps);
-    if (countRoots(uf, pg.m) > 1) detourMerges(pg, paths, into, y, uf, e0, t);
-    t.y = std::move(y);
-    return t;
-  };
-  Trails best = connect(y0);
-  double best_len = best.length(pg);
-  int forced_rounds = 0;
-  std::vector<int> y = y0;
-  for (int round = 0; round < cfg.postman.max_forcing_rounds; ++round) {
-    UnionFind uf = supportComponents(pg, y);
-    int swaps = 0;
-    std::vector<int> ym = y;
-    freeMerges(pg, into, ym, uf, swaps);
-    if (countRoots(uf, pg.m) == 1) break;
-    // The smallest trail not containing e0: try forcing each legal turn into it.
-    std::map<int, int> size;
-    for (int e = 0; e < pg.m; ++e) ++size[uf.find(e)];
-    int small = -1;
-    for (auto& [r, s] : size)
-      if (r != uf.find(e0) && (small < 0 || s < size[small])) small = r;
-    double trial_best = std::numeric_limits<double>::infinity();
-    std::vector<int> trial_y;
-    int trial_k = -1;
-    for (int e = 0; e < pg.m; ++e) {
-      if (uf.find(e) == small) continue;
-      for (int k = pg.nextBegin(e); k < pg.nextEnd(e); ++k) {
-        if (uf.find(pg.next[sz(k)]) != small || y[sz(k)] > 0) continue;
-        forced.push_back(k);
-        std::vector<int> yt = legalCirculation(pg, forced);
-        forced.pop_back();
-        Trails tt;
-        tt.y = yt;
-        const double l = tt.length(pg);
-        if (l < trial_best) trial_best = l, trial_y = std::move(yt), trial_k = k;
-      }
-    }
-    if (trial_k < 0) break;
-    forced.push_back(trial_k);
-    y = trial_y;
-    ++forced_rounds;
-    Trails t = connect(y);
-    const double l = t.length(pg);
-    if (l < best_len) best = std::move(t), best_len = l;
-  }
-  std::vector<int>& yb = best.y;
-  const int swaps = best.swaps, one_way = best.one_way, detours = best.detours;
-  const double detour_len = best_len - circulation_len;
-  y = yb;
-
-  // Step 4: Hierholzer on the line multigraph, starting with e0.
-  std::vector<int> ptr(pg.next_off.begin(), pg.next_off.end() - 1);
-  std::vector<int> stack{e0}, circuit;
-  while (!stack.empty()) {
-    const int e = stack.back();
-    int& k = ptr[sz(e)];
-    while (k < pg.nextEnd(e) && y[sz(k)] == 0) ++k;
-    if (k < pg.nextEnd(e)) {
-      --y[sz(k)];
-      stack.push_back(pg.next[sz(k)]);
-    } else {
-      circuit.push_back(e);
-      stack.pop_back();
-    }
-  }
-  std::reverse(circuit.begin(), circuit.end());
-  if (std::any_of(y.begin(), y.end(), [](int c) { return c != 0; }))
-    throw std::logic_error("postman: Euler circuit left turns unused (disconnected support)");
-  circuit.pop_back();  // the circuit returns to e0; the route ends at the start node
-  if (!cfg.postman.closed) {
-    std::vector<char> seen(sz(pg.m), 0);
-    std::size_t last_new = 0;
-    for (std::size_t i = 0; i < circuit.size(); ++i)
-      if (!seen[sz(circuit[i])]) seen[sz(circuit[i])] = 1, last_new = i;
-    circuit.resize(last_new + 1);
-  }
+  const PostmanGraph g(pg, paths, start);
+  const std::vector<int> y0 = legalCirculation(pg, {});
+  const double circulation_len = circulationLength(pg, y0);
+  const int components = supportComponents(pg, y0).count();
+  int forcing_rounds = 0;
+  const Connection best = connectBest(g, y0, cfg.postman.max_forcing_rounds, forcing_rounds);
 
   PlanOutput out;
-  out.edges = std::move(circuit);
+  out.edges = eulerCircuit(pg, best.y, g.e0);
+  if (!cfg.postman.closed) trimAfterLastNewEdge(out.edges, pg.m);
   double length = 0.0;
   for (int e : out.edges) length += pg.len[sz(e)];
   out.extra_json = nlohmann::json{{"turn_free_optimum_m", lower_bound},
                                   {"legal_circulation_m", circulation_len},
                                   {"trails_before_merge", components},
-                                  {"free_merges", swaps},
-                                  {"forcing_rounds", forced_rounds},
-                                  {"one_way_detours", one_way},
-                                  {"closed_walk_detours", detours},
-                                  {"detour_length_m", detour_len},
+                                  {"free_merges", best.swaps},
+                                  {"forcing_rounds", forcing_rounds},
+                                  {"one_way_detours", best.one_way},
+                                  {"closed_walk_detours", best.detours},
+                                  {"detour_length_m", circulationLength(pg, best.y) - circulation_len},
                                   {"excess_over_turn_free_pct",
                                    lower_bound > 0 ? 100.0 * (length / lower_bound - 1.0) : 0.0}}
                        .dump();

@@ -46,12 +46,11 @@
 #include "slamroute/core/Log.hpp"
 #include "slamroute/rl/Eif.hpp"
 #include "slamroute/rl/Planners.hpp"
+#include "Index.hpp"
 
 namespace slamroute::rl {
 
 namespace {
-
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 
 /// Action table over states: edge states 0..m-1, node states m..m+n-1.
 struct Table {
@@ -89,8 +88,9 @@ struct EpisodeCoverage {
   Goal goal;
   std::vector<int> node_stamp, street_stamp;
   int stamp = 0, remaining = 0;
-  EpisodeCoverage(const PlanGraph& g, Goal gl)
-      : pg(g), goal(gl), node_stamp(sz(g.n), 0), street_stamp(sz(g.num_streets), 0) {}
+  EpisodeCoverage(const PlanGraph& graph, Goal goal_kind)
+      : pg(graph), goal(goal_kind), node_stamp(sz(graph.n), 0),
+        street_stamp(sz(graph.num_streets), 0) {}
   void reset(int start) {
     ++stamp;
     remaining = goal == Goal::Nodes ? pg.n - 1 : pg.num_streets;
@@ -129,7 +129,7 @@ struct FastEif {
     S = S0;
   }
   void reset() { S = S0; }
-  void drive(const EdgeMotion& mo) { S = mo.F * S * mo.F.transpose() + mo.Q; }
+  void drive(const EdgeMotion& motion) { S = motion.F * S * motion.F.transpose() + motion.Q; }
   void closeLoop(const Eigen::Matrix3d& node_cov) {
     const Eigen::Matrix3d L = S.inverse() + (node_cov + R_lc).inverse();
     S = L.inverse();
@@ -175,52 +175,157 @@ double learnedShare(const PlanGraph& pg, const std::vector<int>& edges, double s
   return length > 0.0 ? std::max(0.0, 1.0 - shortest_m / length) : 0.0;
 }
 
-}  // namespace
-
-PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
-                         std::uint64_t seed) {
-  const QLearningConfig& qc = cfg.qlearning;
+/// Settings the planner cannot work with, also when called without a validated config.
+void checkSettings(const QLearningConfig& qc) {
   if (qc.episodes < 0 || qc.signature_bits < 0 || qc.signature_bits > 6 || qc.alpha <= 0 ||
       qc.alpha > 1 || qc.gamma < 0 || qc.gamma >= 1)
     throw std::invalid_argument("rl.qlearning: need episodes >= 0, 0 <= signature_bits <= 6, "
                                 "0 < alpha <= 1, 0 <= gamma < 1");
-  const Goal goal = parseGoal(cfg.goal);
-  const bool full = cfg.reward == "full";
-  Table t = buildTable(pg, qc.signature_bits);
-  const std::vector<int>& act = t.act;
+}
 
-  // Precomputed per edge: motion model (EIF prediction) and accuracy reward.
-  std::vector<EdgeMotion> motion(sz(pg.m));
-  for (int e = 0; e < pg.m; ++e)
-    motion[sz(e)] = edgeMotion(cfg.eif, pg.len[sz(e)], pg.heading[sz(e)], pg.weight[sz(e)]);
-  // R_U normalisation u_ref (see header comment).
-  double u_ref = 1.0;
-  {
-    PoseEif f(cfg.eif);
-    const EdgeMotion mo = edgeMotion(cfg.eif, pg.mean_len, 0.0, 1.0);
-    const double l0 = f.logDetInfo();
-    for (int i = 0; i < pg.n; ++i) f.drive(mo);
-    u_ref = std::max((l0 - f.logDetInfo()) / std::max(pg.n, 1), 1e-12);
+/// R_U normalisation u_ref (see the header comment): the mean per-edge drop of log det L over n
+/// mean-length edges of weight 1.
+double uncertaintyReference(const PlanGraph& pg, const EifConfig& eif) {
+  PoseEif f(eif);
+  const EdgeMotion motion = edgeMotion(eif, pg.mean_len, 0.0, 1.0);
+  const double l0 = f.logDetInfo();
+  for (int i = 0; i < pg.n; ++i) f.drive(motion);
+  return std::max((l0 - f.logDetInfo()) / std::max(pg.n, 1), 1e-12);
+}
+
+/// The training environment: coverage of the episode, the EIF along it and the reward of a step
+/// (eqs. 6-7).
+class Environment {
+ public:
+  Environment(const PlanGraph& pg, const Config& cfg, Goal goal)
+      : cov(pg, goal), pg_(pg), cfg_(cfg), qc_(cfg.qlearning), full_(cfg.reward == "full"),
+        eif_(cfg.eif), node_cov_(sz(pg.n)), node_logdet_(sz(pg.n), 0.0),
+        node_travel_(sz(pg.n), 0.0), node_stamp_(sz(pg.n), 0) {
+    motion_.resize(sz(pg.m));
+    for (int e = 0; e < pg.m; ++e)
+      motion_[sz(e)] = edgeMotion(cfg.eif, pg.len[sz(e)], pg.heading[sz(e)], pg.weight[sz(e)]);
+    u_ref = uncertaintyReference(pg, cfg.eif);
+    u_scale_ = 1.0 / (20.0 * u_ref);
   }
-  const double u_scale = 1.0 / (20.0 * u_ref);
 
-  EpisodeCoverage cov(pg, goal);
-  FastEif eif(cfg.eif);
-  std::vector<Eigen::Matrix3d> node_cov(sz(pg.n));
-  std::vector<double> node_logdet(sz(pg.n), 0.0), node_travel(sz(pg.n), 0.0);
-  std::vector<int> node_stamp(sz(pg.n), 0);
-  std::mt19937_64 rng(seed);
+  /// Starts episode `episode` (0-based) at node `from`.
+  void reset(int from, int episode) {
+    stamp_ = episode + 1;
+    cov.reset(from);
+    eif_.reset();
+    node_cov_[sz(from)] = eif_.S;
+    node_logdet_[sz(from)] = eif_.logDetCov();
+    node_travel_[sz(from)] = 0.0;
+    node_stamp_[sz(from)] = stamp_;
+    travel_ = 0.0;
+    logdet_cov_ = eif_.logDetCov();
+  }
+
+  /// Drives edge f; returns the reward R.
+  double step(int f) {
+    const double gained = cov.drive(f);
+    double reward = qc_.weight_accuracy * pg_.weight[sz(f)];
+    if (!full_) return reward;
+    travel_ += pg_.len[sz(f)];
+    eif_.drive(motion_[sz(f)]);
+    const double logdet = arriveAt(pg_.v[sz(f)]);
+    // R_U: gain of log det L = drop of log det covariance, clipped (see header).
+    const double uncertainty =
+        std::clamp((logdet_cov_ - logdet) * u_scale_ * qc_.weight_uncertainty,
+                   -qc_.uncertainty_clip, qc_.uncertainty_clip);
+    reward += qc_.weight_coverage * (gained - qc_.step_length_cost * pg_.len[sz(f)] / pg_.mean_len) +
+              uncertainty;
+    logdet_cov_ = logdet;
+    return reward;
+  }
+
+  EpisodeCoverage cov;
+  double u_ref = 1.0;
+
+ private:
+  /// Closes a loop at a node seen this episode far enough back; keeps the best covariance seen
+  /// at each node. Returns log det of the covariance after arriving at w.
+  double arriveAt(int w) {
+    double logdet = eif_.logDetCov();
+    if (node_stamp_[sz(w)] == stamp_) {
+      if (travel_ - node_travel_[sz(w)] >= cfg_.eif.loop_min_travel_m) {
+        eif_.closeLoop(node_cov_[sz(w)]);
+        logdet = eif_.logDetCov();
+      }
+      if (logdet < node_logdet_[sz(w)]) node_cov_[sz(w)] = eif_.S, node_logdet_[sz(w)] = logdet;
+    } else {
+      node_stamp_[sz(w)] = stamp_;
+      node_cov_[sz(w)] = eif_.S;
+      node_logdet_[sz(w)] = logdet;
+    }
+    node_travel_[sz(w)] = travel_;
+    return logdet;
+  }
+
+  const PlanGraph& pg_;
+  const Config& cfg_;
+  const QLearningConfig& qc_;
+  bool full_;
+  std::vector<EdgeMotion> motion_;
+  double u_scale_ = 1.0;
+  FastEif eif_;
+  std::vector<Eigen::Matrix3d> node_cov_;
+  std::vector<double> node_logdet_, node_travel_;
+  std::vector<int> node_stamp_;
+  int stamp_ = 0;
+  double travel_ = 0.0, logdet_cov_ = 0.0;
+};
+
+/// What training did, for route.json.
+struct TrainingStats {
+  long long steps = 0;
+  int episodes_reaching_goal = 0;
+};
+
+/// The Q row of state s under coverage signature sig.
+float* qRow(Table& t, int s, int sig) { return &t.q[t.qoff[sz(s)] + sz(sig) * sz(t.deg(s))]; }
+
+/// One epsilon-greedy episode from node `from` with Q-learning updates (eq. 5); true when it met
+/// the goal.
+bool runEpisode(Table& t, Environment& env, const QLearningConfig& qc, int from, double eps,
+                std::mt19937_64& rng, long long cap, long long& steps) {
   auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  int s = env.cov.pg.m + from;
+  int sig = signature(t, s, t.act, env.cov);
+  for (long long step = 0; step < cap; ++step) {
+    float* qs = qRow(t, s, sig);
+    const int i = uniform() < eps ? explore(t, s, t.act, env.cov, qc.explore_new_first, rng)
+                                  : greedy(qs, t.deg(s));
+    const int f = t.act[sz(t.act_off[sz(s)] + i)];
+    const double reward = env.step(f);
+    ++steps;
+    const bool done = env.cov.remaining == 0;
+    const int sig2 = signature(t, f, t.act, env.cov);
+    double target = reward;
+    if (!done) {
+      const float* q2 = qRow(t, f, sig2);
+      target += qc.gamma * q2[greedy(q2, t.deg(f))];
+    }
+    qs[i] += static_cast<float>(qc.alpha * (target - qs[i]));
+    if (done) return true;
+    s = f;
+    sig = sig2;
+  }
+  return false;
+}
+
+/// Trains the table over qc.episodes episodes (exploration schedule in the header comment).
+TrainingStats train(Table& t, Environment& env, const QLearningConfig& qc, int start,
+                    std::uint64_t seed) {
+  const PlanGraph& pg = env.cov.pg;
+  std::mt19937_64 rng(seed);
   // A random walk needs about m ln m steps to drive every one of m edges (cover time), so a cap
   // linear in m cuts the walks of larger graphs short of the goal.
   const double cap_scale = qc.cap_scales_with_log_edges ? std::max(1.0, std::log(pg.m)) : 1.0;
   const long long cap =
       std::max<long long>(static_cast<long long>(qc.max_steps_per_edge * pg.m * cap_scale), 1);
   const int decay_eps = std::max(1, static_cast<int>(qc.epsilon_decay_fraction * qc.episodes));
-  const double alpha = qc.alpha, gamma = qc.gamma;
-  long long total_steps = 0;
-  int completed_episodes = 0;
-
+  TrainingStats stats;
   Progress progress("qlearning", sz(std::max(qc.episodes, 0)));
   for (int ep = 0; ep < qc.episodes; ++ep) {
     const double eps = qc.epsilon_start + (qc.epsilon_end - qc.epsilon_start) *
@@ -228,125 +333,105 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
     const int from = qc.spread_starts && ep % 2 == 1
                          ? static_cast<int>(rng() % static_cast<std::uint64_t>(pg.n))
                          : start;
-    cov.reset(from);
-    eif.reset();
-    node_cov[sz(from)] = eif.S;
-    node_logdet[sz(from)] = eif.logDetCov();
-    node_travel[sz(from)] = 0.0;
-    node_stamp[sz(from)] = ep + 1;
-    double travel = 0.0, logdet_cov = eif.logDetCov();
-    int s = pg.m + from;
-    int sig = signature(t, s, act, cov);
-    for (long long step = 0; step < cap; ++step) {
-      const int deg = t.deg(s);
-      float* qs = &t.q[t.qoff[sz(s)] + sz(sig) * sz(deg)];
-      const int i = uniform() < eps ? explore(t, s, act, cov, qc.explore_new_first, rng)
-                                    : greedy(qs, deg);
-      const int f = act[sz(t.act_off[sz(s)] + i)];
-      // Environment transition and reward (eqs. 6-7).
-      const double gained = cov.drive(f);
-      double r = qc.weight_accuracy * pg.weight[sz(f)];
-      if (full) {
-        travel += pg.len[sz(f)];
-        eif.drive(motion[sz(f)]);
-        const int w = pg.v[sz(f)];
-        double ld = eif.logDetCov();
-        if (node_stamp[sz(w)] == ep + 1) {
-          if (travel - node_travel[sz(w)] >= cfg.eif.loop_min_travel_m) {
-            eif.closeLoop(node_cov[sz(w)]);
-            ld = eif.logDetCov();
-          }
-          if (ld < node_logdet[sz(w)]) node_cov[sz(w)] = eif.S, node_logdet[sz(w)] = ld;
-        } else {
-          node_stamp[sz(w)] = ep + 1;
-          node_cov[sz(w)] = eif.S;
-          node_logdet[sz(w)] = ld;
-        }
-        node_travel[sz(w)] = travel;
-        // R_U: gain of log det L = drop of log det covariance, clipped (see header).
-        const double ru = std::clamp((logdet_cov - ld) * u_scale * qc.weight_uncertainty,
-                                     -qc.uncertainty_clip, qc.uncertainty_clip);
-        r += qc.weight_coverage * (gained - qc.step_length_cost * pg.len[sz(f)] / pg.mean_len) + ru;
-        logdet_cov = ld;
-      }
-      ++total_steps;
-      const bool done = cov.remaining == 0;
-      const int s2 = f;
-      const int sig2 = signature(t, s2, act, cov);
-      double target = r;
-      if (!done) {
-        const int deg2 = t.deg(s2);
-        const float* q2 = &t.q[t.qoff[sz(s2)] + sz(sig2) * sz(deg2)];
-        target += gamma * q2[greedy(q2, deg2)];
-      }
-      qs[i] += static_cast<float>(alpha * (target - qs[i]));
-      if (done) {
-        ++completed_episodes;
-        break;
-      }
-      s = s2;
-      sig = sig2;
-    }
+    env.reset(from, ep);
+    if (runEpisode(t, env, qc, from, eps, rng, cap, stats.steps)) ++stats.episodes_reaching_goal;
     progress.update(sz(ep + 1));
   }
   progress.finish();
+  return stats;
+}
 
-  // Greedy roll-out with stall detection (see header comment).
-  PlanOutput out;
-  detail::Coverage rc(pg, goal, start);
+/// The greedy roll-out's route and its shortest-path completions.
+struct Rollout {
+  std::vector<int> edges;
+  bool completed_by_shortest_paths = false;
+  int segments = 0;
+  double shortest_len_m = 0.0;
+};
+
+/// Appends the shortest legal path from the current state to the nearest uncovered part; false
+/// when there is none.
+bool completeOnce(const PlanGraph& pg, const TurnPaths& paths, detail::Coverage& cov, int s,
+                  int start, Rollout& r) {
+  auto p = paths.toNearest(s < pg.m ? s : -1, start, [&cov](int e) { return cov.isNew(e); });
+  if (!p) return false;
+  for (int e : p->edges) {
+    cov.drive(e);
+    r.edges.push_back(e);
+  }
+  r.shortest_len_m += p->length_m;
+  ++r.segments;
+  r.completed_by_shortest_paths = true;
+  return true;
+}
+
+/// Greedy roll-out of the table from the start node with stall detection (see header comment).
+Rollout greedyRollout(const PlanGraph& pg, const TurnPaths& paths, const Table& t,
+                      const QLearningConfig& qc, Goal goal, int start) {
+  Rollout r;
+  detail::Coverage cov(pg, goal, start);
   std::vector<int> seen_epoch(sz(pg.m + pg.n), -1);
-  int epoch = 0, segments = 0;
-  double sp_len = 0.0;
+  int epoch = 0;
   int s = pg.m + start;
   const long long roll_cap = 10LL * pg.m + 10;
   long long progress_step = 0;
-  for (long long step = 0; !rc.done() && step < roll_cap; ++step) {
+  for (long long step = 0; !cov.done() && step < roll_cap; ++step) {
     const bool stalled = seen_epoch[sz(s)] == epoch ||
                          (qc.stall_steps > 0 && step - progress_step >= qc.stall_steps);
     if (stalled) {  // back in a state without progress (or too long without any)
-      if (!qc.complete_with_shortest_paths) break;
-      auto p = paths.toNearest(s < pg.m ? s : -1, start, [&rc](int e) { return rc.isNew(e); });
-      if (!p) break;
-      for (int e : p->edges) {
-        rc.drive(e);
-        out.edges.push_back(e);
-      }
-      sp_len += p->length_m;
-      ++segments;
-      out.completed_by_shortest_paths = true;
-      s = out.edges.back();
+      if (!qc.complete_with_shortest_paths || !completeOnce(pg, paths, cov, s, start, r)) break;
+      s = r.edges.back();
       ++epoch;
       progress_step = step;
       continue;
     }
     seen_epoch[sz(s)] = epoch;
-    // Signature of the roll-out's own coverage.
-    int sg = 0;
+    int sig = 0;  // signature of the roll-out's own coverage
     for (int i = 0; i < t.bits[sz(s)]; ++i)
-      sg |= rc.isNew(act[sz(t.act_off[sz(s)] + i)]) ? (1 << i) : 0;
+      sig |= cov.isNew(t.act[sz(t.act_off[sz(s)] + i)]) ? (1 << i) : 0;
     const int deg = t.deg(s);
-    const int f = act[sz(t.act_off[sz(s)] + greedy(&t.q[t.qoff[sz(s)] + sz(sg) * sz(deg)], deg))];
-    if (rc.drive(f)) ++epoch, progress_step = step;
-    out.edges.push_back(f);
+    const int f =
+        t.act[sz(t.act_off[sz(s)] + greedy(&t.q[t.qoff[sz(s)] + sz(sig) * sz(deg)], deg))];
+    if (cov.drive(f)) ++epoch, progress_step = step;
+    r.edges.push_back(f);
     s = f;
   }
-  if (!rc.done() && qc.complete_with_shortest_paths) {
-    segments += detail::completeByShortestPaths(pg, paths, rc, start, out.edges, &sp_len);
-    out.completed_by_shortest_paths = true;
+  if (!cov.done() && qc.complete_with_shortest_paths) {
+    r.segments += detail::completeByShortestPaths(pg, paths, cov, start, r.edges, &r.shortest_len_m);
+    r.completed_by_shortest_paths = true;
   }
+  return r;
+}
+
+}  // namespace
+
+PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start,
+                         std::uint64_t seed) {
+  const QLearningConfig& qc = cfg.qlearning;
+  checkSettings(qc);
+  const Goal goal = parseGoal(cfg.goal);
+  Table t = buildTable(pg, qc.signature_bits);
+  Environment env(pg, cfg, goal);
+  const TrainingStats stats = train(t, env, qc, start, seed);
+  Rollout rollout = greedyRollout(pg, paths, t, qc, goal, start);
+
+  PlanOutput out;
+  out.edges = std::move(rollout.edges);
+  out.completed_by_shortest_paths = rollout.completed_by_shortest_paths;
   if (out.completed_by_shortest_paths)
-    out.notes = "greedy roll-out stalled " + std::to_string(segments) +
+    out.notes = "greedy roll-out stalled " + std::to_string(rollout.segments) +
                 " time(s); completed by shortest paths to the nearest uncovered part";
   out.heuristic = true;
-  out.extra_json = nlohmann::json{{"episodes", qc.episodes},
-                                  {"episodes_reaching_goal", completed_episodes},
-                                  {"training_steps", total_steps},
-                                  {"q_table_entries", t.q.size()},
-                                  {"u_ref_logdet_per_edge", u_ref},
-                                  {"shortest_path_segments", segments},
-                                  {"shortest_path_length_m", sp_len},
-                                  {"learned_policy_share", learnedShare(pg, out.edges, sp_len)}}
-                       .dump();
+  out.extra_json =
+      nlohmann::json{{"episodes", qc.episodes},
+                     {"episodes_reaching_goal", stats.episodes_reaching_goal},
+                     {"training_steps", stats.steps},
+                     {"q_table_entries", t.q.size()},
+                     {"u_ref_logdet_per_edge", env.u_ref},
+                     {"shortest_path_segments", rollout.segments},
+                     {"shortest_path_length_m", rollout.shortest_len_m},
+                     {"learned_policy_share", learnedShare(pg, out.edges, rollout.shortest_len_m)}}
+          .dump();
   return out;
 }
 

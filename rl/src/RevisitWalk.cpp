@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <limits>
 
+#include "Index.hpp"
+
 namespace slamroute::rl::detail {
 
 namespace {
-
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 
 class Walker {
  public:

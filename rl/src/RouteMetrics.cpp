@@ -5,14 +5,11 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "Index.hpp"
 #include "slamroute/rl/Eif.hpp"
 #include "slamroute/rl/Planners.hpp"
 
 namespace slamroute::rl {
-
-namespace {
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
-}  // namespace
 
 int countIllegalTurns(const PlanGraph& pg, const std::vector<int>& edges) {
   int bad = 0;

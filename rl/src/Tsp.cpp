@@ -13,12 +13,12 @@
 #include "slamroute/core/Log.hpp"
 #include "LemonTsp.hpp"
 #include "slamroute/rl/Planners.hpp"
+#include "Index.hpp"
 
 namespace slamroute::rl {
 
 namespace {
 
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 using Matrix = std::vector<std::vector<double>>;

@@ -6,11 +6,9 @@
 #include <cmath>
 #include <limits>
 
-namespace slamroute::rl {
+#include "Index.hpp"
 
-namespace {
-std::size_t sz(int i) { return static_cast<std::size_t>(i); }
-}  // namespace
+namespace slamroute::rl {
 
 double positionDOptimality(const Eigen::Matrix3d& cov) {
   return std::sqrt(std::max(cov.topLeftCorner<2, 2>().determinant(), 0.0));

@@ -27,79 +27,90 @@ BuildInputs surveyInputs(const std::filesystem::path& dir) {
   return in;
 }
 
-BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
-  BuildOutput out;
-  const Traces traces = readTraces(in.traces);
-  out.built = buildRoadGraph(traces, cfg);
-  RoadGraph& g = out.built.graph;
+namespace {
 
-  if (!in.depth_index.empty()) {
-    std::vector<DepthFrame> frames;
-    try {
-      frames = readDepthIndex(in.depth_index);
-    } catch (const std::exception& e) {
-      logWarn(std::string("depth: ") + e.what() + "; every edge gets the fallback weight");
-    }
-    out.weights = assignDepthWeights(g, frames, cfg.depth);
-  } else {
+/// Paper §3.1 step 4: edge weights from the depth frames, or the fallback weight without them.
+WeightStats weighEdges(RoadGraph& g, const std::filesystem::path& depth_index,
+                       const DepthConfig& cfg) {
+  if (depth_index.empty()) {
     logWarn("depth: no depth/index.csv; every edge gets the fallback weight " +
-            std::to_string(cfg.depth.fallback_weight));
-    for (auto& e : g.edges) e.weight = cfg.depth.fallback_weight;
-    out.weights.fallback_weight = cfg.depth.fallback_weight;
+            std::to_string(cfg.fallback_weight));
+    for (auto& e : g.edges) e.weight = cfg.fallback_weight;
+    WeightStats w;
+    w.fallback_weight = cfg.fallback_weight;
+    return w;
   }
+  std::vector<DepthFrame> frames;
+  try {
+    frames = readDepthIndex(depth_index);
+  } catch (const std::exception& e) {
+    logWarn(std::string("depth: ") + e.what() + "; every edge gets the fallback weight");
+  }
+  return assignDepthWeights(g, frames, cfg);
+}
 
-  std::optional<TurnStats> turns;
+/// What matching the graph onto a SUMO net found (BuildOutput::validation holds the rest).
+struct NetMatch {
   std::size_t unmapped = 0;
-  if (!in.net.empty()) {
-    const SumoNet net = SumoNet::read(in.net);
-    out.validation = validateAgainstNet(g, out.built.node_is_end, net, cfg.sumo);
-    for (std::size_t n = 0; n < g.nodes.size(); ++n)
-      g.nodes[n].sumo_junction = out.validation->node_junction[n];
-    unmapped = mapSumoEdges(g, net, cfg.sumo);
-    if (unmapped > 0)
-      logWarn("build-graph: " + std::to_string(unmapped) + " edge(s) not mapped to SUMO edges");
-    if (cfg.sumo.turns_from_net) {
-      turns = turnsFromNet(g, net, cfg.sumo);
-      logInfo("build-graph: turns from the net: " + std::to_string(turns->forbidden_turns) + " of " +
-              std::to_string(turns->candidate_turns) + " turns at the graph's nodes are not allowed in SUMO");
-    }
-  }
+  std::optional<TurnStats> turns;
+};
 
-  const auto& st = out.built.stats;
-  nlohmann::json meta = {
-      {"generator", "slamroute build-graph (paper 3.1)"},
-      {"traces", in.traces.string()},
-      {"stats",
-       {{"trace_points", st.trace_points},
-        {"voxels", st.voxels},
-        {"intersection_points", st.intersection_points},
-        {"intersections", st.intersections},
-        {"dead_ends", st.dead_ends},
-        {"streets", st.streets},
-        {"one_way_streets", st.one_way_streets},
-        {"unknown_direction_streets", st.unknown_direction_streets},
-        {"merged_end_pairs", st.merged_end_pairs},
-        {"short_links", st.short_links},
-        {"passed_nodes", st.passed_nodes},
-        {"u_turn_streets", st.u_turn_streets},
-        {"roundabouts", st.roundabouts},
-        {"dropped_fragments", st.dropped_fragments},
-        {"seconds", st.seconds}}},
-      {"weights",
-       {{"depth_index", in.depth_index.string()},
-        {"frames", out.weights.frames},
-        {"scored", out.weights.scored},
-        {"failed", out.weights.failed},
-        {"unassigned", out.weights.unassigned},
-        {"streets_with_frames", out.weights.streets_with_frames},
-        {"mean_score", out.weights.mean_score},
-        {"score", "normalised entropy of the eigenvalues of the normals' scatter matrix"}}}};
-  std::vector<int> ends;
-  for (std::size_t n = 0; n < out.built.node_is_end.size(); ++n)
-    if (out.built.node_is_end[n]) ends.push_back(static_cast<int>(n));
-  meta["end_nodes"] = ends;
+/// Validation against the net, SUMO junction per node, SUMO edges per graph edge, turns.
+NetMatch matchToNet(BuildOutput& out, const std::filesystem::path& net_path,
+                    const SumoMatchConfig& cfg) {
+  RoadGraph& g = out.built.graph;
+  const SumoNet net = SumoNet::read(net_path);
+  out.validation = validateAgainstNet(g, out.built.node_is_end, net, cfg);
+  out.place_validation = validateAgainstPlaces(g, out.built.node_is_end, net, cfg);
+  for (std::size_t n = 0; n < g.nodes.size(); ++n)
+    g.nodes[n].sumo_junction = out.validation->node_junction[n];
+  NetMatch m;
+  m.unmapped = mapSumoEdges(g, net, cfg);
+  if (m.unmapped > 0)
+    logWarn("build-graph: " + std::to_string(m.unmapped) + " edge(s) not mapped to SUMO edges");
+  if (cfg.turns_from_net) {
+    m.turns = turnsFromNet(g, net, cfg);
+    logInfo("build-graph: turns from the net: " + std::to_string(m.turns->forbidden_turns) +
+            " of " + std::to_string(m.turns->candidate_turns) +
+            " turns at the graph's nodes are not allowed in SUMO");
+  }
+  return m;
+}
+
+nlohmann::json statsJson(const GraphBuildStats& st) {
+  return {{"trace_points", st.trace_points},
+          {"voxels", st.voxels},
+          {"intersection_points", st.intersection_points},
+          {"intersections", st.intersections},
+          {"dead_ends", st.dead_ends},
+          {"streets", st.streets},
+          {"one_way_streets", st.one_way_streets},
+          {"unknown_direction_streets", st.unknown_direction_streets},
+          {"merged_end_pairs", st.merged_end_pairs},
+          {"short_links", st.short_links},
+          {"passed_nodes", st.passed_nodes},
+          {"u_turn_streets", st.u_turn_streets},
+          {"roundabouts", st.roundabouts},
+          {"divided_node_pairs", st.divided_node_pairs},
+          {"divided_streets", st.divided_streets},
+          {"dropped_fragments", st.dropped_fragments},
+          {"seconds", st.seconds}};
+}
+
+nlohmann::json weightsJson(const WeightStats& w, const std::filesystem::path& depth_index) {
+  return {{"depth_index", depth_index.string()},
+          {"frames", w.frames},
+          {"scored", w.scored},
+          {"failed", w.failed},
+          {"unassigned", w.unassigned},
+          {"streets_with_frames", w.streets_with_frames},
+          {"mean_score", w.mean_score},
+          {"score", "normalised entropy of the eigenvalues of the normals' scatter matrix"}};
+}
+
+nlohmann::json roundaboutsJson(const std::vector<Roundabout>& roundabouts) {
   nlohmann::json rbs = nlohmann::json::array();
-  for (const auto& rb : out.built.roundabouts) {
+  for (const auto& rb : roundabouts) {
     nlohmann::json junctions = nlohmann::json::array();
     for (const auto& j : rb.junctions) junctions.push_back({j.x(), j.y(), j.z()});
     rbs.push_back({{"centre", {rb.centre.x(), rb.centre.y(), rb.centre.z()}},
@@ -108,16 +119,42 @@ BuildOutput buildGraph(const BuildInputs& in, const Config& cfg) {
                    {"vehicles", rb.vehicles},
                    {"junctions", junctions}});
   }
-  meta["roundabouts"] = rbs;
-  if (out.validation) {
+  return rbs;
+}
+
+std::string graphMetadata(const BuildInputs& in, const BuildOutput& out,
+                          const std::optional<NetMatch>& net) {
+  nlohmann::json meta = {{"generator", "slamroute build-graph (paper 3.1)"},
+                         {"traces", in.traces.string()},
+                         {"stats", statsJson(out.built.stats)},
+                         {"weights", weightsJson(out.weights, in.depth_index)}};
+  std::vector<int> ends;
+  for (std::size_t n = 0; n < out.built.node_is_end.size(); ++n)
+    if (out.built.node_is_end[n]) ends.push_back(static_cast<int>(n));
+  meta["end_nodes"] = ends;
+  meta["roundabouts"] = roundaboutsJson(out.built.roundabouts);
+  if (out.validation && net) {
+    const auto& turns = net->turns;
     meta["net"] = in.net.string();
     meta["validation"] = nlohmann::json::parse(out.validation->toJson());
-    meta["sumo_mapping"] = {{"unmapped_edges", unmapped},
+    meta["place_validation"] = nlohmann::json::parse(out.place_validation->toJson());
+    meta["sumo_mapping"] = {{"unmapped_edges", net->unmapped},
                             {"turns_from_net", turns.has_value()},
                             {"candidate_turns", turns ? turns->candidate_turns : 0},
                             {"forbidden_turns", turns ? turns->forbidden_turns : 0}};
   }
-  g.metadata_json = meta.dump();
+  return meta.dump();
+}
+
+}  // namespace
+
+BuildOutput buildGraphFromInputs(const BuildInputs& in, const Config& cfg) {
+  BuildOutput out;
+  out.built = graphFromTraces(readTraces(in.traces), cfg);
+  out.weights = weighEdges(out.built.graph, in.depth_index, cfg.depth);
+  std::optional<NetMatch> net;
+  if (!in.net.empty()) net = matchToNet(out, in.net, cfg.sumo);
+  out.built.graph.metadata_json = graphMetadata(in, out, net);
   return out;
 }
 

@@ -51,6 +51,14 @@ void EdgeConfig::validate() const {
   requireRange("min_link_vehicles", min_link_vehicles, 1, 1000000);
 }
 
+void DividedRoadConfig::validate() const {
+  requireNonNegative("max_node_gap_m", max_node_gap_m, 1000.0);
+  requireNonNegative("min_offset_m", min_offset_m, 1000.0);
+  requireNonNegative("max_along_m", max_along_m, 1000.0);
+  requirePositive("arm_length_m", arm_length_m, 1000.0);
+  requireNonNegative("parallel_angle_deg", parallel_angle_deg, 90.0);
+}
+
 void DepthConfig::validate() const {
   requireRange("pixel_stride", pixel_stride, 1, 1000);
   // A surface normal is the plane through at least three points.
@@ -71,6 +79,7 @@ void SumoMatchConfig::validate() const {
   requireNonNegative("stray_radius_m", stray_radius_m, 1000.0);
   requireNonNegative("stray_min_length_m", stray_min_length_m, 1e5);
   requireNonNegative("turn_max_detour_m", turn_max_detour_m, 1e5);
+  requireNonNegative("place_link_max_m", place_link_max_m, 1000.0);
 }
 
 void RoundaboutConfig::validate() const {

@@ -74,65 +74,71 @@ void writeDepthPng(const std::filesystem::path& path, const DepthImage& img) {
   writeFileAtomic(path, std::string(buf.begin(), buf.end()));
 }
 
-FrameScore scoreDepthImage(const DepthImage& img, const DepthConfig& cfg) {
-  if (img.width <= 0 || img.height <= 0 ||
-      img.mm.size() != static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height))
-    throw std::invalid_argument("depth image has inconsistent size");
-  const int s = std::max(1, cfg.pixel_stride);
-  const int k = std::max(3, cfg.normal_neighbours);
-  int w = std::max(1, cfg.search_window_px);
-  while ((2 * w + 1) * (2 * w + 1) < k) ++w;
-  const int gw = (img.width + s - 1) / s, gh = (img.height + s - 1) / s;
-  // Eq. 3: X = y, Y = D, Z = W - x (D scaled to pixel units, see above).
-  std::vector<Point3> P(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh));
-  std::vector<char> valid(P.size(), 0);
-  for (int gy = 0; gy < gh; ++gy)
-    for (int gx = 0; gx < gw; ++gx) {
-      const int x = gx * s, y = gy * s;
+namespace {
+
+/// Eq. 3 on every pixel_stride-th pixel: X = y, Y = D, Z = W - x (D scaled to pixel units);
+/// pixels without a return (or beyond max_depth_m) are not valid.
+struct ReprojectedGrid {
+  int gw = 0, gh = 0;
+  std::vector<Point3> P;
+  std::vector<char> valid;
+  std::size_t index(int gx, int gy) const {
+    return static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) + static_cast<std::size_t>(gx);
+  }
+};
+
+ReprojectedGrid reproject(const DepthImage& img, const DepthConfig& cfg, int stride) {
+  ReprojectedGrid g;
+  g.gw = (img.width + stride - 1) / stride;
+  g.gh = (img.height + stride - 1) / stride;
+  g.P.resize(static_cast<std::size_t>(g.gw) * static_cast<std::size_t>(g.gh));
+  g.valid.assign(g.P.size(), 0);
+  for (int gy = 0; gy < g.gh; ++gy)
+    for (int gx = 0; gx < g.gw; ++gx) {
+      const int x = gx * stride, y = gy * stride;
       const double d = img.at(x, y) / 1000.0;
       if (d <= 0.0 || d > cfg.max_depth_m) continue;
-      const std::size_t i = static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) +
-                            static_cast<std::size_t>(gx);
-      P[i] = Point3(y, d * cfg.depth_px_per_m, img.width - x);
-      valid[i] = 1;
+      const std::size_t i = g.index(gx, gy);
+      g.P[i] = Point3(y, d * cfg.depth_px_per_m, img.width - x);
+      g.valid[i] = 1;
     }
-  Mat3 S = Mat3::Zero();
-  int count = 0;
-  std::vector<std::pair<double, int>> cand;
-  for (int gy = 0; gy < gh; ++gy)
-    for (int gx = 0; gx < gw; ++gx) {
-      const std::size_t i = static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) +
-                            static_cast<std::size_t>(gx);
-      if (!valid[i]) continue;
-      cand.clear();
-      for (int ay = std::max(0, gy - w); ay <= std::min(gh - 1, gy + w); ++ay)
-        for (int ax = std::max(0, gx - w); ax <= std::min(gw - 1, gx + w); ++ax) {
-          const std::size_t j = static_cast<std::size_t>(ay) * static_cast<std::size_t>(gw) +
-                                static_cast<std::size_t>(ax);
-          if (valid[j]) cand.emplace_back((P[j] - P[i]).squaredNorm(), static_cast<int>(j));
-        }
-      if (static_cast<int>(cand.size()) < k) continue;  // image border or sparse returns
-      std::nth_element(cand.begin(), cand.begin() + (k - 1), cand.end());
-      // Eq. 4: mean and covariance of the k nearest points, normal = smallest eigenvector.
-      Point3 mean = Point3::Zero();
-      for (int q = 0; q < k; ++q) mean += P[static_cast<std::size_t>(cand[static_cast<std::size_t>(q)].second)];
-      mean /= k;
-      Mat3 C = Mat3::Zero();
-      for (int q = 0; q < k; ++q) {
-        const Vec3 d = P[static_cast<std::size_t>(cand[static_cast<std::size_t>(q)].second)] - mean;
-        C += d * d.transpose();
-      }
-      C /= k;
-      Eigen::SelfAdjointEigenSolver<Mat3> es;
-      es.computeDirect(C);
-      const Vec3 n = es.eigenvectors().col(0).normalized();
-      if (!n.allFinite()) continue;
-      S += n * n.transpose();
-      ++count;
+  return g;
+}
+
+/// Eq. 4: the normal (smallest eigenvector of the covariance) of the k nearest valid points
+/// among those within `window` grid cells of (gx, gy); false at the border or on sparse returns.
+bool normalAt(const ReprojectedGrid& g, int gx, int gy, int window, int k,
+              std::vector<std::pair<double, int>>& cand, Vec3& n) {
+  const std::size_t i = g.index(gx, gy);
+  cand.clear();
+  for (int ay = std::max(0, gy - window); ay <= std::min(g.gh - 1, gy + window); ++ay)
+    for (int ax = std::max(0, gx - window); ax <= std::min(g.gw - 1, gx + window); ++ax) {
+      const std::size_t j = g.index(ax, ay);
+      if (g.valid[j]) cand.emplace_back((g.P[j] - g.P[i]).squaredNorm(), static_cast<int>(j));
     }
-  FrameScore fs;
-  fs.normals = count;
-  if (count < std::max(1, cfg.min_normals)) return fs;  // nothing to match against: score 0
+  if (static_cast<int>(cand.size()) < k) return false;
+  std::nth_element(cand.begin(), cand.begin() + (k - 1), cand.end());
+  const auto point = [&](int q) {
+    return g.P[static_cast<std::size_t>(cand[static_cast<std::size_t>(q)].second)];
+  };
+  Point3 mean = Point3::Zero();
+  for (int q = 0; q < k; ++q) mean += point(q);
+  mean /= k;
+  Mat3 C = Mat3::Zero();
+  for (int q = 0; q < k; ++q) {
+    const Vec3 d = point(q) - mean;
+    C += d * d.transpose();
+  }
+  C /= k;
+  Eigen::SelfAdjointEigenSolver<Mat3> es;
+  es.computeDirect(C);
+  n = es.eigenvectors().col(0).normalized();
+  return n.allFinite();
+}
+
+/// The spread of the normals: normalised entropy of the eigenvalues of their scatter matrix S
+/// (the sum of n n^T over `count` normals).
+void spreadScore(Mat3 S, int count, FrameScore& fs) {
   S /= count;
   Eigen::SelfAdjointEigenSolver<Mat3> es(S);
   Vec3 l = es.eigenvalues().reverse().cwiseMax(0.0);
@@ -142,6 +148,32 @@ FrameScore scoreDepthImage(const DepthImage& img, const DepthConfig& cfg) {
   for (int q = 0; q < 3; ++q)
     if (l[q] > 1e-12) h -= l[q] * std::log(l[q]);
   fs.score = std::clamp(h / std::log(3.0), 0.0, 1.0);
+}
+
+}  // namespace
+
+FrameScore scoreDepthImage(const DepthImage& img, const DepthConfig& cfg) {
+  if (img.width <= 0 || img.height <= 0 ||
+      img.mm.size() != static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height))
+    throw std::invalid_argument("depth image has inconsistent size");
+  const int k = std::max(3, cfg.normal_neighbours);
+  int w = std::max(1, cfg.search_window_px);
+  while ((2 * w + 1) * (2 * w + 1) < k) ++w;
+  const ReprojectedGrid g = reproject(img, cfg, std::max(1, cfg.pixel_stride));
+  Mat3 S = Mat3::Zero();
+  int count = 0;
+  std::vector<std::pair<double, int>> cand;
+  for (int gy = 0; gy < g.gh; ++gy)
+    for (int gx = 0; gx < g.gw; ++gx) {
+      Vec3 n;
+      if (!g.valid[g.index(gx, gy)] || !normalAt(g, gx, gy, w, k, cand, n)) continue;
+      S += n * n.transpose();
+      ++count;
+    }
+  FrameScore fs;
+  fs.normals = count;
+  if (count < std::max(1, cfg.min_normals)) return fs;  // nothing to match against: score 0
+  spreadScore(S, count, fs);
   return fs;
 }
 
@@ -229,35 +261,37 @@ void skipOddSizedFrames(const std::vector<DepthFrame>& frames,
     }
 }
 
-}  // namespace
+/// Per frame: its score (NaN when unusable), why it is unusable, and its image size.
+struct FrameScores {
+  std::vector<double> score;
+  std::vector<std::string> error;
+  std::vector<std::pair<int, int>> size;
+};
 
-WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& frames,
-                               const DepthConfig& cfg) {
-  WeightStats ws;
-  ws.frames = frames.size();
-  ws.fallback_weight = cfg.fallback_weight;
-  // Score every frame; frames are independent, so they run on all cores.
-  std::vector<double> score(frames.size(), std::numeric_limits<double>::quiet_NaN());
-  std::vector<std::string> error(frames.size());
-  std::vector<std::pair<int, int>> size(frames.size(), {0, 0});
+/// Scores every frame; frames are independent, so they run on all cores.
+FrameScores scoreFrames(const std::vector<DepthFrame>& frames, const DepthConfig& cfg) {
+  FrameScores fs;
+  fs.score.assign(frames.size(), std::numeric_limits<double>::quiet_NaN());
+  fs.error.resize(frames.size());
+  fs.size.assign(frames.size(), {0, 0});
   Progress progress("depth frames", frames.size());
   std::mutex mu;
   std::size_t done = 0;
   tbb::parallel_for(std::size_t{0}, frames.size(), [&](std::size_t i) {
     if (!frames[i].pos.allFinite()) {
-      error[i] = "frame " + std::to_string(frames[i].frame) + ": NaN position";
+      fs.error[i] = "frame " + std::to_string(frames[i].frame) + ": NaN position";
     } else {
       try {
         const DepthImage img = readDepthPng(frames[i].file);
-        size[i] = {img.width, img.height};
+        fs.size[i] = {img.width, img.height};
         if (frames[i].width > 0 && (img.width != frames[i].width || img.height != frames[i].height))
           throw std::invalid_argument(frames[i].file.string() + ": " + std::to_string(img.width) +
                                       " x " + std::to_string(img.height) + " px, the index says " +
                                       std::to_string(frames[i].width) + " x " +
                                       std::to_string(frames[i].height) + " px");
-        score[i] = scoreDepthImage(img, cfg).score;
+        fs.score[i] = scoreDepthImage(img, cfg).score;
       } catch (const std::exception& e) {
-        error[i] = e.what();
+        fs.error[i] = e.what();
       }
     }
     std::lock_guard<std::mutex> lock(mu);
@@ -265,45 +299,68 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
     if (done % 64 == 0) progress.update(done);
   });
   progress.finish();
-  skipOddSizedFrames(frames, size, score, error);
-  std::size_t shown = 0;
-  for (std::size_t i = 0; i < frames.size(); ++i)
-    if (!error[i].empty()) {
-      ++ws.failed;
-      if (shown++ < 5) logWarn("depth: skipping frame: " + error[i]);
-    }
-  if (ws.failed > 5) logWarn("depth: " + std::to_string(ws.failed) + " frames skipped in total");
+  skipOddSizedFrames(frames, fs.size, fs.score, fs.error);
+  return fs;
+}
 
-  // Frame -> street: nearest street polyline (sampled every metre), within frame_max_dist_m.
-  int nstreets = 0;
-  std::vector<int> street_edge;  // first edge of each street
-  for (const auto& e : graph.edges) nstreets = std::max(nstreets, e.street + 1);
-  street_edge.assign(static_cast<std::size_t>(nstreets), -1);
-  for (const auto& e : graph.edges)
-    if (e.street >= 0 && street_edge[static_cast<std::size_t>(e.street)] < 0)
-      street_edge[static_cast<std::size_t>(e.street)] = e.id;
-  std::vector<Point3> samples;
-  std::vector<int> sample_street;
-  for (int s = 0; s < nstreets; ++s) {
-    if (street_edge[static_cast<std::size_t>(s)] < 0) continue;
-    const auto& pl = graph.edges[static_cast<std::size_t>(street_edge[static_cast<std::size_t>(s)])].polyline;
-    for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
-      const int m = std::max(1, static_cast<int>(std::ceil((pl[k + 1] - pl[k]).norm())));
-      for (int q = 0; q < m; ++q) {
-        samples.push_back(pl[k] + (pl[k + 1] - pl[k]) * (static_cast<double>(q) / m));
-        sample_street.push_back(s);
-      }
-    }
-    if (!pl.empty()) {
-      samples.push_back(pl.back());
-      sample_street.push_back(s);
+std::size_t logSkippedFrames(const std::vector<std::string>& error) {
+  std::size_t failed = 0;
+  for (const auto& e : error)
+    if (!e.empty() && failed++ < 5) logWarn("depth: skipping frame: " + e);
+  if (failed > 5) logWarn("depth: " + std::to_string(failed) + " frames skipped in total");
+  return failed;
+}
+
+/// Every street's centreline sampled every metre: its first edge's polyline, and for a divided
+/// street (two directions on their own carriageways) the other direction's too.
+struct StreetSamples {
+  int streets = 0;
+  std::vector<Point3> points;
+  std::vector<int> street;
+};
+
+void samplePolyline(const Polyline& pl, int street, StreetSamples& out) {
+  for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
+    const int m = std::max(1, static_cast<int>(std::ceil((pl[k + 1] - pl[k]).norm())));
+    for (int q = 0; q < m; ++q) {
+      out.points.push_back(pl[k] + (pl[k + 1] - pl[k]) * (static_cast<double>(q) / m));
+      out.street.push_back(street);
     }
   }
-  ws.streets = static_cast<std::size_t>(nstreets);
-  std::vector<double> sum(static_cast<std::size_t>(nstreets), 0.0);
-  std::vector<int> cnt(static_cast<std::size_t>(nstreets), 0);
-  double total = 0.0;
-  const detail::PointGrid grid(samples, std::max(cfg.frame_max_dist_m, 1.0));
+  if (!pl.empty()) {
+    out.points.push_back(pl.back());
+    out.street.push_back(street);
+  }
+}
+
+StreetSamples streetSamples(const RoadGraph& graph) {
+  StreetSamples out;
+  for (const auto& e : graph.edges) out.streets = std::max(out.streets, e.street + 1);
+  std::vector<int> first(static_cast<std::size_t>(out.streets), -1);
+  for (const auto& e : graph.edges)
+    if (e.street >= 0 && first[static_cast<std::size_t>(e.street)] < 0)
+      first[static_cast<std::size_t>(e.street)] = e.id;
+  for (int s = 0; s < out.streets; ++s)
+    if (first[static_cast<std::size_t>(s)] >= 0)
+      samplePolyline(graph.edges[static_cast<std::size_t>(first[static_cast<std::size_t>(s)])].polyline, s, out);
+  for (const auto& e : graph.edges) {
+    if (e.street < 0 || first[static_cast<std::size_t>(e.street)] == e.id) continue;
+    const Polyline& f = graph.edges[static_cast<std::size_t>(first[static_cast<std::size_t>(e.street)])].polyline;
+    if (!std::equal(f.rbegin(), f.rend(), e.polyline.begin(), e.polyline.end()))
+      samplePolyline(e.polyline, e.street, out);
+  }
+  return out;
+}
+
+/// Per street, the sum and number of the scores of the frames nearest to it (within
+/// frame_max_dist_m); counts scored and unassigned frames and their total in ws.
+void framesPerStreet(const std::vector<DepthFrame>& frames, const std::vector<double>& score,
+                     const StreetSamples& ss, const DepthConfig& cfg, WeightStats& ws,
+                     std::vector<double>& sum, std::vector<int>& cnt, double& total) {
+  sum.assign(static_cast<std::size_t>(ss.streets), 0.0);
+  cnt.assign(static_cast<std::size_t>(ss.streets), 0);
+  total = 0.0;
+  const detail::PointGrid grid(ss.points, std::max(cfg.frame_max_dist_m, 1.0));
   for (std::size_t i = 0; i < frames.size(); ++i) {
     if (std::isnan(score[i])) continue;
     ++ws.scored;
@@ -311,10 +368,10 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
     int best = -1;
     double bd = std::numeric_limits<double>::infinity();
     grid.forEachNear(frames[i].pos, cfg.frame_max_dist_m, cfg.frame_max_dist_m, [&](int j) {
-      const double d = (samples[static_cast<std::size_t>(j)] - frames[i].pos).squaredNorm();
+      const double d = (ss.points[static_cast<std::size_t>(j)] - frames[i].pos).squaredNorm();
       if (d < bd) {
         bd = d;
-        best = sample_street[static_cast<std::size_t>(j)];
+        best = ss.street[static_cast<std::size_t>(j)];
       }
     });
     if (best < 0) {
@@ -324,29 +381,49 @@ WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& 
     sum[static_cast<std::size_t>(best)] += score[i];
     ++cnt[static_cast<std::size_t>(best)];
   }
+}
+
+/// Not one frame measured anything (frames far smaller than the camera's, a stride too coarse
+/// for min_normals): weights of 0 would say every street is featureless, so none is used.
+void dropAllZeroScores(const FrameScores& fs, const DepthConfig& cfg, WeightStats& ws,
+                       std::vector<int>& cnt) {
+  const auto& [w, h] = fs.size[static_cast<std::size_t>(
+      std::find_if(fs.score.begin(), fs.score.end(), [](double v) { return !std::isnan(v); }) -
+      fs.score.begin())];
+  logWarn("depth: all " + std::to_string(ws.scored) + " frames scored 0 (" + std::to_string(w) +
+          " x " + std::to_string(h) + " px at pixel_stride " + std::to_string(cfg.pixel_stride) +
+          ", min_normals " + std::to_string(cfg.min_normals) +
+          "): they carry no information and are not used");
+  ws.failed += ws.scored;
+  ws.scored = 0;
+  std::fill(cnt.begin(), cnt.end(), 0);
+}
+
+}  // namespace
+
+WeightStats assignDepthWeights(RoadGraph& graph, const std::vector<DepthFrame>& frames,
+                               const DepthConfig& cfg) {
+  WeightStats ws;
+  ws.frames = frames.size();
+  ws.fallback_weight = cfg.fallback_weight;
+  const FrameScores fs = scoreFrames(frames, cfg);
+  ws.failed = logSkippedFrames(fs.error);
+  const StreetSamples ss = streetSamples(graph);
+  ws.streets = static_cast<std::size_t>(ss.streets);
+  std::vector<double> sum;
+  std::vector<int> cnt;
+  double total = 0.0;
+  framesPerStreet(frames, fs.score, ss, cfg, ws, sum, cnt, total);
   ws.mean_score = ws.scored > 0 ? total / static_cast<double>(ws.scored) : 0.0;
-  if (ws.scored > 0 && total == 0.0) {
-    // Not one frame measured anything (frames far smaller than the camera's, a stride too coarse
-    // for min_normals): weights of 0 would say every street is featureless.
-    const auto& [w, h] = size[static_cast<std::size_t>(
-        std::find_if(score.begin(), score.end(), [](double v) { return !std::isnan(v); }) -
-        score.begin())];
-    logWarn("depth: all " + std::to_string(ws.scored) + " frames scored 0 (" + std::to_string(w) +
-            " x " + std::to_string(h) + " px at pixel_stride " + std::to_string(cfg.pixel_stride) +
-            ", min_normals " + std::to_string(cfg.min_normals) +
-            "): they carry no information and are not used");
-    ws.failed += ws.scored;
-    ws.scored = 0;
-    std::fill(cnt.begin(), cnt.end(), 0);
-  }
+  if (ws.scored > 0 && total == 0.0) dropAllZeroScores(fs, cfg, ws, cnt);
   // Documented fallback: a street without a usable frame gets the mean score of all frames; with
   // no usable frame at all every edge gets cfg.fallback_weight (1, RoadEdge's default).
   const double fallback = ws.scored > 0 ? ws.mean_score : cfg.fallback_weight;
   if (ws.scored == 0)
     logWarn("depth: no usable depth frame; every edge gets the fallback weight " +
             std::to_string(cfg.fallback_weight));
-  for (int s = 0; s < nstreets; ++s)
-    if (cnt[static_cast<std::size_t>(s)] > 0) ++ws.streets_with_frames;
+  for (const int c : cnt)
+    if (c > 0) ++ws.streets_with_frames;
   if (ws.scored > 0 && ws.streets_with_frames < ws.streets)
     logWarn("depth: " + std::to_string(ws.streets - ws.streets_with_frames) +
             " street(s) without a depth frame get the mean score " + std::to_string(fallback));

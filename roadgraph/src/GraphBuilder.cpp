@@ -15,6 +15,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "DividedRoads.hpp"
 #include "ShortLinks.hpp"
 #include "Streets.hpp"
 #include "slamroute/core/Log.hpp"
@@ -80,38 +81,38 @@ void assembleGraph(const std::vector<Point3>& nodes, const std::vector<char>& is
   }
 }
 
-}  // namespace
+/// The traces prepared once for every step: vehicle order, travel directions, 2 m voxels.
+struct PreparedTraces {
+  std::vector<std::size_t> order;
+  std::vector<Vec3> travel;
+  Downsampled ds;
+};
 
-GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
-  const auto t0 = std::chrono::steady_clock::now();
-  checkTraces(traces, traces.source.empty() ? "traces" : traces.source);
-  const std::string where = traces.source.empty() ? "traces" : traces.source;
-  const EdgeConfig& ec = cfg.edges;
-  if (!(ec.clear_radius_m > 0 && ec.cluster_tolerance_m > 0 && ec.polyline_step_m > 0))
-    throw std::invalid_argument("roadgraph.edges: radii, tolerance and step must be > 0");
-  if (cfg.roundabouts.enabled) checkRoundaboutConfig(cfg.roundabouts);
-  GraphBuildResult out;
-  auto& st = out.stats;
-  st.trace_points = traces.points.size();
-
+PreparedTraces prepareTraces(const Traces& traces, const Config& cfg, GraphBuildStats& st) {
+  PreparedTraces p;
   std::vector<Point3> raw;
   raw.reserve(traces.points.size());
-  for (const auto& p : traces.points) raw.push_back(p.pos);
-  const std::vector<std::size_t> order = byVehicleThenTime(traces);
-  const std::vector<Vec3> travel =
-      travelDirections(traces, order, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
-  const Downsampled ds = downsample(raw, cfg.nodes.downsample_m, &travel);
-  st.voxels = ds.points.size();
+  for (const auto& q : traces.points) raw.push_back(q.pos);
+  p.order = byVehicleThenTime(traces);
+  p.travel = travelDirections(traces, p.order, cfg.nodes.travel_span_m, cfg.edges.max_gap_s);
+  p.ds = downsample(raw, cfg.nodes.downsample_m, &p.travel);
+  st.trace_points = traces.points.size();
+  st.voxels = p.ds.points.size();
   logInfo("build-graph: " + std::to_string(raw.size()) + " trace points -> " +
-          std::to_string(ds.points.size()) + " voxels");
+          std::to_string(p.ds.points.size()) + " voxels");
+  return p;
+}
 
+/// Step 1: nodes (hollow cylinder), and roundabouts, whose junctions replace the nodes there.
+std::vector<Point3> junctionNodes(const Traces& traces, const PreparedTraces& p, const Config& cfg,
+                                  GraphBuildResult& out, const std::string& where) {
   const double half_h = 0.5 * cfg.nodes.height_m;
-
-  // Step 1: nodes (hollow cylinder), and roundabouts, whose junctions replace the nodes there.
-  IntersectionResult ir = detectIntersections(ds.points, cfg.nodes, &ds.axes);
+  auto& st = out.stats;
+  IntersectionResult ir = detectIntersections(p.ds.points, cfg.nodes, &p.ds.axes);
   st.intersection_points =
       static_cast<std::size_t>(std::count(ir.is_intersection.begin(), ir.is_intersection.end(), 1));
-  out.roundabouts = detectRoundabouts(traces, order, travel, cfg.roundabouts, ec.max_gap_s, half_h);
+  out.roundabouts =
+      detectRoundabouts(traces, p.order, p.travel, cfg.roundabouts, cfg.edges.max_gap_s, half_h);
   const std::vector<Roundabout>& rbs = out.roundabouts;
   st.roundabouts = rbs.size();
   if (!rbs.empty()) {
@@ -126,31 +127,16 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
     throw std::runtime_error(where + ": no intersection found in the traces (no point sees >= " +
                              std::to_string(cfg.nodes.min_branches) +
                              " branches in the hollow cylinder); a road graph needs junctions");
-  detail::GraphNodes gn;
-  gn.pos = ir.nodes;
-  gn.n_inter = gn.pos.size();
-  gn.is_end.assign(gn.pos.size(), 0);
-  const std::size_t n_inter = gn.n_inter;
+  return std::move(ir.nodes);
+}
 
-  // Step 2: remove node neighbourhoods, cluster the rest into streets, attach them to nodes.
-  const detail::StreetPoints spts = detail::clearNodeNeighbourhoods(ds.points, gn.pos, ec, half_h);
-  std::vector<Street> streets =
-      detail::attachStreets(spts, traces, order, ds.voxel_of, gn, ec, half_h, st);
-  std::vector<Point3>& nodes = gn.pos;
-  const std::vector<char>& is_end = gn.is_end;
-  detail::mergeNearbyEnds(nodes, is_end, ec.end_merge_m, half_h, streets, st);
-  st.streets = streets.size();
-  const std::vector<int>& subset_of = spts.subset_of;
-  std::vector<int> street_of_sp(spts.pts.size(), -1);
-  for (std::size_t k = 0; k < streets.size(); ++k)
-    for (int i : streets[k].members)
-      street_of_sp[static_cast<std::size_t>(i)] = static_cast<int>(k);
-
-  // Full polylines node u -> node v.
+/// Full polylines node u -> node v: intersections, and dead ends moved by a merge, are not on
+/// the centreline yet.
+std::vector<Polyline> streetPolylines(const std::vector<Street>& streets,
+                                      const std::vector<Point3>& nodes) {
   std::vector<Polyline> polys;
   for (const auto& s : streets) {
     Polyline pl;
-    // Intersections, and dead ends moved by a merge, are not on the centreline yet.
     const Point3 &nu = nodes[static_cast<std::size_t>(s.u)],
                  &nv = nodes[static_cast<std::size_t>(s.v)];
     if ((nu - s.centre.front()).norm() > 0.5) pl.push_back(nu);
@@ -159,32 +145,75 @@ GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg) {
     if (pl.size() < 2) pl.push_back(pl.back());
     polys.push_back(std::move(pl));
   }
+  return polys;
+}
 
-  // Step 3: links between close junctions; the trace points on each street.
-  std::vector<int> street_of_point(traces.points.size(), -1);
-  for (std::size_t i = 0; i < traces.points.size(); ++i) {
-    const int k = subset_of[static_cast<std::size_t>(ds.voxel_of[i])];
+/// Per trace point, the street its voxel's street point belongs to (-1: cleared or dropped).
+std::vector<int> streetOfTracePoints(const std::vector<Street>& streets,
+                                     const detail::StreetPoints& spts, const Downsampled& ds) {
+  std::vector<int> street_of_sp(spts.pts.size(), -1);
+  for (std::size_t k = 0; k < streets.size(); ++k)
+    for (int i : streets[k].members)
+      street_of_sp[static_cast<std::size_t>(i)] = static_cast<int>(k);
+  std::vector<int> street_of_point(ds.voxel_of.size(), -1);
+  for (std::size_t i = 0; i < ds.voxel_of.size(); ++i) {
+    const int k = spts.subset_of[static_cast<std::size_t>(ds.voxel_of[i])];
     if (k >= 0) street_of_point[i] = street_of_sp[static_cast<std::size_t>(k)];
   }
-  // Drives from junction to junction (ShortLinks.cpp): links between junctions whose street the
-  // clearing removed, and directions of travel on streets too short for runs to show them.
-  const detail::Passages passages =
-      detail::junctionPassages(traces, order, street_of_point, nodes, n_inter, ec, half_h);
-  detail::addShortLinks(passages, nodes, ec, streets, polys, st);
-  // Step 4: directions of travel, and the graph.
-  const detail::TravelCounts runs =
-      detail::countDirections(traces, order, street_of_point, streets, polys, passages, ec);
-  assembleGraph(nodes, is_end, streets, polys, runs, ec, out);
+  return street_of_point;
+}
+
+void logGraph(const GraphBuildResult& out) {
+  const auto& st = out.stats;
   if (st.unknown_direction_streets > 0)
     logWarn("build-graph: " + std::to_string(st.unknown_direction_streets) +
             " street(s) without a usable run of travel; assumed two-way");
-  RoadGraph& g = out.graph;
-  g.validate(where);
-  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   logInfo("build-graph: " + std::to_string(st.intersections) + " intersections, " +
           std::to_string(st.dead_ends) + " dead ends, " + std::to_string(st.streets) +
           " streets (" + std::to_string(st.one_way_streets) + " one-way), " +
-          std::to_string(g.edges.size()) + " directed edges");
+          std::to_string(out.graph.edges.size()) + " directed edges");
+}
+
+}  // namespace
+
+GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string where = traces.source.empty() ? "traces" : traces.source;
+  checkTraces(traces, where);
+  const EdgeConfig& ec = cfg.edges;
+  if (!(ec.clear_radius_m > 0 && ec.cluster_tolerance_m > 0 && ec.polyline_step_m > 0))
+    throw std::invalid_argument("roadgraph.edges: radii, tolerance and step must be > 0");
+  if (cfg.roundabouts.enabled) checkRoundaboutConfig(cfg.roundabouts);
+  GraphBuildResult out;
+  auto& st = out.stats;
+  const PreparedTraces p = prepareTraces(traces, cfg, st);
+  const double half_h = 0.5 * cfg.nodes.height_m;
+  detail::GraphNodes gn;
+  gn.pos = junctionNodes(traces, p, cfg, out, where);
+  gn.n_inter = gn.pos.size();
+  gn.is_end.assign(gn.pos.size(), 0);
+  // Step 2: remove node neighbourhoods, cluster the rest into streets, attach them to nodes.
+  const detail::StreetPoints spts = detail::clearNodeNeighbourhoods(p.ds.points, gn.pos, ec, half_h);
+  std::vector<Street> streets =
+      detail::attachStreets(spts, traces, p.order, p.ds.voxel_of, gn, ec, half_h, st);
+  detail::mergeNearbyEnds(gn.pos, gn.is_end, ec.end_merge_m, half_h, streets, st);
+  st.streets = streets.size();
+  std::vector<Polyline> polys = streetPolylines(streets, gn.pos);
+  // Step 3: drives from junction to junction (ShortLinks.cpp): links between junctions whose
+  // street the clearing removed, and directions of travel on streets too short for runs.
+  const std::vector<int> street_of_point = streetOfTracePoints(streets, spts, p.ds);
+  const detail::Passages passages = detail::junctionPassages(traces, p.order, street_of_point,
+                                                             gn.pos, gn.n_inter, ec, half_h);
+  detail::addShortLinks(passages, gn.pos, ec, streets, polys, st);
+  // Step 4: directions of travel, and the graph.
+  const detail::TravelCounts runs =
+      detail::countDirections(traces, p.order, street_of_point, streets, polys, passages, ec);
+  assembleGraph(gn.pos, gn.is_end, streets, polys, runs, ec, out);
+  // Divided roads: carriageway nodes of one place merged, the two carriageways one street.
+  detail::mergeDividedRoads(out, cfg.divided, half_h);
+  out.graph.validate(where);
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  logGraph(out);
   return out;
 }
 

@@ -10,18 +10,20 @@
 
 namespace slamroute::roadgraph::detail {
 
-/// Reusable buffers of one hollow-cylinder test (one per thread).
+/// Reusable buffers of one hollow-cylinder test (one per thread). Per point in the cylinder:
+/// local (its index in the whole set), rel (its offset from the centre), in_annulus; per
+/// annulus cluster (indexed by its root point): the sums below.
 struct Scratch {
   std::vector<int> local;
   std::vector<Point3> rel;
-  std::vector<char> in_ann;
+  std::vector<char> in_annulus;
   std::vector<int> local_of;  // per point of the whole set: its index in `local`, else -1
-  std::vector<int> cnt;
-  std::vector<double> rmin, rmax, sx, sy;
-  std::vector<char> conn;
-  std::vector<Eigen::Matrix<double, 5, 1>> mom;  // per cluster: sum x, y, xx, xy, yy
-  std::vector<int> group;
-  UnionFind disk, ann, grp;
+  std::vector<int> cluster_points;
+  std::vector<double> radius_min, radius_max, bearing_x, bearing_y;
+  std::vector<char> reaches_centre;  // linked to the point inside the outer disk
+  std::vector<Eigen::Matrix<double, 5, 1>> moments;  // per cluster: sum x, y, xx, xy, yy
+  std::vector<int> branch_of_cluster;
+  UnionFind disk_sets, annulus_sets, branch_sets;
   std::vector<std::vector<int>> members;
 };
 

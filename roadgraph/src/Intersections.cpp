@@ -31,8 +31,8 @@
 //   votes and must itself see >= 3 branches in either ring (both are always tried there), unless
 //   it holds strong_vote_factor x the median group's votes: at big junctions (SUMO clusters,
 //   4-lane arms) turning traffic links the arms in both rings around the centre while the
-//   points voting for it, off-centre, see them apart (Ingolstadt: 7 true junctions with 47-139
-//   votes were dropped by the test). Groups with fewer than min_vote_fraction of the median
+//   points voting for it, off-centre, see them apart (without the exception Ingolstadt loses 7
+//   true junctions with 47-139 votes each). Groups with fewer than min_vote_fraction of the median
 //   group's votes are dropped (a bend, a lane split, a noisy stretch collect a handful of votes,
 //   a junction tens to hundreds), and a group within merge_distance_m (18 m) of a stronger one
 //   is absorbed by it: the carriageway crossings of two divided roads and the corners of a big
@@ -49,9 +49,11 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 
+#include "DensestFirst.hpp"
 #include "HollowCylinder.hpp"
 #include "Median.hpp"
 #include "PointGrid.hpp"
@@ -87,10 +89,12 @@ namespace {
 
 using detail::branchesAt;
 using detail::crossingFrom;
+using detail::DensestFirstGroup;
+using detail::DensestFirstParams;
+using detail::groupDensestFirst;
 using detail::median;
 using detail::PointGrid;
 using detail::Scratch;
-using detail::UnionFind;
 
 }  // namespace
 
@@ -149,55 +153,66 @@ IntersectionResult detectIntersections(const std::vector<Point3>& pts, const Nod
 }
 
 namespace {
-IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig& cfg,
-                                const std::vector<Eigen::Vector2d>* axes) {
-  if (!(cfg.inner_radius_m >= 0.0 && cfg.outer_radius_m > cfg.inner_radius_m &&
-        cfg.height_m > 0.0 && cfg.cluster_tolerance_m > 0.0))
-    throw std::invalid_argument(
-        "roadgraph.nodes: need 0 <= inner_radius_m < outer_radius_m, height_m > 0, "
-        "cluster_tolerance_m > 0");
-  IntersectionResult res;
-  const std::size_t n = pts.size();
-  res.is_intersection.assign(n, 0);
-  res.node_of_point.assign(n, -1);
-  PointGrid grid(pts, 5.0);
-  grid.linkWithin(cfg.cluster_tolerance_m);
 
-  // Second, larger cylinder (radii x wide_scale): at a big junction (4-lane avenues, a junction
-  // box of ~25 m) turning traffic runs through the paper's 10-25 m ring and links the arms into
-  // one or two clusters; a ring beyond the junction box still separates them. A point is an
-  // intersection point when either ring sees >= min_branches; the ring seeing more branches is
-  // used for its vote. Votes of points on an arm near a junction fall on the junction's centre,
-  // so the larger ring adds evidence for junctions rather than new nodes.
-  NodeConfig wide = cfg;
-  wide.inner_radius_m *= cfg.wide_scale;
-  wide.outer_radius_m *= cfg.wide_scale;
-  const bool use_wide = cfg.wide_scale > 1.0;
-  // The larger ring is only tried where the paper's ring holds points over a wide range of
-  // bearings (a street, straight or curved, covers two narrow sectors; a junction whose arms the
-  // ring sees linked covers most of the circle), which keeps its cost small.
-  auto branchesBoth = [&](const Point3& c, Scratch& s, bool* is_wide) {
+/// The two hollow cylinders of one detection over the points in `grid`: the paper's ring and,
+/// radii x wide_scale, a second one. At a big junction (4-lane avenues, a junction box of ~25 m)
+/// turning traffic runs through the paper's 10-25 m ring and links the arms into one or two
+/// clusters; a ring beyond the junction box still separates them. A point is an intersection
+/// point when either ring sees >= min_branches; the ring seeing more branches is used for its
+/// vote. Votes of points on an arm near a junction fall on the junction's centre, so the larger
+/// ring adds evidence for junctions rather than new nodes.
+struct Rings {
+  const PointGrid& grid;
+  const std::vector<Point3>& pts;
+  const std::vector<Eigen::Vector2d>* axes;
+  const NodeConfig& cfg;
+  NodeConfig wide;
+
+  Rings(const PointGrid& g, const std::vector<Point3>& p, const std::vector<Eigen::Vector2d>* a,
+        const NodeConfig& c)
+      : grid(g), pts(p), axes(a), cfg(c), wide(c) {
+    wide.inner_radius_m *= c.wide_scale;
+    wide.outer_radius_m *= c.wide_scale;
+  }
+  bool useWide() const { return cfg.wide_scale > 1.0; }
+  const NodeConfig& ring(bool is_wide) const { return is_wide ? wide : cfg; }
+
+  /// Branches at a trace point. The larger ring is only tried where the paper's ring holds
+  /// points over a wide range of bearings (a street, straight or curved, covers two narrow
+  /// sectors; a junction whose arms the ring sees linked covers most of the circle), which
+  /// keeps its cost small.
+  int atPoint(const Point3& c, Scratch& s, bool* is_wide) const {
     double coverage = 0.0;
     const int b1 = branchesAt(grid, pts, c, cfg, s, nullptr, &coverage);
     int b2 = 0;
-    if (use_wide && b1 < cfg.min_branches && coverage >= cfg.wide_min_coverage_deg)
+    if (useWide() && b1 < cfg.min_branches && coverage >= cfg.wide_min_coverage_deg)
       b2 = branchesAt(grid, pts, c, wide, s, nullptr);
     if (is_wide) *is_wide = b2 > b1;
     return std::max(b1, b2);
-  };
-  // At a candidate node both rings are always tried (a handful of tests, not one per point).
-  auto branchesNode = [&](const Point3& c, Scratch& s, bool* is_wide) {
+  }
+  /// Branches at a candidate node: both rings are always tried (a handful of tests, not one
+  /// per point).
+  int atNode(const Point3& c, Scratch& s, bool* is_wide) const {
     const int b1 = branchesAt(grid, pts, c, cfg, s, nullptr);
-    const int b2 =
-        use_wide && b1 < cfg.min_branches ? branchesAt(grid, pts, c, wide, s, nullptr) : 0;
+    const int b2 = useWide() && b1 < cfg.min_branches ? branchesAt(grid, pts, c, wide, s, nullptr) : 0;
     if (is_wide) *is_wide = b2 > b1;
     return std::max(b1, b2);
-  };
+  }
+};
 
-  // 1. Hollow-cylinder test of every point (independent -> parallel, deterministic).
-  std::vector<int> nbranch(n, 0);
-  std::vector<char> by_wide(n, 0);
-  tbb::enumerable_thread_specific<Scratch> scratch;
+using ThreadScratch = tbb::enumerable_thread_specific<Scratch>;
+
+struct PointTests {
+  std::vector<int> branches;  ///< per point, branches seen by the better ring
+  std::vector<char> by_wide;  ///< per point, the wide ring saw more
+};
+
+/// Step 1: the hollow-cylinder test of every point (independent -> parallel, deterministic).
+PointTests testEveryPoint(const Rings& rings, ThreadScratch& scratch) {
+  const std::size_t n = rings.pts.size();
+  PointTests t;
+  t.branches.assign(n, 0);
+  t.by_wide.assign(n, 0);
   Progress progress("intersections", n);
   const std::size_t chunk = 20000;
   for (std::size_t b = 0; b < n; b += chunk) {
@@ -206,148 +221,164 @@ IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig
       Scratch& s = scratch.local();
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
         bool w = false;
-        nbranch[i] = branchesBoth(pts[i], s, &w);
-        by_wide[i] = w ? 1 : 0;
+        t.branches[i] = rings.atPoint(rings.pts[i], s, &w);
+        t.by_wide[i] = w ? 1 : 0;
       }
     });
     progress.update(e);
   }
   progress.finish();
+  return t;
+}
 
-  for (std::size_t i = 0; i < n; ++i) res.is_intersection[i] = nbranch[i] >= cfg.min_branches;
-
-  // 2. Each intersection point votes for its junction's centre: the least-squares crossing of
-  //    the branches it sees (one re-evaluation at the crossing). Points anywhere in a junction's
-  //    intersection region (up to ~inner radius + road width from the centre) vote for the same
-  //    spot, so a wide junction is not split into several nodes; a point whose branches give no
-  //    stable crossing (near-parallel lines) votes for itself.
-  std::vector<int> ipts;
-  for (std::size_t i = 0; i < n; ++i)
-    if (res.is_intersection[i]) ipts.push_back(static_cast<int>(i));
-  std::vector<Point3> votes(ipts.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ipts.size(), 64), [&](const auto& r) {
+/// Step 2: each intersection point votes for its junction's centre, the least-squares crossing
+/// of the branches it sees (re-evaluated at the crossing). Points anywhere in a junction's
+/// intersection region (up to ~inner radius + road width from the centre) vote for the same
+/// spot, so a wide junction is not split into several nodes; a point whose branches give no
+/// stable crossing (near-parallel lines) votes for itself.
+std::vector<Point3> centreVotes(const Rings& rings, const std::vector<int>& voters,
+                                const std::vector<char>& by_wide, ThreadScratch& scratch) {
+  const NodeConfig& cfg = rings.cfg;
+  std::vector<Point3> votes(voters.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, voters.size(), 64), [&](const auto& r) {
     Scratch& s = scratch.local();
     for (std::size_t k = r.begin(); k != r.end(); ++k) {
-      const Point3& p = pts[static_cast<std::size_t>(ipts[k])];
-      const NodeConfig& vc = by_wide[static_cast<std::size_t>(ipts[k])] ? wide : cfg;
-      if (!crossingFrom(grid, pts, axes, p, vc, s, cfg.vote_iterations, cfg.vote_max_m, votes[k]))
+      const auto i = static_cast<std::size_t>(voters[k]);
+      const Point3& p = rings.pts[i];
+      if (!crossingFrom(rings.grid, rings.pts, rings.axes, p, rings.ring(by_wide[i] != 0), s,
+                        cfg.vote_iterations, cfg.vote_max_m, votes[k]))
         votes[k] = p;
     }
   });
+  return votes;
+}
 
-  // 3. Group the votes: greedy seeds, densest first (votes within vote_radius_m); a seed takes
-  //    the free votes within node_radius_m. Unlike plain connected components this also splits
-  //    a chain of junctions closer together than the cylinder into several nodes.
-  const PointGrid vgrid(votes, std::max(cfg.node_radius_m, 1.0));
-  std::vector<int> density(votes.size(), 0);
-  for (std::size_t k = 0; k < votes.size(); ++k)
-    vgrid.forEachNear(votes[k], cfg.vote_radius_m, 0.5 * cfg.height_m, [&](int) { ++density[k]; });
-  std::vector<int> order(votes.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    if (density[static_cast<std::size_t>(a)] != density[static_cast<std::size_t>(b)])
-      return density[static_cast<std::size_t>(a)] > density[static_cast<std::size_t>(b)];
-    return a < b;
-  });
-  std::vector<char> taken(votes.size(), 0);
-  std::vector<std::vector<int>> comps;
-  for (int seed : order) {
-    if (taken[static_cast<std::size_t>(seed)]) continue;
-    comps.emplace_back();
-    vgrid.forEachNear(votes[static_cast<std::size_t>(seed)], cfg.node_radius_m, 0.5 * cfg.height_m,
-                      [&](int k) {
-                        if (taken[static_cast<std::size_t>(k)]) return;
-                        taken[static_cast<std::size_t>(k)] = 1;
-                        comps.back().push_back(k);
-                      });
-    std::sort(comps.back().begin(), comps.back().end());
-  }
-
-  // 4. One node per group: median of its votes (robust centre), optionally (refine_centre) the
-  //    crossing of the arms seen from there.
-  Scratch s;
-  double median_votes = 0.0;
-  {
-    std::vector<double> sizes;
-    for (const auto& comp : comps)
-      if (static_cast<int>(comp.size()) >= cfg.min_node_points)
-        sizes.push_back(static_cast<double>(comp.size()));
-    if (!sizes.empty()) median_votes = median(sizes);
-  }
+/// Candidate nodes: a position and the votes (indices into the votes) it owns.
+struct Candidates {
   std::vector<Point3> centres;
   std::vector<std::vector<int>> owned;
-  for (const auto& comp : comps) {
-    if (static_cast<int>(comp.size()) < cfg.min_node_points) continue;
-    std::vector<double> xs, ys, zs;
-    for (int k : comp) {
-      xs.push_back(votes[static_cast<std::size_t>(k)].x());
-      ys.push_back(votes[static_cast<std::size_t>(k)].y());
-      zs.push_back(votes[static_cast<std::size_t>(k)].z());
-    }
-    Point3 c(median(xs), median(ys), median(zs));
-    // The node must pass the test itself: a fragment of intersection points on an arm (noise)
-    // sees only the two ways of its street from its median. A strongly voted group need not.
-    bool w0 = false;
-    const int b0 = branchesNode(c, s, &w0);
+};
+
+double medianGroupSize(const std::vector<DensestFirstGroup>& groups, int min_size) {
+  std::vector<double> sizes;
+  for (const auto& g : groups)
+    if (static_cast<int>(g.members.size()) >= min_size)
+      sizes.push_back(static_cast<double>(g.members.size()));
+  return sizes.empty() ? 0.0 : median(sizes);
+}
+
+/// Step 4: one candidate per vote group at the median of its votes (optionally, refine_centre,
+/// the crossing of the arms seen from there). The candidate must pass the test itself: a
+/// fragment of intersection points on an arm (noise) sees only the two ways of its street from
+/// its median. A strongly voted group need not (see Intersections.cpp's header).
+Candidates nodeCandidates(const Rings& rings, std::vector<DensestFirstGroup> groups,
+                          Scratch& s) {
+  const NodeConfig& cfg = rings.cfg;
+  const double median_votes = medianGroupSize(groups, cfg.min_node_points);
+  Candidates out;
+  for (auto& g : groups) {
+    const auto votes = static_cast<double>(g.members.size());
+    if (static_cast<int>(g.members.size()) < cfg.min_node_points) continue;
+    Point3 c = g.median;
+    bool is_wide = false;
+    const int b0 = rings.atNode(c, s, &is_wide);
     if (b0 < cfg.min_branches &&
-        !(cfg.strong_vote_factor > 0.0 &&
-          static_cast<double>(comp.size()) >= cfg.strong_vote_factor * median_votes))
+        !(cfg.strong_vote_factor > 0.0 && votes >= cfg.strong_vote_factor * median_votes))
       continue;
     logDebug("node: vote median (" + std::to_string(c.x()) + ", " + std::to_string(c.y()) +
-             ") from " + std::to_string(comp.size()) + " votes, " + std::to_string(b0) +
+             ") from " + std::to_string(g.members.size()) + " votes, " + std::to_string(b0) +
              " branches");
     if (cfg.refine_centre) {
       // Keep the refined centre only when it still sees the junction's branches (curved arms
       // or wide junctions can mislead the line fit).
       Point3 cr;
-      crossingFrom(grid, pts, axes, c, w0 ? wide : cfg, s, 3, cfg.inner_radius_m, cr);
-      if (branchesNode(cr, s, nullptr) >= b0) c = cr;
+      crossingFrom(rings.grid, rings.pts, rings.axes, c, rings.ring(is_wide), s, 3,
+                   cfg.inner_radius_m, cr);
+      if (rings.atNode(cr, s, nullptr) >= b0) c = cr;
     }
-    centres.push_back(c);
-    owned.push_back(comp);
+    out.centres.push_back(c);
+    out.owned.push_back(std::move(g.members));
   }
-  // Weakly supported candidates: fewer votes than min_vote_fraction of the median candidate. A
-  // junction driven through by traffic collects votes from its whole intersection region (tens
-  // to hundreds of points); a bend of a wide road, a lane split or a noisy stretch collects a
-  // handful. Relative to the median so it adapts to the survey's density (voxel size, traffic).
-  if (!centres.empty() && cfg.min_vote_fraction > 0.0) {
-    std::vector<double> nv;
-    for (const auto& o : owned) nv.push_back(static_cast<double>(o.size()));
-    const double need = cfg.min_vote_fraction * median(nv);
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < centres.size(); ++k)
-      if (static_cast<double>(owned[k].size()) >= need) {
-        if (kept != k) {  // a self-move would empty the vote list
-          centres[kept] = centres[k];
-          owned[kept] = std::move(owned[k]);
-        }
-        ++kept;
+  return out;
+}
+
+/// Step 5: candidates with fewer votes than min_vote_fraction of the median candidate's are
+/// dropped. A junction driven through by traffic collects votes from its whole intersection
+/// region (tens to hundreds of points); a bend of a wide road, a lane split or a noisy stretch
+/// collects a handful. Relative to the median so it adapts to the survey's density.
+void dropWeaklyVoted(Candidates& cands, double min_vote_fraction) {
+  if (cands.centres.empty() || min_vote_fraction <= 0.0) return;
+  std::vector<double> nv;
+  for (const auto& o : cands.owned) nv.push_back(static_cast<double>(o.size()));
+  const double need = min_vote_fraction * median(nv);
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < cands.centres.size(); ++k)
+    if (static_cast<double>(cands.owned[k].size()) >= need) {
+      if (kept != k) {  // a self-move would empty the vote list
+        cands.centres[kept] = cands.centres[k];
+        cands.owned[kept] = std::move(cands.owned[k]);
       }
-    centres.resize(kept);
-    owned.resize(kept);
-  }
-  // 5. Candidates closer than merge_distance_m are one junction (the ring cannot resolve
-  //    junctions much closer than its inner radius): strongest (most votes) first, a weaker
-  //    candidate near an accepted node is absorbed by it and keeps no position of its own.
-  std::vector<std::size_t> byvotes(centres.size());
-  for (std::size_t k = 0; k < byvotes.size(); ++k) byvotes[k] = k;
-  std::stable_sort(byvotes.begin(), byvotes.end(), [&](std::size_t a, std::size_t b) {
-    return owned[a].size() > owned[b].size();
+      ++kept;
+    }
+  cands.centres.resize(kept);
+  cands.owned.resize(kept);
+}
+
+/// Step 6: candidates closer than merge_distance_m are one junction (the ring cannot resolve
+/// junctions much closer than its inner radius): strongest (most votes) first, a weaker
+/// candidate near an accepted node is absorbed by it and keeps no position of its own. Fills
+/// res.nodes and, for the voters (indices of the points), res.node_of_point.
+void mergeCloseCandidates(const Candidates& cands, const std::vector<int>& voters,
+                          const NodeConfig& cfg, IntersectionResult& res) {
+  std::vector<std::size_t> by_votes(cands.centres.size());
+  std::iota(by_votes.begin(), by_votes.end(), std::size_t{0});
+  std::stable_sort(by_votes.begin(), by_votes.end(), [&](std::size_t a, std::size_t b) {
+    return cands.owned[a].size() > cands.owned[b].size();
   });
-  for (std::size_t k : byvotes) {
+  for (const std::size_t k : by_votes) {
+    const Point3& c = cands.centres[k];
     int node = -1;
     for (std::size_t j = 0; j < res.nodes.size() && node < 0; ++j)
-      if ((res.nodes[j] - centres[k]).head<2>().norm() < cfg.merge_distance_m &&
-          std::abs(res.nodes[j].z() - centres[k].z()) <= 0.5 * cfg.height_m)
+      if ((res.nodes[j] - c).head<2>().norm() < cfg.merge_distance_m &&
+          std::abs(res.nodes[j].z() - c.z()) <= 0.5 * cfg.height_m)
         node = static_cast<int>(j);
     if (node < 0) {
       node = static_cast<int>(res.nodes.size());
-      res.nodes.push_back(centres[k]);
+      res.nodes.push_back(c);
     }
-    for (int q : owned[k])
-      res.node_of_point[static_cast<std::size_t>(ipts[static_cast<std::size_t>(q)])] = node;
+    for (const int q : cands.owned[k])
+      res.node_of_point[static_cast<std::size_t>(voters[static_cast<std::size_t>(q)])] = node;
   }
-  for (const auto& c : res.nodes) res.branches.push_back(branchesNode(c, s, nullptr));
+}
+
+IntersectionResult detectSorted(const std::vector<Point3>& pts, const NodeConfig& cfg,
+                                const std::vector<Eigen::Vector2d>* axes) {
+  if (!(cfg.inner_radius_m >= 0.0 && cfg.outer_radius_m > cfg.inner_radius_m &&
+        cfg.height_m > 0.0 && cfg.cluster_tolerance_m > 0.0))
+    throw std::invalid_argument(
+        "roadgraph.nodes: need 0 <= inner_radius_m < outer_radius_m, height_m > 0, "
+        "cluster_tolerance_m > 0");
+  PointGrid grid(pts, 5.0);
+  grid.linkWithin(cfg.cluster_tolerance_m);
+  const Rings rings(grid, pts, axes, cfg);
+  ThreadScratch scratch;
+  IntersectionResult res;
+  const PointTests tests = testEveryPoint(rings, scratch);
+  res.is_intersection.assign(pts.size(), 0);
+  res.node_of_point.assign(pts.size(), -1);
+  std::vector<int> voters;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    res.is_intersection[i] = tests.branches[i] >= cfg.min_branches;
+    if (res.is_intersection[i]) voters.push_back(static_cast<int>(i));
+  }
+  const std::vector<Point3> votes = centreVotes(rings, voters, tests.by_wide, scratch);
+  // Step 3: vote groups around the densest places (votes within vote_radius_m), node_radius_m.
+  const DensestFirstParams grouping{cfg.vote_radius_m, cfg.node_radius_m, 0.5 * cfg.height_m};
+  Scratch s;
+  Candidates cands = nodeCandidates(rings, groupDensestFirst(votes, grouping), s);
+  dropWeaklyVoted(cands, cfg.min_vote_fraction);
+  mergeCloseCandidates(cands, voters, cfg, res);
+  for (const auto& c : res.nodes) res.branches.push_back(rings.atNode(c, s, nullptr));
   return res;
 }
 

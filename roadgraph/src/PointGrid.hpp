@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "slamroute/core/Types.hpp"
+#include "slamroute/core/UnionFind.hpp"
 
 namespace slamroute::roadgraph::detail {
 
@@ -92,31 +93,7 @@ class PointGrid {
   std::vector<int> links_;
 };
 
-/// Union-find with path halving.
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n = 0) { reset(n); }
-  void reset(std::size_t n) {
-    parent_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<int>(i);
-  }
-  int find(int a) {
-    while (parent_[static_cast<std::size_t>(a)] != a) {
-      auto& pa = parent_[static_cast<std::size_t>(a)];
-      pa = parent_[static_cast<std::size_t>(pa)];
-      a = pa;
-    }
-    return a;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
+using slamroute::UnionFind;
 
 /// Connected components of `pts` linking points closer than tol (3D). Returns a label per point
 /// (labels 0..n-1 in order of first appearance) and writes the component count.

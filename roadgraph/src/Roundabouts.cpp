@@ -19,12 +19,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <set>
 #include <stdexcept>
 
+#include "DensestFirst.hpp"
 #include "Median.hpp"
-#include "PointGrid.hpp"
 
 namespace slamroute::roadgraph {
 namespace {
@@ -174,51 +173,22 @@ std::vector<Roundabout> ringCandidates(const std::vector<Candidate>& cands,
   std::vector<Point3> centres;
   centres.reserve(cands.size());
   for (const auto& c : cands) centres.push_back(c.centre);
-  detail::PointGrid grid(centres, cfg.centre_tolerance_m);
-  const double tol = cfg.centre_tolerance_m;
-  std::vector<int> density(cands.size(), 0);
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    grid.forEachNear(centres[i], tol, half_h, [&](int) { ++density[i]; });
-  std::vector<std::size_t> seeds(cands.size());
-  std::iota(seeds.begin(), seeds.end(), 0);
-  std::stable_sort(seeds.begin(), seeds.end(),
-                   [&](std::size_t a, std::size_t b) { return density[a] > density[b]; });
-  std::vector<char> used(cands.size(), 0);
+  const detail::DensestFirstParams grouping{cfg.centre_tolerance_m, cfg.centre_tolerance_m, half_h,
+                                            /*regather_at_median=*/true};
   std::vector<Roundabout> out;
-  for (const std::size_t seed : seeds) {
-    if (used[seed]) continue;
-    auto gather = [&](const Point3& c) {
-      std::vector<int> m;
-      grid.forEachNear(c, tol, half_h, [&](int j) {
-        if (!used[static_cast<std::size_t>(j)]) m.push_back(j);
-      });
-      std::sort(m.begin(), m.end());
-      return m;
-    };
-    std::vector<int> members = gather(centres[seed]);
-    std::vector<double> xs, ys, zs;
-    for (int j : members) {
-      xs.push_back(centres[static_cast<std::size_t>(j)].x());
-      ys.push_back(centres[static_cast<std::size_t>(j)].y());
-      zs.push_back(centres[static_cast<std::size_t>(j)].z());
-    }
-    const Point3 c(median(xs), median(ys), median(zs));
-    members = gather(c);
-    if (members.empty()) members.push_back(static_cast<int>(seed));
+  for (const auto& group : detail::groupDensestFirst(centres, grouping)) {
     std::vector<double> radii;
     std::set<int> vehicles;
     int sense = 0;
-    for (int j : members) {
+    for (const int j : group.members) {
       const Candidate& cd = cands[static_cast<std::size_t>(j)];
-      used[static_cast<std::size_t>(j)] = 1;
       radii.push_back(cd.radius);
       vehicles.insert(cd.vehicle);
       sense += cd.sense;
     }
-    used[seed] = 1;
     if (static_cast<int>(vehicles.size()) < cfg.min_vehicles) continue;
     Roundabout rb;
-    rb.centre = c;
+    rb.centre = group.median;
     rb.radius_m = median(radii);
     rb.sense = sense >= 0 ? 1 : -1;
     rb.vehicles = static_cast<int>(vehicles.size());
@@ -338,81 +308,118 @@ std::vector<std::pair<double, int>> groupAngles(std::vector<double> a, double r,
   return out;
 }
 
-/// The ring's junctions from the vehicles' stays on it.
-std::vector<Point3> ringJunctions(const Roundabout& rb, const Traces& tr,
-                                  const std::vector<std::size_t>& order,
-                                  const std::vector<Vec3>& travel, const RoundaboutConfig& cfg,
-                                  double max_gap_s, double half_h) {
+/// Where the vehicles' stays on a ring join and leave it (angles about its centre).
+struct Stays {
   std::vector<double> joins, leaves;
-  const double reach = rb.radius_m + cfg.ring_width_m;
-  const double min_sweep = cfg.min_run_sweep_deg * kPi / 180.0;
-  const double max_off_s = 1.0;  // a stay survives this long off the ring (GPS noise)
-  // A stay runs from the vehicle's first to its last point along the ring (gaps <= max_off_s);
-  // it joins where the vehicle, having entered the ring's band, first came within join_width_m of
-  // the radius, and leaves where it last was that close before leaving the band. Points along the
-  // ring alone place both a few metres into the ring (the direction of travel turns onto the
-  // tangent over travel_span_m), moving the join and the leave of one two-way arm apart as far as
-  // those of a split arm.
-  bool in_stay = false, in_band = false, left_band = false, reached_core = false;
-  double band_angle = 0.0, join = 0.0, leave = 0.0, last_angle = 0.0, swept = 0.0;
-  double last_t = 0.0, prev_t = 0.0;
-  int vehicle = -1;
-  auto close = [&] {
-    if (in_stay && std::abs(swept) >= min_sweep) {
-      joins.push_back(join);
-      leaves.push_back(leave);
+};
+
+/// A stay runs from the vehicle's first to its last point along the ring (gaps <= 1 s: GPS noise
+/// takes a point off the ring now and then); it joins where the vehicle, having entered the
+/// ring's band, first came within join_width_m of the radius, and leaves where it last was that
+/// close before leaving the band. Points along the ring alone place both a few metres into the
+/// ring (the direction of travel turns onto the tangent over travel_span_m), moving the join and
+/// the leave of one two-way arm apart as far as those of a split arm.
+class StayTracker {
+ public:
+  StayTracker(const Roundabout& rb, const RoundaboutConfig& cfg)
+      : rb_(rb), cfg_(cfg), min_sweep_(cfg.min_run_sweep_deg * kPi / 180.0) {}
+
+  /// A new vehicle, or a time gap: no stay continues across it.
+  void breakTrace() {
+    close();
+    in_band_ = false;
+  }
+  void add(const TracePoint& p, const RingPos& r) {
+    if (!r.near) {
+      in_band_ = false;
+      left_band_ = in_stay_;
+      return;
     }
-    in_stay = left_band = false;
-  };
+    const bool core = std::abs(r.d - rb_.radius_m) <= cfg_.join_width_m;
+    if (!in_band_) {
+      in_band_ = true;
+      reached_core_ = false;
+      band_angle_ = r.angle;
+    }
+    if (core && !reached_core_) {
+      reached_core_ = true;
+      band_angle_ = r.angle;
+    }
+    if (r.along && r.in_sense) {
+      continueStay(p, r);
+    } else if (in_stay_ && !left_band_ && core) {
+      leave_ = r.angle;
+    }
+  }
+  Stays finish() {
+    close();
+    return std::move(stays_);
+  }
+
+ private:
+  static constexpr double kMaxOffS = 1.0;  // a stay survives this long off the ring [s]
+
+  void continueStay(const TracePoint& p, const RingPos& r) {
+    if (in_stay_ && p.t - last_t_ <= kMaxOffS) {
+      double da = r.angle - last_angle_;
+      while (da > kPi) da -= 2 * kPi;
+      while (da < -kPi) da += 2 * kPi;
+      swept_ += da;
+    } else {
+      close();
+      in_stay_ = true;
+      join_ = band_angle_;
+      swept_ = 0.0;
+    }
+    last_angle_ = leave_ = r.angle;
+    last_t_ = p.t;
+    left_band_ = false;
+  }
+  void close() {
+    if (in_stay_ && std::abs(swept_) >= min_sweep_) {
+      stays_.joins.push_back(join_);
+      stays_.leaves.push_back(leave_);
+    }
+    in_stay_ = left_band_ = false;
+  }
+
+  const Roundabout& rb_;
+  const RoundaboutConfig& cfg_;
+  const double min_sweep_;
+  Stays stays_;
+  bool in_stay_ = false, in_band_ = false, left_band_ = false, reached_core_ = false;
+  double band_angle_ = 0.0, join_ = 0.0, leave_ = 0.0, last_angle_ = 0.0, swept_ = 0.0;
+  double last_t_ = 0.0;
+};
+
+Stays ringStays(const Roundabout& rb, const Traces& tr, const std::vector<std::size_t>& order,
+                const std::vector<Vec3>& travel, const RoundaboutConfig& cfg, double max_gap_s,
+                double half_h) {
+  const double reach = rb.radius_m + cfg.ring_width_m;
+  StayTracker stays(rb, cfg);
+  int vehicle = -1;
+  double prev_t = 0.0;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const TracePoint& p = tr.points[order[k]];
     if (p.vehicle != vehicle || p.t - prev_t > max_gap_s) {
-      close();
-      in_band = false;
+      stays.breakTrace();
       vehicle = p.vehicle;
     }
     prev_t = p.t;
     RingPos r;
     if ((p.pos.head<2>() - rb.centre.head<2>()).squaredNorm() <= reach * reach)
       r = ringPos(rb, p, travel[order[k]], cfg, half_h);
-    if (!r.near) {
-      in_band = false;
-      left_band = in_stay;
-      continue;
-    }
-    const bool core = std::abs(r.d - rb.radius_m) <= cfg.join_width_m;
-    if (!in_band) {
-      in_band = true;
-      reached_core = false;
-      band_angle = r.angle;
-    }
-    if (core && !reached_core) {
-      reached_core = true;
-      band_angle = r.angle;
-    }
-    if (r.along && r.in_sense) {
-      if (in_stay && p.t - last_t <= max_off_s) {
-        double da = r.angle - last_angle;
-        while (da > kPi) da -= 2 * kPi;
-        while (da < -kPi) da += 2 * kPi;
-        swept += da;
-      } else {
-        close();
-        in_stay = true;
-        join = band_angle;
-        swept = 0.0;
-      }
-      last_angle = leave = r.angle;
-      last_t = p.t;
-      left_band = false;
-    } else if (in_stay && !left_band && core) {
-      leave = r.angle;
-    }
+    stays.add(p, r);
   }
-  close();
-  // Junction angles: groups of joins and of leaves, then a join and a leave close together merged.
+  return stays.finish();
+}
+
+/// Junction angles: groups of joins and of leaves, then a join and a leave close together
+/// merged (weighted mean angle); the last and the first group may be neighbours across 0 / 2 pi.
+std::vector<double> junctionAngles(const Stays& stays, const Roundabout& rb,
+                                   const RoundaboutConfig& cfg) {
   std::vector<std::pair<double, int>> groups;
-  for (const auto* list : {&joins, &leaves})
+  for (const auto* list : {&stays.joins, &stays.leaves})
     for (const auto& g : groupAngles(*list, rb.radius_m, cfg.arm_gap_m))
       if (g.second >= cfg.min_arm_vehicles)
         groups.emplace_back(std::fmod(g.first + 2 * kPi, 2 * kPi), g.second);
@@ -427,7 +434,6 @@ std::vector<Point3> ringJunctions(const Roundabout& rb, const Traces& tr,
       merged.emplace_back(g.first * g.second, g.second);
     }
   }
-  // The last and the first group may be neighbours across 0 / 2 pi.
   if (merged.size() >= 2) {
     const double first = merged.front().first / merged.front().second;
     const double last = merged.back().first / merged.back().second;
@@ -437,12 +443,21 @@ std::vector<Point3> ringJunctions(const Roundabout& rb, const Traces& tr,
       merged.pop_back();
     }
   }
+  std::vector<double> angles;
+  for (const auto& m : merged) angles.push_back(m.first / m.second);
+  return angles;
+}
+
+/// The ring's junctions from the vehicles' stays on it.
+std::vector<Point3> ringJunctions(const Roundabout& rb, const Traces& tr,
+                                  const std::vector<std::size_t>& order,
+                                  const std::vector<Vec3>& travel, const RoundaboutConfig& cfg,
+                                  double max_gap_s, double half_h) {
+  const Stays stays = ringStays(rb, tr, order, travel, cfg, max_gap_s, half_h);
   std::vector<Point3> out;
-  for (const auto& m : merged) {
-    const double a = m.first / m.second;
+  for (const double a : junctionAngles(stays, rb, cfg))
     out.emplace_back(rb.centre.x() + rb.radius_m * std::cos(a),
                      rb.centre.y() + rb.radius_m * std::sin(a), rb.centre.z());
-  }
   return out;
 }
 

@@ -7,7 +7,7 @@
 //   network). Drives between two junctions with no street point in between give that link.
 // - Short streets. Of a street 25-40 m long only a few metres are left outside the cleared
 //   disks, too little for a run to show its direction of travel: drives from one end node to the
-//   other over that street's points give it (Bologna 27-26, two-way, was seen one way).
+//   other over that street's points give it (otherwise a two-way street can look one-way).
 //
 // Choices (EdgeConfig):
 // - A vehicle passes through a junction when it comes within link_visit_m (12 m, the cleared

@@ -12,7 +12,7 @@
 //   dropped; they are not streets. Unless the piece also reaches, at least clear_radius_m from
 //   both ends, the cleared disk of another node: then it is a street whose two directions are
 //   separate lanes a few metres apart, linked into one U-shaped cluster only near the far
-//   junction (Bologna: 3 such streets were lost), and it runs from its ends' node to that one.
+//   junction (Bologna has 3 such streets), and it runs from its ends' node to that one.
 // - A cluster that runs through a junction whose node lies 12-16 m off it (not cleared there) is
 //   split at that node when vehicles drive from it into the node's disk (splitAtPassedNode).
 #include <algorithm>
@@ -79,96 +79,107 @@ StreetPoints clearNodeNeighbourhoods(const std::vector<Point3>& voxels,
   return out;
 }
 
+namespace {
+
+/// Eqs. 1-2: the intersection node nearest to p within attach_max_m (not `exclude`), -1 if none.
+int nearestNode(const StreetContext& ctx, const Point3& p, int exclude) {
+  int best = -1;
+  double bd = ctx.ec.attach_max_m;
+  for (std::size_t j = 0; j < ctx.n_inter; ++j) {
+    const Point3& n = ctx.nodes[j];
+    if (static_cast<int>(j) == exclude || std::abs(n.z() - p.z()) > ctx.half_h) continue;
+    const double d = (n - p).head<2>().norm();
+    if (d <= bd) {
+      bd = d;
+      best = static_cast<int>(j);
+    }
+  }
+  return best;
+}
+
+/// The member of cluster c geodesically farthest from src; dist holds the distances from src.
+int farthestMember(const StreetContext& ctx, int c, const std::vector<int>& mem, int src,
+                   std::vector<double>& dist) {
+  for (int i : mem) dist[static_cast<std::size_t>(i)] = std::numeric_limits<double>::infinity();
+  geodesic(ctx.spts.pts, ctx.sp_grid, ctx.spts.label, c, ctx.ec.cluster_tolerance_m, src, dist);
+  int best = src;
+  for (int i : mem)
+    if (std::isfinite(dist[static_cast<std::size_t>(i)]) &&
+        dist[static_cast<std::size_t>(i)] > dist[static_cast<std::size_t>(best)])
+      best = i;
+  return best;
+}
+
+/// Both ends of street s nearest to one node: the end farther from it goes to its next nearest
+/// node. With none there, a street whose two directions are separate lanes a few metres apart,
+/// linked only near its far junction, is one U-shaped cluster whose legs both end at the near
+/// node: it runs from there to the other node its bend touches. False for a corner cut or a loop
+/// (not a street).
+bool attachBothEndsAtOneNode(const StreetContext& ctx, int c, Street& s, int& na, int& nb,
+                             std::vector<double>& dist, GraphBuildStats& st) {
+  const std::vector<Point3>& sp = ctx.spts.pts;
+  const Point3 pa = sp[static_cast<std::size_t>(s.a)], pb = sp[static_cast<std::size_t>(s.b)];
+  const int both = na;
+  const double da = (ctx.nodes[static_cast<std::size_t>(na)] - pa).head<2>().norm();
+  const double db = (ctx.nodes[static_cast<std::size_t>(na)] - pb).head<2>().norm();
+  if (da <= db)
+    nb = nearestNode(ctx, pb, na);
+  else
+    na = nearestNode(ctx, pa, nb);
+  if (na >= 0 && nb >= 0) return true;
+  const Contact far = farContact(sp, s.members, pa, pb, ctx.nodes, ctx.n_inter, both, ctx.ec, ctx.half_h);
+  if (far.member < 0) {
+    ++st.dropped_fragments;
+    return false;
+  }
+  ++st.u_turn_streets;
+  s.a = far.member;
+  s.b = farthestMember(ctx, c, s.members, s.a, dist);
+  na = far.node;
+  nb = both;
+  return true;
+}
+
+/// Dead ends get an end node at the last centreline point.
+int endNode(GraphNodes& gn, const Point3& p, GraphBuildStats& st) {
+  gn.pos.push_back(p);
+  gn.is_end.push_back(1);
+  ++st.dead_ends;
+  return static_cast<int>(gn.pos.size()) - 1;
+}
+
+}  // namespace
+
 std::vector<Street> attachStreets(const StreetPoints& spts, const Traces& traces,
                                   const std::vector<std::size_t>& order,
                                   const std::vector<int>& voxel_of, GraphNodes& gn,
                                   const EdgeConfig& ec, double half_h, GraphBuildStats& st) {
   const std::vector<Point3>& sp = spts.pts;
-  const std::vector<int>& label = spts.label;
-  const std::vector<std::vector<int>>& comps = spts.comps;
-  const int ncomp = static_cast<int>(comps.size());
-  std::vector<Point3>& nodes = gn.pos;
-  std::vector<char>& is_end = gn.is_end;
-  const std::size_t n_inter = gn.n_inter;
   // Over the intersection nodes (end nodes are appended below; the grid only knows the first
   // n_inter).
-  const PointGrid node_grid(nodes, std::max(ec.clear_radius_m, 1.0));
-  auto nearestNode = [&](const Point3& p, int exclude) {
-    int best = -1;
-    double bd = ec.attach_max_m;
-    for (std::size_t j = 0; j < n_inter; ++j) {
-      if (static_cast<int>(j) == exclude || std::abs(nodes[j].z() - p.z()) > half_h) continue;
-      const double d = (nodes[j] - p).head<2>().norm();
-      if (d <= bd) {
-        bd = d;
-        best = static_cast<int>(j);
-      }
-    }
-    return best;
-  };
-
+  const PointGrid node_grid(gn.pos, std::max(ec.clear_radius_m, 1.0));
   const PointGrid sp_grid(sp, std::max(ec.cluster_tolerance_m, 0.1));
   std::vector<double> dist(sp.size(), std::numeric_limits<double>::infinity());
   std::vector<Street> streets;
-  const StreetContext ctx{spts,  sp_grid,   traces,  order, voxel_of,
-                          nodes, node_grid, n_inter, ec,    half_h};
-  for (int c = 0; c < ncomp; ++c) {
-    const auto& mem = comps[static_cast<std::size_t>(c)];
+  const StreetContext ctx{spts,   sp_grid,   traces,     order, voxel_of,
+                          gn.pos, node_grid, gn.n_inter, ec,    half_h};
+  for (int c = 0; c < static_cast<int>(spts.comps.size()); ++c) {
+    const auto& mem = spts.comps[static_cast<std::size_t>(c)];
     if (static_cast<int>(mem.size()) < ec.min_street_points) continue;
-    auto farthest = [&](int src) {
-      for (int i : mem) dist[static_cast<std::size_t>(i)] = std::numeric_limits<double>::infinity();
-      geodesic(sp, sp_grid, label, c, ec.cluster_tolerance_m, src, dist);
-      int best = src;
-      for (int i : mem)
-        if (std::isfinite(dist[static_cast<std::size_t>(i)]) &&
-            dist[static_cast<std::size_t>(i)] > dist[static_cast<std::size_t>(best)])
-          best = i;
-      return best;
-    };
     Street s;
     s.members = mem;
-    s.a = farthest(mem.front());
-    s.b = farthest(s.a);  // dist now holds geodesic distances from a
-    const Point3 pa = sp[static_cast<std::size_t>(s.a)], pb = sp[static_cast<std::size_t>(s.b)];
+    s.a = farthestMember(ctx, c, mem, mem.front(), dist);
+    s.b = farthestMember(ctx, c, mem, s.a, dist);  // dist now holds geodesic distances from a
     // Eqs. 1-2 at the street's ends: nearest node j, then nearest node k != j.
-    int na = nearestNode(pa, -1), nb = nearestNode(pb, -1);
+    int na = nearestNode(ctx, sp[static_cast<std::size_t>(s.a)], -1);
+    int nb = nearestNode(ctx, sp[static_cast<std::size_t>(s.b)], -1);
     if (splitAtPassedNode(ctx, c, mem, na, nb, streets, st)) continue;
-    if (na >= 0 && na == nb) {
-      const int both = na;
-      const double da = (nodes[static_cast<std::size_t>(na)] - pa).head<2>().norm();
-      const double db = (nodes[static_cast<std::size_t>(na)] - pb).head<2>().norm();
-      if (da <= db)
-        nb = nearestNode(pb, na);
-      else
-        na = nearestNode(pa, nb);
-      if (na < 0 || nb < 0) {
-        // Both ends at one node. A street whose two directions are separate lanes a few metres
-        // apart, linked only near its far junction, is one U-shaped cluster whose legs both end
-        // at the near node: the street runs from there to the other node its bend touches.
-        const Contact far = farContact(sp, mem, pa, pb, nodes, n_inter, both, ec, half_h);
-        if (far.member < 0) {  // a corner cut or a loop, not a street
-          ++st.dropped_fragments;
-          continue;
-        }
-        ++st.u_turn_streets;
-        s.a = far.member;
-        s.b = farthest(s.a);
-        na = far.node;
-        nb = both;
-      }
-    }
+    if (na >= 0 && na == nb && !attachBothEndsAtOneNode(ctx, c, s, na, nb, dist, st)) continue;
     // Centreline from a to b: centroids of geodesic-distance bins.
     s.centre = binnedCentre(sp, mem, dist, ec.polyline_step_m);
     if (s.centre.empty()) continue;
-    // Dead ends get an end node at the last centreline point.
-    auto endNode = [&](const Point3& p) {
-      nodes.push_back(p);
-      is_end.push_back(1);
-      ++st.dead_ends;
-      return static_cast<int>(nodes.size()) - 1;
-    };
-    s.u = na >= 0 ? na : endNode(s.centre.front());
-    s.v = nb >= 0 ? nb : endNode(s.centre.back());
+    s.u = na >= 0 ? na : endNode(gn, s.centre.front(), st);
+    s.v = nb >= 0 ? nb : endNode(gn, s.centre.back(), st);
     s.comp = c;
     streets.push_back(std::move(s));
   }

@@ -1,7 +1,7 @@
 // Validation against a SUMO net and mapping of graph edges to SUMO edges.
 //
 // True intersections: junctions with >= 3 distinct neighbouring junctions over passenger edges
-// (in or out), as the issue defines them; SUMO's "priority"/"traffic_light" types are not used
+// (in or out); SUMO's "priority"/"traffic_light" types are not used
 // because SUMO also splits plain streets with degree-2 junctions (shape changes, lane changes).
 // A real road chain runs from one true intersection through degree-2 junctions to the next one.
 #include "slamroute/roadgraph/SumoMatch.hpp"
@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -22,11 +23,16 @@
 namespace slamroute::roadgraph {
 namespace {
 
-/// Undirected neighbour sets of the drivable junction graph.
+/// Undirected neighbour sets of the drivable junction graph, and its edges with their lengths.
 struct JunctionGraph {
   std::vector<std::string> id;
   std::vector<Point3> pos;
   std::vector<std::set<std::size_t>> nb;
+  struct Link {
+    std::size_t u, v;
+    double length_m;
+  };
+  std::vector<Link> links;
 };
 
 JunctionGraph junctionGraph(const SumoNet& net) {
@@ -42,8 +48,178 @@ JunctionGraph junctionGraph(const SumoNet& net) {
     if (e.u != e.v) {
       jg.nb[e.u].insert(e.v);
       jg.nb[e.v].insert(e.u);
+      jg.links.push_back({e.u, e.v, e.length_m});
     }
   return jg;
+}
+
+/// The truth a graph is scored against: vertices (one junction each, or the junctions of one
+/// place) with their undirected neighbour sets.
+struct TruthGraph {
+  std::vector<std::string> id;              ///< junction id, or the place's ids joined by '+'
+  std::vector<std::vector<Point3>> points;  ///< junction positions of each vertex
+  std::vector<std::set<std::size_t>> nb;
+};
+
+TruthGraph junctionTruth(const JunctionGraph& jg) {
+  TruthGraph t;
+  t.id = jg.id;
+  for (const auto& p : jg.pos) t.points.push_back({p});
+  t.nb = jg.nb;
+  return t;
+}
+
+/// Places: junctions with >= 3 distinct neighbours joined by a passenger edge of at most
+/// link_max_m are one place (the carriageway crossings of a divided road, the corners of a
+/// junction box), and the graph contracted onto them.
+TruthGraph placeTruth(const JunctionGraph& jg, double link_max_m) {
+  const std::size_t n = jg.nb.size();
+  detail::UnionFind sets(n);
+  for (const auto& l : jg.links)
+    if (l.length_m <= link_max_m && jg.nb[l.u].size() >= 3 && jg.nb[l.v].size() >= 3)
+      sets.unite(static_cast<int>(l.u), static_cast<int>(l.v));
+  std::vector<long> place_of(n, -1);
+  TruthGraph t;
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto root = static_cast<std::size_t>(sets.find(static_cast<int>(v)));
+    if (place_of[root] < 0) {
+      place_of[root] = static_cast<long>(t.id.size());
+      t.id.emplace_back();
+      t.points.emplace_back();
+    }
+    const auto p = static_cast<std::size_t>(place_of[root]);
+    place_of[v] = place_of[root];
+    t.id[p] += (t.id[p].empty() ? "" : "+") + jg.id[v];
+    t.points[p].push_back(jg.pos[v]);
+  }
+  t.nb.resize(t.id.size());
+  for (const auto& l : jg.links) {
+    const auto a = static_cast<std::size_t>(place_of[l.u]), b = static_cast<std::size_t>(place_of[l.v]);
+    if (a == b) continue;
+    t.nb[a].insert(b);
+    t.nb[b].insert(a);
+  }
+  return t;
+}
+
+double distanceTo(const TruthGraph& t, std::size_t v, const Point3& p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& q : t.points[v]) d = std::min(d, (p - q).norm());
+  return d;
+}
+
+/// One-to-one matching of the detected nodes with the true intersections, closest pairs first.
+struct NodeMatch {
+  std::vector<long> det_to_true;  ///< per graph node, truth vertex or -1
+  std::vector<int> true_to_det;   ///< per truth vertex, graph node or -1
+};
+
+NodeMatch matchNodes(const RoadGraph& graph, const std::vector<int>& detected,
+                     const TruthGraph& t, const std::vector<std::size_t>& truth, double radius_m) {
+  struct Pair {
+    double d;
+    int det;
+    std::size_t tru;
+  };
+  std::vector<Pair> pairs;
+  for (int d : detected)
+    for (std::size_t v : truth) {
+      const double dist = distanceTo(t, v, graph.nodes[static_cast<std::size_t>(d)].pos);
+      if (dist <= radius_m) pairs.push_back({dist, d, v});
+    }
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
+    return a.d != b.d ? a.d < b.d : (a.det != b.det ? a.det < b.det : a.tru < b.tru);
+  });
+  NodeMatch m;
+  m.det_to_true.assign(graph.nodes.size(), -1);
+  m.true_to_det.assign(t.nb.size(), -1);
+  for (const auto& p : pairs) {
+    if (m.det_to_true[static_cast<std::size_t>(p.det)] >= 0 || m.true_to_det[p.tru] >= 0) continue;
+    m.det_to_true[static_cast<std::size_t>(p.det)] = static_cast<long>(p.tru);
+    m.true_to_det[p.tru] = p.det;
+  }
+  return m;
+}
+
+using Chain = std::pair<std::size_t, std::size_t>;
+
+/// Real chains between true intersections through vertices with exactly 2 neighbours.
+std::set<Chain> trueChains(const TruthGraph& t, const std::vector<std::size_t>& truth) {
+  std::set<Chain> chains;
+  for (std::size_t v : truth)
+    for (std::size_t w : t.nb[v]) {
+      std::size_t prev = v, cur = w;
+      for (std::size_t steps = 0; t.nb[cur].size() == 2 && steps < t.nb.size(); ++steps) {
+        const std::size_t a = *t.nb[cur].begin(), b = *t.nb[cur].rbegin();
+        const std::size_t next = a == prev ? b : a;
+        prev = cur;
+        cur = next;
+      }
+      if (t.nb[cur].size() >= 3 && cur != v) chains.insert({std::min(v, cur), std::max(v, cur)});
+    }
+  return chains;
+}
+
+void scoreNodes(const NodeMatch& m, const TruthGraph& t, const std::vector<std::size_t>& truth,
+                const std::vector<int>& detected, ValidationResult& r) {
+  for (const long v : m.det_to_true) r.matched_nodes += v >= 0 ? 1 : 0;
+  r.true_intersections = truth.size();
+  r.detected_nodes = detected.size();
+  r.node_precision = detected.empty() ? 0.0 : double(r.matched_nodes) / double(detected.size());
+  r.node_recall = truth.empty() ? 0.0 : double(r.matched_nodes) / double(truth.size());
+  r.node_f1 = r.node_precision + r.node_recall > 0
+                  ? 2 * r.node_precision * r.node_recall / (r.node_precision + r.node_recall)
+                  : 0.0;
+  for (std::size_t v : truth)
+    if (m.true_to_det[v] < 0) r.missed_junctions.push_back(t.id[v]);
+  for (int d : detected)
+    if (m.det_to_true[static_cast<std::size_t>(d)] < 0) r.false_nodes.push_back(d);
+}
+
+/// An undirected street (counted once per `street`) between two intersection nodes matches when
+/// its end nodes are matched to the two ends of a real chain.
+void scoreStreets(const RoadGraph& graph, const std::vector<char>& node_is_end, const NodeMatch& m,
+                  const std::set<Chain>& chains, ValidationResult& r) {
+  auto isEnd = [&](int n) {
+    return static_cast<std::size_t>(n) < node_is_end.size() && node_is_end[static_cast<std::size_t>(n)];
+  };
+  r.true_chains = chains.size();
+  std::set<int> seen_street;
+  std::set<Chain> found;
+  for (const auto& e : graph.edges) {
+    if (e.street >= 0 && !seen_street.insert(e.street).second) continue;
+    if (isEnd(e.u) || isEnd(e.v)) continue;
+    ++r.detected_streets;
+    const long a = m.det_to_true[static_cast<std::size_t>(e.u)];
+    const long b = m.det_to_true[static_cast<std::size_t>(e.v)];
+    if (a < 0 || b < 0) continue;
+    const Chain key{std::min<std::size_t>(a, b), std::max<std::size_t>(a, b)};
+    if (chains.count(key)) {
+      ++r.matched_streets;
+      found.insert(key);
+    }
+  }
+  r.found_chains = found.size();
+  r.edge_precision = r.detected_streets ? double(r.matched_streets) / double(r.detected_streets) : 0.0;
+  r.edge_recall = r.true_chains ? double(r.found_chains) / double(r.true_chains) : 0.0;
+}
+
+ValidationResult validateAgainst(const TruthGraph& t, const RoadGraph& graph,
+                                 const std::vector<char>& node_is_end, const SumoMatchConfig& cfg) {
+  std::vector<std::size_t> truth;
+  for (std::size_t v = 0; v < t.nb.size(); ++v)
+    if (t.nb[v].size() >= 3) truth.push_back(v);
+  std::vector<int> detected;
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n)
+    if (!(n < node_is_end.size() && node_is_end[n])) detected.push_back(static_cast<int>(n));
+  const NodeMatch m = matchNodes(graph, detected, t, truth, cfg.match_radius_m);
+  ValidationResult r;
+  r.node_junction.assign(graph.nodes.size(), "");
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n)
+    if (m.det_to_true[n] >= 0) r.node_junction[n] = t.id[static_cast<std::size_t>(m.det_to_true[n])];
+  scoreNodes(m, t, truth, detected, r);
+  scoreStreets(graph, node_is_end, m, trueChains(t, truth), r);
+  return r;
 }
 
 }  // namespace
@@ -76,252 +252,239 @@ std::string ValidationResult::toJson() const {
 
 ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<char>& node_is_end,
                                     const SumoNet& net, const SumoMatchConfig& cfg) {
-  const JunctionGraph jg = junctionGraph(net);
-  std::vector<std::size_t> truth;
-  for (std::size_t v = 0; v < jg.nb.size(); ++v)
-    if (jg.nb[v].size() >= 3) truth.push_back(v);
-  auto isEnd = [&](std::size_t n) { return n < node_is_end.size() && node_is_end[n]; };
-  std::vector<int> detected;
-  for (std::size_t n = 0; n < graph.nodes.size(); ++n)
-    if (!isEnd(n)) detected.push_back(static_cast<int>(n));
-
-  // Greedy one-to-one matching, closest pairs first.
-  struct Pair {
-    double d;
-    int det;
-    std::size_t tru;
-  };
-  std::vector<Pair> pairs;
-  for (int d : detected)
-    for (std::size_t t : truth) {
-      const double dist = (graph.nodes[static_cast<std::size_t>(d)].pos - jg.pos[t]).norm();
-      if (dist <= cfg.match_radius_m) pairs.push_back({dist, d, t});
-    }
-  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
-    return a.d != b.d ? a.d < b.d : (a.det != b.det ? a.det < b.det : a.tru < b.tru);
-  });
-  std::vector<long> det_to_true(graph.nodes.size(), -1);
-  std::vector<int> true_to_det(jg.nb.size(), -1);
-  ValidationResult r;
-  r.node_junction.assign(graph.nodes.size(), "");
-  for (const auto& p : pairs) {
-    if (det_to_true[static_cast<std::size_t>(p.det)] >= 0 || true_to_det[p.tru] >= 0) continue;
-    det_to_true[static_cast<std::size_t>(p.det)] = static_cast<long>(p.tru);
-    true_to_det[p.tru] = p.det;
-    r.node_junction[static_cast<std::size_t>(p.det)] = jg.id[p.tru];
-    ++r.matched_nodes;
-  }
-  r.true_intersections = truth.size();
-  r.detected_nodes = detected.size();
-  r.node_precision = detected.empty() ? 0.0 : double(r.matched_nodes) / double(detected.size());
-  r.node_recall = truth.empty() ? 0.0 : double(r.matched_nodes) / double(truth.size());
-  r.node_f1 = r.node_precision + r.node_recall > 0
-                  ? 2 * r.node_precision * r.node_recall / (r.node_precision + r.node_recall)
-                  : 0.0;
-  for (std::size_t t : truth)
-    if (true_to_det[t] < 0) r.missed_junctions.push_back(jg.id[t]);
-  for (int d : detected)
-    if (det_to_true[static_cast<std::size_t>(d)] < 0) r.false_nodes.push_back(d);
-
-  // Real chains between true intersections through degree-2 junctions.
-  std::set<std::pair<std::size_t, std::size_t>> chains;
-  for (std::size_t v : truth)
-    for (std::size_t w : jg.nb[v]) {
-      std::size_t prev = v, cur = w;
-      for (std::size_t steps = 0; jg.nb[cur].size() == 2 && steps < jg.nb.size(); ++steps) {
-        const std::size_t a = *jg.nb[cur].begin(), b = *jg.nb[cur].rbegin();
-        const std::size_t next = a == prev ? b : a;
-        prev = cur;
-        cur = next;
-      }
-      if (jg.nb[cur].size() >= 3 && cur != v) chains.insert({std::min(v, cur), std::max(v, cur)});
-    }
-  r.true_chains = chains.size();
-  std::set<int> seen_street;
-  std::set<std::pair<std::size_t, std::size_t>> found;
-  for (const auto& e : graph.edges) {
-    if (e.street >= 0 && !seen_street.insert(e.street).second) continue;
-    if (isEnd(static_cast<std::size_t>(e.u)) || isEnd(static_cast<std::size_t>(e.v))) continue;
-    ++r.detected_streets;
-    const long a = det_to_true[static_cast<std::size_t>(e.u)];
-    const long b = det_to_true[static_cast<std::size_t>(e.v)];
-    if (a < 0 || b < 0) continue;
-    const std::pair<std::size_t, std::size_t> key{std::min<std::size_t>(a, b), std::max<std::size_t>(a, b)};
-    if (chains.count(key)) {
-      ++r.matched_streets;
-      found.insert(key);
-    }
-  }
-  r.found_chains = found.size();
-  r.edge_precision = r.detected_streets ? double(r.matched_streets) / double(r.detected_streets) : 0.0;
-  r.edge_recall = r.true_chains ? double(r.found_chains) / double(r.true_chains) : 0.0;
-  return r;
+  return validateAgainst(junctionTruth(junctionGraph(net)), graph, node_is_end, cfg);
 }
 
-std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchConfig& cfg) {
-  // Lane samples every 2 m with their direction of travel.
-  std::vector<Point3> samples;
-  std::vector<Vec3> tangent;
-  std::vector<int> sample_edge;
-  std::vector<const SumoEdge*> edges;
-  std::unordered_map<std::string, std::vector<const SumoEdge*>> out_of;  // junction -> edges
-  for (const auto& e : net.edges) {
-    if (e.isInternal() || !e.allowsPassenger()) continue;
-    const int id = static_cast<int>(edges.size());
-    edges.push_back(&e);
-    out_of[e.from].push_back(&e);
-    for (const auto& lane : e.lanes) {
-      if (!lane.allowsPassenger()) continue;
-      for (std::size_t k = 0; k + 1 < lane.shape.size(); ++k) {
-        const Vec3 d = lane.shape[k + 1] - lane.shape[k];
-        const double len = d.norm();
-        if (len < 1e-6) continue;
-        const int m = std::max(1, static_cast<int>(std::ceil(len / 2.0)));
-        for (int q = 0; q <= m; ++q) {
-          samples.push_back(lane.shape[k] + d * (static_cast<double>(q) / m));
-          tangent.push_back(d / len);
-          sample_edge.push_back(id);
-        }
-      }
+ValidationResult validateAgainstPlaces(const RoadGraph& graph, const std::vector<char>& node_is_end,
+                                       const SumoNet& net, const SumoMatchConfig& cfg) {
+  return validateAgainst(placeTruth(junctionGraph(net), cfg.place_link_max_m), graph, node_is_end,
+                         cfg);
+}
+
+namespace {
+
+/// The net's passenger lanes sampled every 2 m with their direction of travel, and SUMO's
+/// connections between the passenger edges.
+class SumoLanes {
+ public:
+  SumoLanes(const SumoNet& net, double cell_m) : net_(net) {
+    for (const auto& e : net.edges) {
+      if (e.isInternal() || !e.allowsPassenger()) continue;
+      const int id = static_cast<int>(edges_.size());
+      edges_.push_back(&e);
+      out_of_[e.from].push_back(&e);
+      for (const auto& lane : e.lanes)
+        if (lane.allowsPassenger()) sampleLane(lane, id);
     }
+    grid_.emplace(samples_, cell_m);
   }
-  const detail::PointGrid grid(samples, std::max(cfg.max_lane_dist_m, 1.0));
-  // Shortest connection a -> b over at most 4 intermediate edges allowed by SUMO's connections.
-  auto bridge = [&](const SumoEdge* a, const SumoEdge* b) -> std::vector<std::string> {
+  const SumoEdge& edge(int k) const { return *edges_[static_cast<std::size_t>(k)]; }
+  bool turnAllowed(int a, int b) const { return net_.turnAllowed(edge(a).id, edge(b).id); }
+
+  /// The passenger edge of the nearest lane sample within max_dist of p whose direction is
+  /// within ~70 degrees of t; -1 when there is none.
+  int nearestEdge(const Point3& p, const Vec3& t, double max_dist) const {
+    int best = -1;
+    double bd = std::numeric_limits<double>::infinity();
+    grid_->forEachNear(p, max_dist, max_dist, [&](int j) {
+      const auto k = static_cast<std::size_t>(j);
+      if (tangent_[k].dot(t) < 0.3) return;  // opposite direction
+      const double dd = (samples_[k] - p).squaredNorm();
+      if (dd < bd) {
+        bd = dd;
+        best = sample_edge_[k];
+      }
+    });
+    return best;
+  }
+
+  /// Shortest connection a -> b over at most 4 intermediate edges allowed by SUMO's
+  /// connections: the edges in between, {"."} when b follows a directly, {} when none.
+  std::vector<std::string> bridge(int a, int b) const {
+    const SumoEdge* target = edges_[static_cast<std::size_t>(b)];
     std::deque<std::pair<const SumoEdge*, std::vector<std::string>>> q;
-    q.push_back({a, {}});
-    std::set<std::string> seen{a->id};
+    q.push_back({edges_[static_cast<std::size_t>(a)], {}});
+    std::set<std::string> seen{edge(a).id};
     while (!q.empty()) {
       auto [cur, path] = q.front();
       q.pop_front();
       if (path.size() > 4) continue;
-      const auto it = out_of.find(cur->to);
-      if (it == out_of.end()) continue;
+      const auto it = out_of_.find(cur->to);
+      if (it == out_of_.end()) continue;
       for (const SumoEdge* nx : it->second) {
-        if (!net.turnAllowed(cur->id, nx->id)) continue;
-        if (nx == b) return path.empty() ? std::vector<std::string>{"."} : path;
+        if (!net_.turnAllowed(cur->id, nx->id)) continue;
+        if (nx == target) return path.empty() ? std::vector<std::string>{"."} : path;
         if (!seen.insert(nx->id).second) continue;
-        auto p2 = path;
-        p2.push_back(nx->id);
-        q.push_back({nx, std::move(p2)});
+        auto longer = path;
+        longer.push_back(nx->id);
+        q.push_back({nx, std::move(longer)});
       }
     }
     return {};
-  };
-  std::size_t unmapped = 0, gaps = 0, dropped = 0, strays = 0;
-  for (auto& ge : graph.edges) {
-    ge.sumo_edges.clear();
-    const auto& pl = ge.polyline;
-    const double total = polylineLength(pl);
-    std::vector<int> seq, cnt;  // SUMO edges along the polyline, samples on each
-    double s = 0.0;
-    for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
-      const Vec3 d = pl[k + 1] - pl[k];
+  }
+
+ private:
+  void sampleLane(const SumoLane& lane, int edge_id) {
+    for (std::size_t k = 0; k + 1 < lane.shape.size(); ++k) {
+      const Vec3 d = lane.shape[k + 1] - lane.shape[k];
       const double len = d.norm();
       if (len < 1e-6) continue;
-      const Vec3 t = d / len;
-      for (double a = 0.0; a < len; a += cfg.sample_step_m) {
-        const double pos = s + a;
-        const bool interior = pos >= cfg.end_skip_m && pos <= total - cfg.end_skip_m;
-        const bool middle = std::abs(pos - 0.5 * total) < 0.5 * cfg.sample_step_m;
-        if (!interior && !middle) continue;
-        const Point3 p = pl[k] + t * a;
-        int best = -1;
-        double bd = std::numeric_limits<double>::infinity();
-        grid.forEachNear(p, cfg.max_lane_dist_m, cfg.max_lane_dist_m, [&](int j) {
-          if (tangent[static_cast<std::size_t>(j)].dot(t) < 0.3) return;  // opposite direction
-          const double dd = (samples[static_cast<std::size_t>(j)] - p).squaredNorm();
-          if (dd < bd) {
-            bd = dd;
-            best = sample_edge[static_cast<std::size_t>(j)];
-          }
-        });
-        if (best >= 0 && (seq.empty() || seq.back() != best)) {
-          seq.push_back(best);
-          cnt.push_back(0);
-        }
-        if (best >= 0) ++cnt.back();
-      }
-      s += len;
-    }
-    // Drop A-B-A flickers (a sample snapping to a neighbouring edge for one step).
-    for (std::size_t k = 1; k + 1 < seq.size();) {
-      if (seq[k - 1] == seq[k + 1]) {
-        cnt[k - 1] += cnt[k + 1];
-        seq.erase(seq.begin() + static_cast<long>(k), seq.begin() + static_cast<long>(k) + 2);
-        cnt.erase(cnt.begin() + static_cast<long>(k), cnt.begin() + static_cast<long>(k) + 2);
-        k = std::max<std::size_t>(1, k - 1);
-      } else {
-        ++k;
+      const int m = std::max(1, static_cast<int>(std::ceil(len / 2.0)));
+      for (int q = 0; q <= m; ++q) {
+        samples_.push_back(lane.shape[k] + d * (static_cast<double>(q) / m));
+        tangent_.push_back(d / len);
+        sample_edge_.push_back(edge_id);
       }
     }
-    // Keep the drivable chain with the most samples (longest path in the DAG of the sequence
-    // whose links are allowed turns or bridgeable within 4 edges): samples snapping to the other
-    // carriageway or a crossing street for a few steps cannot be driven and are dropped.
-    if (seq.size() > 1) {
-      const std::size_t m = seq.size();
-      std::map<std::pair<int, int>, bool> linkable;
-      auto link = [&](int a, int b) {
-        if (a == b) return true;
-        const auto key = std::make_pair(a, b);
-        const auto it = linkable.find(key);
-        if (it != linkable.end()) return it->second;
-        const SumoEdge* ea = edges[static_cast<std::size_t>(a)];
-        const SumoEdge* eb = edges[static_cast<std::size_t>(b)];
-        const bool ok = net.turnAllowed(ea->id, eb->id) || !bridge(ea, eb).empty();
-        linkable.emplace(key, ok);
-        return ok;
-      };
-      std::vector<int> score(m, 0), parent(m, -1);
-      for (std::size_t k = 0; k < m; ++k) {
-        score[k] = cnt[k];
-        for (std::size_t j = 0; j < k; ++j)
-          if (score[j] + cnt[k] > score[k] && link(seq[j], seq[k])) {
-            score[k] = score[j] + cnt[k];
-            parent[k] = static_cast<int>(j);
-          }
+  }
+
+  const SumoNet& net_;
+  std::vector<Point3> samples_;
+  std::vector<Vec3> tangent_;
+  std::vector<int> sample_edge_;
+  std::vector<const SumoEdge*> edges_;
+  std::unordered_map<std::string, std::vector<const SumoEdge*>> out_of_;  // junction -> edges
+  std::optional<detail::PointGrid> grid_;
+};
+
+/// SUMO edges along a polyline in order, each with the number of samples that matched it.
+struct EdgeRun {
+  std::vector<int> edge, samples;
+};
+
+/// Samples the polyline every sample_step_m (skipping end_skip_m at both ends, except the
+/// middle sample) and matches each sample to the nearest lane in its direction.
+EdgeRun sumoEdgesAlong(const Polyline& pl, const SumoLanes& lanes, const SumoMatchConfig& cfg) {
+  EdgeRun run;
+  const double total = polylineLength(pl);
+  double s = 0.0;
+  for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
+    const Vec3 d = pl[k + 1] - pl[k];
+    const double len = d.norm();
+    if (len < 1e-6) continue;
+    const Vec3 t = d / len;
+    for (double a = 0.0; a < len; a += cfg.sample_step_m) {
+      const double pos = s + a;
+      const bool interior = pos >= cfg.end_skip_m && pos <= total - cfg.end_skip_m;
+      const bool middle = std::abs(pos - 0.5 * total) < 0.5 * cfg.sample_step_m;
+      if (!interior && !middle) continue;
+      const int best = lanes.nearestEdge(pl[k] + t * a, t, cfg.max_lane_dist_m);
+      if (best < 0) continue;
+      if (run.edge.empty() || run.edge.back() != best) {
+        run.edge.push_back(best);
+        run.samples.push_back(0);
       }
-      int k = static_cast<int>(std::max_element(score.begin(), score.end()) - score.begin());
-      std::vector<int> chain;
-      for (; k >= 0; k = parent[static_cast<std::size_t>(k)]) {
-        const int e = seq[static_cast<std::size_t>(k)];
-        if (chain.empty() || chain.back() != e) chain.push_back(e);
+      ++run.samples.back();
+    }
+    s += len;
+  }
+  return run;
+}
+
+/// Drops A-B-A flickers (a sample snapping to a neighbouring edge for one step).
+void dropFlickers(EdgeRun& run) {
+  auto& seq = run.edge;
+  auto& cnt = run.samples;
+  for (std::size_t k = 1; k + 1 < seq.size();) {
+    if (seq[k - 1] == seq[k + 1]) {
+      cnt[k - 1] += cnt[k + 1];
+      seq.erase(seq.begin() + static_cast<long>(k), seq.begin() + static_cast<long>(k) + 2);
+      cnt.erase(cnt.begin() + static_cast<long>(k), cnt.begin() + static_cast<long>(k) + 2);
+      k = std::max<std::size_t>(1, k - 1);
+    } else {
+      ++k;
+    }
+  }
+}
+
+/// Keeps the drivable chain with the most samples (longest path in the DAG of the sequence
+/// whose links are allowed turns or bridgeable within 4 edges): samples snapping to the other
+/// carriageway or a crossing street for a few steps cannot be driven and are dropped. Returns
+/// the SUMO edges of the chain; adds the matches dropped to `dropped`.
+std::vector<int> drivableChain(const EdgeRun& run, const SumoLanes& lanes, std::size_t& dropped) {
+  const std::vector<int>& seq = run.edge;
+  if (seq.size() <= 1) return seq;
+  const std::size_t m = seq.size();
+  std::map<std::pair<int, int>, bool> linkable;
+  auto link = [&](int a, int b) {
+    if (a == b) return true;
+    const auto [it, fresh] = linkable.try_emplace({a, b}, false);
+    if (fresh) it->second = lanes.turnAllowed(a, b) || !lanes.bridge(a, b).empty();
+    return it->second;
+  };
+  std::vector<int> score(m, 0), parent(m, -1);
+  for (std::size_t k = 0; k < m; ++k) {
+    score[k] = run.samples[k];
+    for (std::size_t j = 0; j < k; ++j)
+      if (score[j] + run.samples[k] > score[k] && link(seq[j], seq[k])) {
+        score[k] = score[j] + run.samples[k];
+        parent[k] = static_cast<int>(j);
       }
-      dropped += m - chain.size();
-      seq.assign(chain.rbegin(), chain.rend());
+  }
+  int k = static_cast<int>(std::max_element(score.begin(), score.end()) - score.begin());
+  std::vector<int> chain;
+  for (; k >= 0; k = parent[static_cast<std::size_t>(k)]) {
+    const int e = seq[static_cast<std::size_t>(k)];
+    if (chain.empty() || chain.back() != e) chain.push_back(e);
+  }
+  dropped += m - chain.size();
+  return {chain.rbegin(), chain.rend()};
+}
+
+/// A chain should leave u and reach v. An end edge pointing the other way (a crossing road's
+/// lane arriving at u, or one leaving v, matched by the samples next to the node) is stray:
+/// its `near` end lies close to the node and closer than its other end.
+bool strayEnd(const SumoEdge& e, const Point3& node, bool arriving, const SumoMatchConfig& cfg) {
+  if (e.length() < cfg.stray_min_length_m || e.shape.empty()) return false;
+  const double near = ((arriving ? e.shape.back() : e.shape.front()) - node).head<2>().norm();
+  const double far = ((arriving ? e.shape.front() : e.shape.back()) - node).head<2>().norm();
+  return near < std::min(cfg.stray_radius_m, far);
+}
+
+/// Drops stray end edges of the chain of graph edge ge; returns how many.
+std::size_t dropStrayEnds(std::vector<int>& chain, const RoadGraph& graph, const RoadEdge& ge,
+                          const SumoLanes& lanes, const SumoMatchConfig& cfg) {
+  std::size_t strays = 0;
+  const auto node = [&](int n) { return graph.nodes[static_cast<std::size_t>(n)].pos; };
+  if (chain.size() >= 2 && strayEnd(lanes.edge(chain.front()), node(ge.u), true, cfg)) {
+    chain.erase(chain.begin());
+    ++strays;
+  }
+  if (chain.size() >= 2 && strayEnd(lanes.edge(chain.back()), node(ge.v), false, cfg)) {
+    chain.pop_back();
+    ++strays;
+  }
+  return strays;
+}
+
+/// The SUMO edge ids of the chain with the edges that bridge consecutive ones SUMO does not
+/// connect directly; counts the pairs no bridge joins in `gaps`.
+std::vector<std::string> bridgedIds(const std::vector<int>& chain, const SumoLanes& lanes,
+                                    std::size_t& gaps) {
+  std::vector<std::string> ids;
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    if (k > 0 && !lanes.turnAllowed(chain[k - 1], chain[k])) {
+      const auto path = lanes.bridge(chain[k - 1], chain[k]);
+      if (path.empty()) ++gaps;
+      for (const auto& id : path)
+        if (id != ".") ids.push_back(id);
     }
-    // A chain should leave u and reach v. An end edge pointing the other way (a crossing road's
-    // lane arriving at u, or one leaving v, matched by the samples next to the node) is stray:
-    // its `near` end lies close to the node and closer than its other end.
-    auto stray = [&](int sumo, int node, bool arriving) {
-      const SumoEdge* e = edges[static_cast<std::size_t>(sumo)];
-      if (e->length() < cfg.stray_min_length_m || e->shape.empty()) return false;
-      const Point3& p = graph.nodes[static_cast<std::size_t>(node)].pos;
-      const double near = ((arriving ? e->shape.back() : e->shape.front()) - p).head<2>().norm();
-      const double far = ((arriving ? e->shape.front() : e->shape.back()) - p).head<2>().norm();
-      return near < std::min(cfg.stray_radius_m, far);
-    };
-    if (seq.size() >= 2 && stray(seq.front(), ge.u, /*arriving=*/true)) {
-      seq.erase(seq.begin());
-      ++strays;
-    }
-    if (seq.size() >= 2 && stray(seq.back(), ge.v, /*arriving=*/false)) {
-      seq.pop_back();
-      ++strays;
-    }
-    for (std::size_t k = 0; k < seq.size(); ++k) {
-      const SumoEdge* cur = edges[static_cast<std::size_t>(seq[k])];
-      if (k > 0) {
-        const SumoEdge* prev = edges[static_cast<std::size_t>(seq[k - 1])];
-        if (!net.turnAllowed(prev->id, cur->id)) {
-          const auto path = bridge(prev, cur);
-          if (path.empty()) ++gaps;
-          for (const auto& id : path)
-            if (id != ".") ge.sumo_edges.push_back(id);
-        }
-      }
-      ge.sumo_edges.push_back(cur->id);
-    }
+    ids.push_back(lanes.edge(chain[k]).id);
+  }
+  return ids;
+}
+
+}  // namespace
+
+std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchConfig& cfg) {
+  const SumoLanes lanes(net, std::max(cfg.max_lane_dist_m, 1.0));
+  std::size_t unmapped = 0, gaps = 0, dropped = 0, strays = 0;
+  for (auto& ge : graph.edges) {
+    EdgeRun run = sumoEdgesAlong(ge.polyline, lanes, cfg);
+    dropFlickers(run);
+    std::vector<int> chain = drivableChain(run, lanes, dropped);
+    strays += dropStrayEnds(chain, graph, ge, lanes, cfg);
+    ge.sumo_edges = bridgedIds(chain, lanes, gaps);
     if (ge.sumo_edges.empty()) ++unmapped;
   }
   if (dropped > 0)

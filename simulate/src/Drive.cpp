@@ -12,11 +12,13 @@
 #include <unordered_map>
 
 #include "DriveInternal.hpp"
+#include "RecordingSession.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/simulate/SumoSession.hpp"
 #include "slamroute/simulate/VehicleBody.hpp"
 #include "slamroute/simulate/World.hpp"
@@ -41,10 +43,7 @@ void headingsFromMotion(Trajectory& traj) {
   const std::size_t n = traj.size(), k = 5;
   if (n < 3) return;
   std::vector<double> yaw(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x_axis = traj[i].T_world_body.linear().col(0);
-    yaw[i] = std::atan2(x_axis.y(), x_axis.x());
-  }
+  for (std::size_t i = 0; i < n; ++i) yaw[i] = yawOf(traj[i].T_world_body);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t a = i >= k ? i - k : 0, b = std::min(n - 1, i + k);
     const Vec3 d = traj[b].T_world_body.translation() - traj[a].T_world_body.translation();
@@ -113,30 +112,7 @@ std::vector<VehicleBox> trafficAround(const Vec3& sensor, double range,
   return boxes;
 }
 
-}  // namespace
-
-DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edges,
-                        const Config& cfg, const LidarSpec& spec, std::uint64_t seed) {
-  const DriveConfig& dc = cfg.drive;
-  if (!(dc.record_hz > 0.0) || !(dc.step_length_s > 0.0))
-    throw std::invalid_argument("drive: record_hz and step_length_s must be > 0");
-  const int steps_per_record =
-      std::max(1, static_cast<int>(std::lround(1.0 / (dc.record_hz * dc.step_length_s))));
-  double route_len = 0.0;
-  for (const auto& e : edges) route_len += net.findEdge(e)->length();
-  const double max_time = route_len / std::max(0.1, dc.min_avg_speed_mps) + 300.0;
-  const double range = dc.traffic_range_m > 0.0 ? dc.traffic_range_m : spec.max_range_m;
-
-  SumoSessionOptions so;
-  so.net = net.source;
-  so.seed = seed;
-  so.step_length_s = dc.step_length_s;
-  so.time_to_teleport_s = dc.time_to_teleport_s;
-  // Lane changes take 2 s instead of one step, so the ground truth never jumps sideways by a lane.
-  so.extra_args = {"--lanechange.duration", "2"};
-  SumoSession sim(so);
-  const std::string where = net.source.string();
-
+void addMapper(SumoSession& sim, const std::vector<std::string>& edges, const DriveConfig& dc) {
   sim.guard("adding the mapping vehicle", [&] {
     libsumo::VehicleType::copy("DEFAULT_VEHTYPE", "mapper_type");
     libsumo::VehicleType::setSpeedDeviation("mapper_type", 0.0);
@@ -147,78 +123,135 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
     // lanes that continue its route. SUMO never leaves the route for a lane change.
     libsumo::Vehicle::setLaneChangeMode(kMapper, 0b011001000101);
   });
-  BackgroundTraffic traffic(sim, net, dc.traffic_per_km, seed, "bg");
+}
+
+/// Watches the mapping vehicle after each SUMO step: it must depart, keep to its route and arrive
+/// without a teleport; every steps_per_record steps its pose, edge and the traffic around it are
+/// recorded.
+class MapperRecorder {
+ public:
+  MapperRecorder(const SumoNet& net, const std::vector<std::string>& edges, const DriveConfig& dc,
+                 const LidarSpec& spec, double route_len)
+      : net_(net), edges_(edges), dc_(dc), spec_(spec),
+        range_(dc.traffic_range_m > 0.0 ? dc.traffic_range_m : spec.max_range_m),
+        steps_per_record_(
+            std::max(1, static_cast<int>(std::lround(1.0 / (dc.record_hz * dc.step_length_s))))),
+        progress_("drive", static_cast<std::size_t>(route_len)) {}
+
+  /// After SUMO step number `step` at time t.
+  void afterStep(long step, double t) {
+    checkNotTeleported(t);
+    if (!departed_ && contains(libsumo::Simulation::getDepartedIDList(), kMapper)) {
+      departed_ = true;
+      rec.depart_s = t - dc_.step_length_s;
+    }
+    if (contains(libsumo::Simulation::getArrivedIDList(), kMapper)) {
+      arrived = true;
+      rec.arrive_s = t;
+      return;
+    }
+    if (!departed_) {
+      if (t > 120.0)
+        throw std::runtime_error("the mapping vehicle could not be inserted on edge '" +
+                                 edges_.front() + "' within 120 s");
+      return;
+    }
+    const int ri = followRoute(step, t);
+    if (step % steps_per_record_ == 0) record(t, ri);
+  }
+
+  void finish() { progress_.finish(); }
+  const std::string& lastEdge() const { return edges_[static_cast<std::size_t>(last_route_index)]; }
 
   DriveRecord rec;
-  std::unordered_map<std::string, TypeDims> dims;
-  bool departed = false, arrived = false;
+  bool arrived = false;
   int last_route_index = 0;
-  long step = 0;
-  Progress progress("drive", static_cast<std::size_t>(route_len));
-  double progress_m = 0.0;
-  while (!arrived) {
+
+ private:
+  void checkNotTeleported(double t) const {
+    if (contains(libsumo::Simulation::getStartingTeleportIDList(), kMapper))
+      throw std::runtime_error("SUMO teleported the mapping vehicle at t=" + std::to_string(t) +
+                               " s (stuck on " + lastEdge() + "); the drive is not recorded");
+  }
+
+  /// The mapper's index on its route, checked to move only forward along the unchanged route.
+  int followRoute(long step, double t) {
+    const int ri = libsumo::Vehicle::getRouteIndex(kMapper);
+    if (ri < last_route_index || ri >= static_cast<int>(edges_.size()))
+      throw std::runtime_error("the mapping vehicle left its route at t=" + std::to_string(t) +
+                               " s");
+    if (ri != last_route_index || step % 100 == 0) {
+      if (libsumo::Vehicle::getRoute(kMapper) != edges_)
+        throw std::runtime_error("SUMO rerouted the mapping vehicle at t=" + std::to_string(t) +
+                                 " s; the drive is not recorded");
+    }
+    for (int k = last_route_index; k < ri; ++k)
+      progress_m_ += net_.findEdge(edges_[static_cast<std::size_t>(k)])->length();
+    last_route_index = ri;
+    progress_.update(static_cast<std::size_t>(progress_m_));
+    return ri;
+  }
+
+  void record(double t, int ri) {
+    const auto p = libsumo::Vehicle::getPosition3D(kMapper);
+    const Pose3 T = vehicleBodyPose(p.x, p.y, p.z, libsumo::Vehicle::getAngle(kMapper),
+                                    libsumo::Vehicle::getSlope(kMapper), spec_.mount_height_m);
+    const std::string lane = libsumo::Vehicle::getLaneID(kMapper);
+    PoseEdge pe;
+    pe.sumo_edge = edges_[static_cast<std::size_t>(ri)];
+    pe.lane_pos_m = libsumo::Vehicle::getLanePosition(kMapper);
+    if (!lane.empty() && lane[0] == ':') pe.lane_pos_m += net_.findEdge(pe.sumo_edge)->length();
+    rec.groundtruth.push_back({t, T});
+    rec.pose_edges.push_back(pe);
+    rec.traffic.push_back(trafficAround(T.translation(), range_, dims_));
+  }
+
+  const SumoNet& net_;
+  const std::vector<std::string>& edges_;
+  const DriveConfig& dc_;
+  const LidarSpec& spec_;
+  double range_;
+  int steps_per_record_;
+  Progress progress_;
+  double progress_m_ = 0.0;
+  bool departed_ = false;
+  std::unordered_map<std::string, TypeDims> dims_;
+};
+
+}  // namespace
+
+DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edges,
+                        const Config& cfg, const LidarSpec& spec, std::uint64_t seed) {
+  const DriveConfig& dc = cfg.drive;
+  if (!(dc.record_hz > 0.0) || !(dc.step_length_s > 0.0))
+    throw std::invalid_argument("drive: record_hz and step_length_s must be > 0");
+  double route_len = 0.0;
+  for (const auto& e : edges) route_len += net.findEdge(e)->length();
+  const double max_time = route_len / std::max(0.1, dc.min_avg_speed_mps) + 300.0;
+  SumoSession sim(
+      recordingSessionOptions(net.source, seed, dc.step_length_s, dc.time_to_teleport_s));
+  const std::string where = net.source.string();
+  addMapper(sim, edges, dc);
+  BackgroundTraffic traffic(sim, net, dc.traffic_per_km, seed, "bg");
+
+  MapperRecorder mapper(net, edges, dc, spec, route_len);
+  for (long step = 1; !mapper.arrived; ++step) {
     traffic.update();
     sim.step();
-    ++step;
     const double t = sim.time();
-    sim.guard("following the mapping vehicle", [&] {
-      if (contains(libsumo::Simulation::getStartingTeleportIDList(), kMapper))
-        throw std::runtime_error(
-            "SUMO teleported the mapping vehicle at t=" + std::to_string(t) + " s (stuck on " +
-            edges[static_cast<std::size_t>(last_route_index)] + "); the drive is not recorded");
-      if (!departed && contains(libsumo::Simulation::getDepartedIDList(), kMapper)) {
-        departed = true;
-        rec.depart_s = t - dc.step_length_s;
-      }
-      if (contains(libsumo::Simulation::getArrivedIDList(), kMapper)) {
-        arrived = true;
-        rec.arrive_s = t;
-        return;
-      }
-      if (!departed) {
-        if (t > 120.0)
-          throw std::runtime_error("the mapping vehicle could not be inserted on edge '" +
-                                   edges.front() + "' within 120 s");
-        return;
-      }
-      const int ri = libsumo::Vehicle::getRouteIndex(kMapper);
-      if (ri < last_route_index || ri >= static_cast<int>(edges.size()))
-        throw std::runtime_error("the mapping vehicle left its route at t=" + std::to_string(t) +
-                                 " s");
-      if (ri != last_route_index || step % 100 == 0) {
-        if (libsumo::Vehicle::getRoute(kMapper) != edges)
-          throw std::runtime_error("SUMO rerouted the mapping vehicle at t=" + std::to_string(t) +
-                                   " s; the drive is not recorded");
-      }
-      for (int k = last_route_index; k < ri; ++k)
-        progress_m += net.findEdge(edges[static_cast<std::size_t>(k)])->length();
-      last_route_index = ri;
-      progress.update(static_cast<std::size_t>(progress_m));
-      if (step % steps_per_record != 0) return;
-
-      const auto p = libsumo::Vehicle::getPosition3D(kMapper);
-      const Pose3 T = vehicleBodyPose(p.x, p.y, p.z, libsumo::Vehicle::getAngle(kMapper),
-                                 libsumo::Vehicle::getSlope(kMapper), spec.mount_height_m);
-      const std::string lane = libsumo::Vehicle::getLaneID(kMapper);
-      PoseEdge pe;
-      pe.sumo_edge = edges[static_cast<std::size_t>(ri)];
-      pe.lane_pos_m = libsumo::Vehicle::getLanePosition(kMapper);
-      if (!lane.empty() && lane[0] == ':') pe.lane_pos_m += net.findEdge(pe.sumo_edge)->length();
-      rec.groundtruth.push_back({t, T});
-      rec.pose_edges.push_back(pe);
-      rec.traffic.push_back(trafficAround(T.translation(), range, dims));
-    });
-    if (!arrived && t > max_time)
+    sim.guard("following the mapping vehicle", [&] { mapper.afterStep(step, t); });
+    if (!mapper.arrived && t > max_time)
       throw std::runtime_error(where + ": the mapping vehicle did not finish the route within " +
                                std::to_string(static_cast<int>(max_time)) + " s (at edge '" +
-                               edges[static_cast<std::size_t>(last_route_index)] + "')");
+                               mapper.lastEdge() + "')");
   }
-  progress.finish();
-  if (last_route_index != static_cast<int>(edges.size()) - 1)
+  mapper.finish();
+  if (mapper.last_route_index != static_cast<int>(edges.size()) - 1)
     throw std::runtime_error(where +
                              ": the mapping vehicle left the simulation before the end of "
                              "its route (last edge '" +
-                             edges[static_cast<std::size_t>(last_route_index)] + "')");
+                             mapper.lastEdge() + "')");
+  DriveRecord rec = std::move(mapper.rec);
   if (rec.groundtruth.size() < 2)
     throw std::runtime_error(where + ": the route is too short to record a trajectory");
   headingsFromMotion(rec.groundtruth);

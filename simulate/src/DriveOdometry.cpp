@@ -4,6 +4,7 @@
 #include <numbers>
 #include <random>
 
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/simulate/Drive.hpp"
 
 namespace slamroute::simulate {
@@ -25,7 +26,7 @@ WheelOdometry simulateOdometry(const Trajectory& gt, const DriveConfig& cfg, std
     const double dt = gt[k + 1].t - gt[k].t;
     if (!(dt > 0)) continue;
     const Pose3 d = gt[k].T_world_body.inverse() * gt[k + 1].T_world_body;
-    const double yaw = std::atan2(d.rotation()(1, 0), d.rotation()(0, 0));
+    const double yaw = yawOf(d);
     OdometrySample s;
     s.t = gt[k].t;
     // Forward speed: the wheels measure the distance rolled (signed along the heading).

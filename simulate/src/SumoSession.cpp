@@ -1,6 +1,8 @@
 // SumoSession: one libsumo simulation per process, opened and closed by RAII.
 #include "slamroute/simulate/SumoSession.hpp"
 
+#include "RecordingSession.hpp"
+
 #include <libsumo/libsumo.h>
 
 #include <atomic>
@@ -108,6 +110,17 @@ Pose3 vehicleBodyPose(double x, double y, double z, double sumo_angle_deg, doubl
                    .toRotationMatrix();
   T.translation() = Vec3(x, y, z + height_m);
   return T;
+}
+
+SumoSessionOptions recordingSessionOptions(const std::filesystem::path& net, std::uint64_t seed,
+                                           double step_length_s, double time_to_teleport_s) {
+  SumoSessionOptions so;
+  so.net = net;
+  so.seed = seed;
+  so.step_length_s = step_length_s;
+  so.time_to_teleport_s = time_to_teleport_s;
+  so.extra_args = {"--lanechange.duration", "2"};
+  return so;
 }
 
 }  // namespace slamroute::simulate

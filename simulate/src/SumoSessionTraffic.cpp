@@ -1,5 +1,5 @@
 // BackgroundTraffic: random trips generated in C++ from the seed, kept at a steady density.
-// Choice (the issue says "SUMO's random trips"): instead of calling randomTrips.py (Python, a
+// Choice: random trips as SUMO's randomTrips.py makes them, but instead of calling it (Python, a
 // second process, files) we draw origin/destination edges ourselves and let SUMO's router find
 // the route (Simulation::findRoute), which is what randomTrips + duarouter would do.
 #include <libsumo/libsumo.h>

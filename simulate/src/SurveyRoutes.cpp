@@ -1,5 +1,5 @@
 // coveringRoutes: a greedy set of drivable routes that together visit (nearly) every edge.
-// The issue allows "random valid routes (or a covering set)": random trips leave short side
+// Covering routes rather than random trips alone: random trips leave short side
 // streets and dead ends unvisited for a long time, so survey vehicles drive covering routes and
 // random background traffic adds the remaining variety.
 #include <limits>

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "slamroute/core/Yaw.hpp"
+
 namespace slamroute::simulate {
 
 namespace {
@@ -37,11 +39,6 @@ void advance(Axis& a, double u0, double u1, double d, double dt, double hz, doub
     a.v += (w * w * (u + d - a.x) + 2 * zeta * w * (du - a.v)) * h;
     a.x += a.v * h;
   }
-}
-
-double yawOf(const Pose3& T) {
-  const Vec3 x = T.linear().col(0);
-  return std::atan2(x.y(), x.x());
 }
 
 /// Height of the carriageway under a wheel, or NaN where the wheel is over something else (a

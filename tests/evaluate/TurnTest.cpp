@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "SyntheticScene.hpp"
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/evaluate/Slam.hpp"
 
@@ -47,22 +49,6 @@ double finalYawErrorDeg(const SlamResult& r) {
   return Eigen::AngleAxisd(err.rotation()).angle() / kDeg;
 }
 
-TEST(Turn, EveryScanWhileTurningFast) {
-  const UTurnSource src;
-  Config cfg;
-  cfg.loop.enabled = false;
-  ASSERT_EQ(cfg.input.scan_stride, 2);
-  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
-  // Every scan of the turn (t = 2.1 ... 4.0) is used; fewer than all 60 overall.
-  int in_turn = 0;
-  for (const auto& p : r.trajectory) in_turn += p.t > 2.05 && p.t < 4.05;
-  EXPECT_EQ(in_turn, 20);
-  EXPECT_LT(r.trajectory.size(), 58u);
-  EXPECT_LT(finalYawErrorDeg(r), 1.0);
-  const Vec3 d = r.trajectory.back().T_world_body.translation() - UTurnSource::pose(59).translation();
-  EXPECT_LT(d.norm(), 0.3) << d.transpose();
-}
-
 TEST(Turn, FixedStrideTakesHalfTheScans) {
   const UTurnSource src;
   Config cfg;
@@ -78,47 +64,73 @@ WheelOdometry uTurnOdometry() {
   std::vector<OdometrySample> s;
   for (std::size_t i = 0; i + 1 < 60; ++i) {
     const Pose3 d = UTurnSource::pose(i).inverse() * UTurnSource::pose(i + 1);
-    s.push_back({0.1 * static_cast<double>(i), d.translation().norm() / 0.1,
-                 std::atan2(d.rotation()(1, 0), d.rotation()(0, 0)) / 0.1});
+    s.push_back({0.1 * static_cast<double>(i), d.translation().norm() / 0.1, yawOf(d) / 0.1});
   }
   return WheelOdometry(std::move(s));
 }
 
-// An open field: the LiDAR sees only the flat ground, which fixes height, roll and pitch but
-// nothing of x, y and yaw. Without odometry the estimate drives on straight through the U-turn;
-// with the wheel odometry + gyro it turns with the car.
-TEST(Turn, UTurnInAnOpenFieldFollowsTheWheelOdometry) {
-  test::Scene field;  // ground only
-  const UTurnSource src(field);
+/// How the U-turn is run: with or without the wheel odometry + gyro, and whether the config lets
+/// the SLAM use it.
+struct OdometryCase {
+  std::string name;
+  bool give_odometry;
+  bool use_wheel_odometry;
+  bool turnsWithTheCar() const { return give_odometry && use_wheel_odometry; }
+};
+
+SlamResult runUTurn(const UTurnSource& src, const OdometryCase& c) {
   Config cfg;
   cfg.loop.enabled = false;
-  const Pose3 T0 = UTurnSource::pose(0), V0 = T0.inverse() * UTurnSource::pose(1);
-  const SlamResult blind = runSlam(src, cfg, T0, {}, V0);
-  EXPECT_GT(finalYawErrorDeg(blind), 90.0);
+  cfg.odometry.use_wheel_odometry = c.use_wheel_odometry;
   const WheelOdometry odo = uTurnOdometry();
-  const SlamResult aided = runSlam(src, cfg, T0, {}, V0, &odo);
-  EXPECT_LT(finalYawErrorDeg(aided), 1.0);
-  const auto& last = aided.trajectory.back();  // scan 58 or 59 (stride 2 on the straight)
-  const Vec3 d = last.T_world_body.translation() -
-                 UTurnSource::pose(static_cast<std::size_t>(std::lround(last.t / 0.1))).translation();
-  EXPECT_LT(d.norm(), 0.2) << d.transpose();
-  // use_odometry: false ignores it.
-  cfg.odometry.use_wheel_odometry = false;
-  EXPECT_GT(finalYawErrorDeg(runSlam(src, cfg, T0, {}, V0, &odo)), 90.0);
+  const Pose3 T0 = UTurnSource::pose(0), V0 = T0.inverse() * UTurnSource::pose(1);
+  return runSlam(src, cfg, T0, {}, V0, c.give_odometry ? &odo : nullptr);
 }
 
-// In a street with features the odometry only seeds the registration: the result is as good.
-TEST(Turn, OdometryKeepsTheUTurnInTheCityAccurate) {
-  const UTurnSource src;
-  Config cfg;
-  cfg.loop.enabled = false;
-  const WheelOdometry odo = uTurnOdometry();
-  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {},
-                               UTurnSource::pose(0).inverse() * UTurnSource::pose(1), &odo);
+std::string caseName(const ::testing::TestParamInfo<OdometryCase>& info) { return info.param.name; }
+
+const OdometryCase kLidarOnly{"LidarOnly", false, true};
+const OdometryCase kWithOdometry{"WithOdometry", true, true};
+const OdometryCase kOdometryIgnored{"OdometryIgnored", true, false};
+
+// In a street with features the odometry only seeds the registration: with it or without, every
+// scan of the turn is used and the heading and position stay right.
+class UTurnInTheCity : public ::testing::TestWithParam<OdometryCase> {};
+
+TEST_P(UTurnInTheCity, TakesEveryScanOfTheTurnAndKeepsTheHeading) {
+  const SlamResult r = runUTurn(UTurnSource(), GetParam());
+  // Every scan of the turn (t = 2.1 ... 4.0) is used; fewer than all 60 overall.
+  int in_turn = 0;
+  for (const auto& p : r.trajectory) in_turn += p.t > 2.05 && p.t < 4.05;
+  EXPECT_EQ(in_turn, 20);
+  EXPECT_LT(r.trajectory.size(), 58u);
   EXPECT_LT(finalYawErrorDeg(r), 1.0);
   const Vec3 d = r.trajectory.back().T_world_body.translation() - UTurnSource::pose(59).translation();
   EXPECT_LT(d.norm(), 0.3) << d.transpose();
 }
+
+INSTANTIATE_TEST_SUITE_P(Turn, UTurnInTheCity, ::testing::Values(kLidarOnly, kWithOdometry), caseName);
+
+// An open field: the LiDAR sees only the flat ground, which fixes height, roll and pitch but
+// nothing of x, y and yaw. Without odometry (or with use_wheel_odometry: false) the estimate
+// drives on straight through the U-turn; with the wheel odometry + gyro it turns with the car.
+class UTurnInAnOpenField : public ::testing::TestWithParam<OdometryCase> {};
+
+TEST_P(UTurnInAnOpenField, TurnsOnlyWithTheWheelOdometry) {
+  const SlamResult r = runUTurn(UTurnSource(test::Scene{}), GetParam());
+  if (!GetParam().turnsWithTheCar()) {
+    EXPECT_GT(finalYawErrorDeg(r), 90.0);
+    return;
+  }
+  EXPECT_LT(finalYawErrorDeg(r), 1.0);
+  const auto& last = r.trajectory.back();  // scan 58 or 59 (stride 2 on the straight)
+  const Vec3 d = last.T_world_body.translation() -
+                 UTurnSource::pose(static_cast<std::size_t>(std::lround(last.t / 0.1))).translation();
+  EXPECT_LT(d.norm(), 0.2) << d.transpose();
+}
+
+INSTANTIATE_TEST_SUITE_P(Turn, UTurnInAnOpenField,
+                         ::testing::Values(kLidarOnly, kWithOdometry, kOdometryIgnored), caseName);
 
 }  // namespace
 }  // namespace slamroute::evaluate

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "RlTestUtil.hpp"
+#include "slamroute/core/FleetRoute.hpp"
 
 namespace slamroute::rl {
 namespace {
@@ -84,6 +85,32 @@ TEST_F(PlanCli, BadInputGivesOneLineErrors) {
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.output.find("start node 77"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(PlanCli, VehiclesWriteOneRoutePerVehicleAndAFleetRouXml) {
+  const fs::path net = test::defaultCityNet();
+  const fs::path out = dir_ / "fleet_route.json";
+  const auto r = runCli("--log-level error plan --net " + net.string() +
+                        " --planner partition --vehicles 3 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const FleetRoute f = FleetRoute::readJson(out);
+  ASSERT_EQ(f.vehicles.size(), 3u);
+  EXPECT_DOUBLE_EQ(f.edge_coverage_pct, 100.0);
+  EXPECT_GE(f.makespan_m, f.lower_bound_m);
+  std::ifstream rou(dir_ / "fleet_route.rou.xml");
+  std::stringstream xml;
+  xml << rou.rdbuf();
+  for (const char* id : {"mapper_0", "mapper_1", "mapper_2"})
+    EXPECT_NE(xml.str().find(std::string("<vehicle id=\"") + id + "\""), std::string::npos);
+}
+
+TEST_F(PlanCli, UnknownDepotEdgeIsAOneLineError) {
+  const auto r = runCli("--log-level error plan --net " + test::defaultCityNet().string() +
+                        " --planner postman --vehicles 2 --depot no_such_edge --out " +
+                        (dir_ / "fleet_bad.json").string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("depot edge 'no_such_edge'"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "fleet_bad.json"));
 }
 
 }  // namespace

@@ -67,18 +67,6 @@ TEST(QLearning, AccuracyRewardPrefersGoodStreets) {
   EXPECT_EQ(test::extra(r)["reward"], "accuracy");
 }
 
-void coversNet(const std::filesystem::path& net) {
-  if (!std::filesystem::exists(net)) GTEST_SKIP() << net << " missing";
-  const Route r = plan(test::netGraph(net), qCfg(), 42, net.string());
-  EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
-  EXPECT_EQ(test::extra(r)["illegal_turns"].get<int>(), 0);
-  EXPECT_FALSE(r.sumo_edges.empty());
-}
-
-TEST(QLearning, CoversBologna) { coversNet(test::bolognaNet()); }
-TEST(QLearning, CoversIngolstadt) { coversNet(test::ingolstadtNet()); }
-TEST(QLearning, CoversDefaultCity) { coversNet(test::defaultCityNet()); }
-
 TEST(QLearning, EpisodesReachTheGoalOnBologna) {
   // Bologna (72 junctions, 115 edges on its drivable part): with the paper's setting (uniform
   // exploration from the start, cap 4 x edges) no training episode visits every node; exploring

@@ -23,7 +23,7 @@ std::size_t countStreets(const RoadGraph& g) {
 }
 
 TEST(GraphBuilder, PlusHasOneIntersectionFourStreetsFourDeadEnds) {
-  const auto r = buildRoadGraph(makeTraces(plusRoads()), Config{});
+  const auto r = graphFromTraces(makeTraces(plusRoads()), Config{});
   EXPECT_EQ(r.stats.intersections, 1u);
   EXPECT_EQ(r.stats.dead_ends, 4u);
   EXPECT_EQ(countStreets(r.graph), 4u);
@@ -43,7 +43,7 @@ TEST(GraphBuilder, PlusHasOneIntersectionFourStreetsFourDeadEnds) {
 TEST(GraphBuilder, ClosedGridHasFiveNodesAndEightStreets) {
   // 3x3 junction grid whose outer lines end at the corners: corners are bends, not nodes, so the
   // graph is the centre crossing, 4 T junctions, 4 spokes and 4 ring streets round the corners.
-  const auto r = buildRoadGraph(makeTraces(gridRoads(3, 100, 0)), Config{});
+  const auto r = graphFromTraces(makeTraces(gridRoads(3, 100, 0)), Config{});
   EXPECT_EQ(r.stats.intersections, 5u);
   EXPECT_EQ(r.stats.dead_ends, 0u);
   EXPECT_EQ(countStreets(r.graph), 8u);
@@ -54,7 +54,7 @@ TEST(GraphBuilder, ClosedGridHasFiveNodesAndEightStreets) {
 }
 
 TEST(GraphBuilder, GridWithOverhangHasNineIntersectionsAndTwelveDeadEnds) {
-  const auto r = buildRoadGraph(makeTraces(gridRoads(3, 100, 50), 1.0, 11), Config{});
+  const auto r = graphFromTraces(makeTraces(gridRoads(3, 100, 50), 1.0, 11), Config{});
   EXPECT_EQ(r.stats.intersections, 9u);
   EXPECT_EQ(r.stats.dead_ends, 12u);
   EXPECT_EQ(countStreets(r.graph), 24u);
@@ -66,7 +66,7 @@ TEST(GraphBuilder, OneWayStreetIsOneDirectedEdge) {
   std::vector<Road> roads = {{line({-100, 0, 0}, {0, 0, 0})},
                              {line({0, 0, 0}, {100, 0, 0}), /*two_way=*/false},
                              {line({0, -100, 0}, {0, 100, 0})}};
-  const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3), Config{});
+  const auto r = graphFromTraces(makeTraces(roads, 0.5, 3), Config{});
   EXPECT_EQ(r.stats.one_way_streets, 1u);
   EXPECT_EQ(r.graph.edges.size(), 7u);
   int east = 0;
@@ -87,7 +87,7 @@ TEST(GraphBuilder, DeadEndDrivenInAndBackInOneRunIsTwoWay) {
   std::vector<Road> roads = {{line({-100, 0, 0}, {0, 0, 0})},
                              {{{0, 0, 0}, {100, 0, 0}, {0, 0, 0}}, /*two_way=*/false},
                              {line({0, -100, 0}, {0, 100, 0})}};
-  const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3), Config{});
+  const auto r = graphFromTraces(makeTraces(roads, 0.5, 3), Config{});
   EXPECT_EQ(r.stats.one_way_streets, 0u);
   EXPECT_EQ(r.graph.edges.size(), 8u);
 }
@@ -99,7 +99,7 @@ TEST(GraphBuilder, CornerNoVehicleDroveRoundKeepsItsStreetsConnected) {
                                    {line({0, -100, 0}, {0, 100, 0})},
                                    {line({108, 10, 0}, {108, 200, 0})}};
   const auto tr = makeTraces(roads, 0.5, 3);
-  const auto r = buildRoadGraph(tr, Config{});
+  const auto r = graphFromTraces(tr, Config{});
   EXPECT_EQ(r.stats.merged_end_pairs, 1u);
   EXPECT_EQ(r.stats.dead_ends, 5u);  // west, south, north, top of the north street, corner
   EXPECT_EQ(countStreets(r.graph), 5u);
@@ -115,7 +115,7 @@ TEST(GraphBuilder, CornerNoVehicleDroveRoundKeepsItsStreetsConnected) {
 
   Config off;
   off.edges.end_merge_m = 0.0;
-  const auto apart = buildRoadGraph(tr, off);
+  const auto apart = graphFromTraces(tr, off);
   EXPECT_EQ(apart.stats.merged_end_pairs, 0u);
   EXPECT_EQ(apart.stats.dead_ends, 6u);
 }
@@ -147,7 +147,7 @@ TEST(GraphBuilder, StreetWhoseLanesJoinOnlyNearOneEndIsOneTwoWayStreet) {
       {line({200, 0, 0}, {300, 0, 0})},
       {{{0, -h, 0}, {170, -h, 0}, {200, 0, 0}}, /*two_way=*/false},  // eastbound lane
       {{{200, 0, 0}, {170, h, 0}, {0, h, 0}}, /*two_way=*/false}};   // westbound lane
-  const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3), Config{});
+  const auto r = graphFromTraces(makeTraces(roads, 0.5, 3), Config{});
   const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 200, 0);
   ASSERT_GE(a, 0);
   ASSERT_GE(b, 0);
@@ -172,7 +172,7 @@ TEST(GraphBuilder, JunctionsCloserThanTheClearedRadiiAreLinked) {
                                      {line({0, -100, 0}, {0, 100, 0})},
                                      {line({26, -100, 0}, {26, 100, 0})}};
     const Traces tr = makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2);  // 2 vehicles per direction
-    const auto r = buildRoadGraph(tr, Config{});
+    const auto r = graphFromTraces(tr, Config{});
     const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 26, 0);
     ASSERT_GE(a, 0) << "two_way " << two_way;
     ASSERT_GE(b, 0) << "two_way " << two_way;
@@ -181,7 +181,7 @@ TEST(GraphBuilder, JunctionsCloserThanTheClearedRadiiAreLinked) {
     EXPECT_EQ(r.stats.short_links, 1u);
     Config off;
     off.edges.link_max_m = 0.0;
-    const auto apart = buildRoadGraph(tr, off);
+    const auto apart = graphFromTraces(tr, off);
     EXPECT_EQ(apart.stats.short_links, 0u);
     EXPECT_FALSE(hasEdge(apart.graph, a, b));
   }
@@ -198,7 +198,7 @@ TEST(GraphBuilder, ShortStreetGetsItsDirectionsFromDrivesBetweenItsJunctions) {
                                      {line({30, 0, 0}, {130, 0, 0})},
                                      {line({0, -100, 0}, {0, 100, 0})},
                                      {line({30, -100, 0}, {30, 100, 0})}};
-    const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
+    const auto r = graphFromTraces(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
     const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 30, 0);
     ASSERT_GE(a, 0) << "two_way " << two_way;
     ASSERT_GE(b, 0) << "two_way " << two_way;
@@ -222,7 +222,7 @@ TEST(GraphBuilder, StreetRunningThroughAJunctionWhoseNodeLiesOffItIsSplitThere) 
         {line({200, -100, 0}, {200, 100, 0})}, {line({100, 15, 0}, {100, 150, 0})},
         {line({100, 15, 0}, {170, 99, 0})},    {line({100, 15, 0}, {30, 99, 0})}};
     if (connected) roads.push_back({line({100, 0, 0}, {100, 15, 0})});
-    const auto r = buildRoadGraph(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
+    const auto r = graphFromTraces(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
     const int a = intersectionNear(r, 0, 0), b = intersectionNear(r, 200, 0);
     int h = -1;
     for (std::size_t n = 0; n < r.graph.nodes.size(); ++n)
@@ -250,7 +250,7 @@ TEST(GraphBuilder, OverpassStreetPassesUnderTheBridge) {
   const std::vector<Road> roads = {{line({-150, 0, 0}, {250, 0, 0})},
                                    {bridge},
                                    {line({120, -100, 0}, {120, 100, 0})}};
-  const auto r = buildRoadGraph(makeTraces(roads, 0.5, 5), Config{});
+  const auto r = graphFromTraces(makeTraces(roads, 0.5, 5), Config{});
   EXPECT_EQ(r.stats.intersections, 1u);
   // Bridge (isolated, 2 dead ends), west street to the junction (1 dead end), 3 other arms.
   EXPECT_EQ(r.stats.dead_ends, 2u + 1u + 3u);
@@ -259,8 +259,8 @@ TEST(GraphBuilder, OverpassStreetPassesUnderTheBridge) {
 
 TEST(GraphBuilder, SameInputSameGraph) {
   const auto tr = makeTraces(gridRoads(3, 100, 50), 1.0, 5);
-  const auto a = buildRoadGraph(tr, Config{});
-  const auto b = buildRoadGraph(tr, Config{});
+  const auto a = graphFromTraces(tr, Config{});
+  const auto b = graphFromTraces(tr, Config{});
   ASSERT_EQ(a.graph.edges.size(), b.graph.edges.size());
   for (std::size_t k = 0; k < a.graph.edges.size(); ++k) {
     EXPECT_EQ(a.graph.edges[k].u, b.graph.edges[k].u);
@@ -272,25 +272,25 @@ TEST(GraphBuilder, BadTracesThrowClearly) {
   Traces empty;
   empty.source = "empty.csv";
   try {
-    buildRoadGraph(empty, Config{});
+    graphFromTraces(empty, Config{});
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("empty"), std::string::npos) << e.what();
   }
   Traces one = makeTraces({{line({0, 0, 0}, {0.5, 0, 0}), false}});
   ASSERT_EQ(one.points.size(), 1u);
-  EXPECT_THROW(buildRoadGraph(one, Config{}), std::invalid_argument);
+  EXPECT_THROW(graphFromTraces(one, Config{}), std::invalid_argument);
   Traces nan = makeTraces(plusRoads());
   nan.points[10].pos.y() = std::numeric_limits<double>::quiet_NaN();
   try {
-    buildRoadGraph(nan, Config{});
+    graphFromTraces(nan, Config{});
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("NaN"), std::string::npos) << e.what();
   }
   // A single straight street has no intersection.
   try {
-    buildRoadGraph(makeTraces({{line({0, 0, 0}, {300, 0, 0})}}), Config{});
+    graphFromTraces(makeTraces({{line({0, 0, 0}, {300, 0, 0})}}), Config{});
     FAIL();
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("no intersection"), std::string::npos) << e.what();

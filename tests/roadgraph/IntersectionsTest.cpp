@@ -29,7 +29,7 @@ IntersectionResult detect(const Traces& tr, const NodeConfig& cfg = {}) {
   return detectIntersections(downsample(positions(tr), cfg.downsample_m).points, cfg);
 }
 
-/// As detect(), with the travel axes from the traces (as buildRoadGraph does).
+/// As detect(), with the travel axes from the traces (as graphFromTraces does).
 IntersectionResult detectWithAxes(const Traces& tr, const NodeConfig& cfg = {}) {
   const auto travel = travelDirections(tr, cfg.travel_span_m, 3.0);
   const auto ds = downsample(positions(tr), cfg.downsample_m, &travel);

@@ -91,7 +91,7 @@ TEST(Roundabouts, CrossingWithTurningTrafficIsNoRoundabout) {
     }
   const Traces tr = makeTraces(drives, 0.3, 5, 1.0, 3);
   EXPECT_TRUE(detect(tr).empty());
-  const auto r = buildRoadGraph(tr, Config{});
+  const auto r = graphFromTraces(tr, Config{});
   EXPECT_EQ(r.stats.roundabouts, 0u);
   EXPECT_EQ(r.stats.intersections, 1u);
 }
@@ -110,7 +110,7 @@ TEST(Roundabouts, BadConfigThrowsClearly) {
   EXPECT_THROW(detect(tr, cfg), std::invalid_argument);
   cfg = Config{};
   cfg.roundabouts.ring_width_m = 0.0;
-  EXPECT_THROW(buildRoadGraph(tr, cfg), std::invalid_argument);
+  EXPECT_THROW(graphFromTraces(tr, cfg), std::invalid_argument);
 }
 
 TEST(Roundabouts, GraphHasTheRingJunctionsLinkedOneWayRoundTheRing) {
@@ -118,7 +118,7 @@ TEST(Roundabouts, GraphHasTheRingJunctionsLinkedOneWayRoundTheRing) {
   // street to it, and the ring between consecutive junctions driven counter-clockwise only.
   const std::vector<double> arms = {0, 90, 180, 270};
   const Traces tr = makeTraces(roundaboutDrives(12.0, arms), 0.3, 5, 1.0, 2);
-  const auto r = buildRoadGraph(tr, Config{});
+  const auto r = graphFromTraces(tr, Config{});
   EXPECT_EQ(r.stats.roundabouts, 1u);
   ASSERT_EQ(r.roundabouts.size(), 1u);
   EXPECT_EQ(r.roundabouts[0].junctions.size(), arms.size());

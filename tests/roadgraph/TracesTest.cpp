@@ -68,7 +68,7 @@ TEST(Traces, TheGraphDoesNotDependOnTheRowOrder) {
     EXPECT_EQ(a.points[i].t, b.points[i].t) << i;
     EXPECT_EQ(a.points[i].pos, b.points[i].pos) << i;
   }
-  const auto ga = buildRoadGraph(a, Config{}).graph, gb = buildRoadGraph(b, Config{}).graph;
+  const auto ga = graphFromTraces(a, Config{}).graph, gb = graphFromTraces(b, Config{}).graph;
   EXPECT_EQ(ga.nodes.size(), gb.nodes.size());
   EXPECT_EQ(ga.edges.size(), gb.edges.size());
   EXPECT_DOUBLE_EQ(ga.totalLength(), gb.totalLength());

@@ -2,7 +2,7 @@
 // Keyframe clouds of a SLAM run, appended once and read back by number (loop-closure submaps,
 // the final map). In memory, or in an unnamed temporary file in a given folder: a keyframe's
 // 0.2 m cloud is ~47 kB, a 75 km drive has ~36,000 keyframes, and with the clouds on disk the
-// run's resident memory no longer grows by them (the page cache serves the reads; the file
+// run's resident memory does not grow by them (the page cache serves the reads; the file
 // disappears with the process, even when it is killed).
 #include <cstddef>
 #include <cstdint>

@@ -194,7 +194,7 @@ struct OutputConfig {
   /// holds one tile's voxels, not the whole map's. Same map points for any size [m].
   double map_tile_m = 400.0;
   /// Keyframe clouds in an unnamed file in the output folder instead of memory: same results,
-  /// resident memory no longer grows by ~47 kB per keyframe.
+  /// resident memory does not grow by ~47 kB per keyframe.
   bool keyframe_clouds_on_disk = true;
 };
 

@@ -27,7 +27,7 @@ nlohmann::json reliabilityJson(const SlamResult& r);
 
 /// Disk an evaluation of a drive of `route_km` needs in its output folder [GB = 10^9 bytes]:
 /// map.pcd (~6.6 MB/km) and, with cfg.output.keyframe_clouds_on_disk, the keyframe clouds' file while
-/// the SLAM runs (~23 MB/km; bench/RESULTS.md "Memory of a SLAM run"), or, with the clouds in
+/// the SLAM runs (~23 MB/km; bench/RESULTS.md "SLAM memory"), or, with the clouds in
 /// memory, twice map.pcd (its tiles wait in a file until it is written). evaluateDrive warns
 /// when the folder has less free.
 double evaluationDiskGb(double route_km, const Config& cfg);

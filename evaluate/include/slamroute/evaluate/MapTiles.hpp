@@ -2,7 +2,7 @@
 // The SLAM map (every keyframe's cloud at its optimised pose, voxel-filtered) built tile by tile
 // and handed to a sink, so that neither the map nor its voxel cells are ever whole in memory:
 // a 75 km drive's map is 40.7 M points, and merging it at once peaked at 2.7 GB
-// (bench/RESULTS.md "Memory of a SLAM run"). A tile holds the voxels of a square of
+// (bench/RESULTS.md "SLAM memory"). A tile holds the voxels of a square of
 // cfg.output.map_tile_m; each voxel's points are summed in keyframe order, so every map point is bit for
 // bit the one voxelFilter gives over all clouds joined (the order of the points is tile by tile).
 #include <Eigen/Geometry>

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "slamroute/rl/CoverageConfig.hpp"
+#include "slamroute/rl/FleetConfig.hpp"
 
 namespace slamroute::rl {
 
@@ -155,6 +156,7 @@ struct Config {
   TspConfig tsp;
   PostmanConfig postman;
   CoverageConfig coverage;  ///< aco-ga and its baselines
+  FleetConfig fleet;        ///< several vehicles (Fleet.hpp)
 };
 
 template <class V>
@@ -170,6 +172,7 @@ void visitFields(V& v, Config& c) {
   v.section("tsp", c.tsp);
   v.section("postman", c.postman);
   v.section("coverage", c.coverage);
+  v.section("fleet", c.fleet);
 }
 
 }  // namespace slamroute::rl

@@ -23,8 +23,12 @@ struct BuildOutput {
   GraphBuildResult built;  ///< built.graph carries weights, sumo_edges and metadata_json
   WeightStats weights;
   std::optional<ValidationResult> validation;
+  std::optional<ValidationResult> place_validation;  ///< divided roads as one street
 };
-BuildOutput buildGraph(const BuildInputs& in, const Config& cfg);
+/// Reads the inputs, builds the road graph from the traces (graphFromTraces), weights its edges
+/// from the depth frames, validates it against the net and maps it onto the net's edges (when
+/// given), and records all of it in the graph's metadata.
+BuildOutput buildGraphFromInputs(const BuildInputs& in, const Config& cfg);
 
 /// GRAPH.json, GRAPH.geojson, GRAPH.graphml and GRAPH.png: the files writeGraphOutputs replaces.
 std::vector<std::filesystem::path> graphOutputPaths(const std::filesystem::path& json_path);

@@ -114,7 +114,7 @@ struct EdgeConfig {
   bool split_at_passed_nodes = true;  ///< split a street cluster at a junction it runs through
   /// Links between junctions too close for a street to survive the clearing (ShortLinks.cpp):
   /// A vehicle this close to a node passes its junction [m]. 12 m = clear_radius_m: the node of a
-  /// big junction lies up to 10-15 m from the lanes through it (Bologna 27: 8 m lost its link).
+  /// big junction lies up to 10-15 m from the lanes through it, so 8 m misses links there.
   double link_visit_m = 12.0;
   double link_max_m = 30.0;   ///< nodes farther apart are never linked this way [m]
   int min_link_vehicles = 2;  ///< vehicles needed to accept a direction of a link
@@ -141,6 +141,32 @@ void visitFields(V& v, EdgeConfig& c) {
           "junctions at most this far apart are linked when vehicles drive from one straight to "
           "the other without a street point in between (0 = off) [m]");
   v.field("min_link_vehicles", c.min_link_vehicles, "vehicles needed per direction of a link");
+}
+
+/// Divided roads (DividedRoads.cpp): the nodes on the two carriageways of a divided road where a
+/// street crosses it are one node, and the two carriageways one street with two directions.
+struct DividedRoadConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
+  bool enabled = true;
+  /// Carriageway nodes at most this far apart can be one place [m]. 32 m: carriageways are
+  /// 10-25 m apart and their nodes stand up to ~3 m outside them (the votes of the crossing
+  /// street pull them out).
+  double max_node_gap_m = 32.0;
+  double min_offset_m = 4.0;         ///< the partner lies at least this far beside the arm [m]
+  double max_along_m = 15.0;         ///< ... and at most this far ahead of / behind the node [m]
+  double arm_length_m = 25.0;        ///< an arm's direction from the node to this far along [m]
+  double parallel_angle_deg = 20.0;  ///< the two carriageways' arms are parallel within [deg]
+};
+template <class V>
+void visitFields(V& v, DividedRoadConfig& c) {
+  v.field("enabled", c.enabled, "merge the carriageway nodes of divided roads into one place");
+  v.field("max_node_gap_m", c.max_node_gap_m,
+          "carriageway nodes at most this far apart can be one place [m]");
+  v.field("min_offset_m", c.min_offset_m, "the partner lies at least this far beside the arm [m]");
+  v.field("max_along_m", c.max_along_m, "... and at most this far along the arm [m]");
+  v.field("arm_length_m", c.arm_length_m, "arm direction from the node to this far along [m]");
+  v.field("parallel_angle_deg", c.parallel_angle_deg,
+          "the two carriageways' arms are parallel within this [deg]");
 }
 
 /// Edge weights from depth images (paper §3.1, eqs. 3-4).
@@ -178,6 +204,9 @@ struct SumoMatchConfig {
   double stray_min_length_m = 20.0; ///< shorter end edges (junction complexes) are kept [m]
   bool turns_from_net = true;       ///< turn permissions of the graph from the net's connections
   double turn_max_detour_m = 60.0;  ///< SUMO edges allowed between two graph edges at a turn [m]
+  /// Place-level validation: true intersections joined by a passenger edge this short are one
+  /// place [m]. 25 m: the carriageways of a divided road are 10-25 m apart.
+  double place_link_max_m = 25.0;
 };
 template <class V>
 void visitFields(V& v, SumoMatchConfig& c) {
@@ -192,6 +221,9 @@ void visitFields(V& v, SumoMatchConfig& c) {
           "turn permissions of the graph from the net (no U-turn where SUMO has none)");
   v.field("turn_max_detour_m", c.turn_max_detour_m,
           "SUMO edges allowed between two graph edges at a turn [m]");
+  v.field("place_link_max_m", c.place_link_max_m,
+          "place-level validation: true intersections joined by an edge this short are one "
+          "place (divided roads, junction boxes) [m]");
 }
 
 /// Roundabouts (Roundabouts.cpp): rings that vehicles circle round an empty middle.
@@ -262,6 +294,7 @@ struct Config {
   NodeConfig nodes;
   RoundaboutConfig roundabouts;
   EdgeConfig edges;
+  DividedRoadConfig divided;
   DepthConfig depth;
   SumoMatchConfig sumo;
 };
@@ -271,6 +304,7 @@ void visitFields(V& v, Config& c) {
   v.section("nodes", c.nodes);
   v.section("roundabouts", c.roundabouts);
   v.section("edges", c.edges);
+  v.section("divided", c.divided);
   v.section("depth", c.depth);
   v.section("sumo", c.sumo);
 }

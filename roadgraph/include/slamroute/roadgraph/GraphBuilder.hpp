@@ -20,6 +20,8 @@ struct GraphBuildStats {
   std::size_t short_links = 0;       ///< streets between close junctions from vehicle passes
   std::size_t u_turn_streets = 0;    ///< U-shaped clusters (separate lanes) attached at their bend
   std::size_t roundabouts = 0;       ///< rings whose junctions replaced the nodes there
+  std::size_t divided_node_pairs = 0;  ///< carriageway nodes of divided roads merged (pairs)
+  std::size_t divided_streets = 0;     ///< carriageway pairs made one street
   double seconds = 0.0;
 };
 
@@ -32,6 +34,6 @@ struct GraphBuildResult {
 
 /// Whole traces -> graph pipeline. Throws std::invalid_argument naming traces.source on bad
 /// traces and std::runtime_error when no intersection is found.
-GraphBuildResult buildRoadGraph(const Traces& traces, const Config& cfg);
+GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg);
 
 }  // namespace slamroute::roadgraph

@@ -33,6 +33,15 @@ struct ValidationResult {
 /// junctions with exactly 2 neighbours).
 ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<char>& node_is_end,
                                     const SumoNet& net, const SumoMatchConfig& cfg);
+/// The same scores against the net's places, where a divided road is one street with two
+/// directions: true intersections joined by a passenger edge of at most cfg.place_link_max_m
+/// (the carriageway crossings of a divided road, the corners of a junction box) are one place,
+/// and the junction graph is contracted onto the places before the truth rule (>= 3 distinct
+/// neighbouring places) and the chains are taken. A node matches a place within
+/// cfg.match_radius_m of any of its junctions; node_junction names the place's junctions
+/// joined by '+'.
+ValidationResult validateAgainstPlaces(const RoadGraph& graph, const std::vector<char>& node_is_end,
+                                       const SumoNet& net, const SumoMatchConfig& cfg);
 
 /// Fills RoadEdge::sumo_edges with the passenger SUMO edges along each edge, in driving order
 /// (nearest lane in the edge's direction of travel). An end edge of a chain that arrives at u or

@@ -11,7 +11,7 @@ struct LidarConfig {
   /// "paper" (64 ch, +10/-30 deg, 100 m, the paper's §3.3 sensor), "vlp16", "hdl32".
   /// Fields of `spec` that differ from LidarSpec's defaults override the preset's values.
   /// Default vlp16 (LeGO-LOAM's own sensor): 4x fewer rays than "paper", so the default-city
-  /// `run` (three ~7 km drives, each evaluated by LiDAR SLAM) fits its 10-minute budget on
+  /// `run` (three 15-19 km drives, each evaluated by LiDAR SLAM) fits its 10-minute budget on
   /// 2 cores. Use `--sensor paper` / `simulate.lidar.preset: paper` for the paper's 64 channels.
   std::string preset = "vlp16";
   LidarSpec spec;

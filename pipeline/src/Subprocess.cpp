@@ -1,4 +1,4 @@
-#include "Subprocess.hpp"
+#include "slamroute/pipeline/Subprocess.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -23,7 +23,7 @@
 
 extern char** environ;
 
-namespace slamroute::cli {
+namespace slamroute::pipeline {
 namespace {
 
 /// The child learns its parent's pid from here (stopWithParent).
@@ -39,7 +39,9 @@ std::vector<std::string> childEnvironment() {
   return env;
 }
 
-pid_t spawnStep(const Step& s) {
+}  // namespace
+
+int startStep(const Step& s) {
   std::filesystem::create_directories(s.log.parent_path());
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
@@ -65,6 +67,16 @@ pid_t spawnStep(const Step& s) {
     throw std::runtime_error("cannot start '" + s.label + "' (" + exe + "): " + std::strerror(rc));
   return pid;
 }
+
+std::optional<int> finishedStep(int pid) {
+  int status = 0;
+  const pid_t r = ::waitpid(pid, &status, WNOHANG);
+  if (r == 0) return std::nullopt;
+  if (r < 0) throw std::runtime_error("waiting for step process " + std::to_string(pid) + " failed");
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+namespace {
 
 volatile sig_atomic_t g_stop_signal = 0;
 
@@ -160,7 +172,7 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
       logInfo("  started  " + steps[next].label);
       std::error_code ec;
       std::filesystem::remove(stampPath(steps[next]), ec);  // stale until the step succeeds again
-      running[spawnStep(steps[next])] = {next, Clock::now()};
+      running[startStep(steps[next])] = {next, Clock::now()};
       ++next;
     }
     if (running.empty()) break;
@@ -204,4 +216,4 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
   return results;
 }
 
-}  // namespace slamroute::cli
+}  // namespace slamroute::pipeline

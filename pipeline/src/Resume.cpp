@@ -1,4 +1,4 @@
-#include "Resume.hpp"
+#include "slamroute/pipeline/Resume.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 
-namespace slamroute::cli {
+namespace slamroute::pipeline {
 namespace fs = std::filesystem;
 
 namespace {
@@ -118,4 +118,4 @@ std::vector<Step> stepsToRun(std::vector<Step> steps, bool resume) {
   return left;
 }
 
-}  // namespace slamroute::cli
+}  // namespace slamroute::pipeline

@@ -1,0 +1,28 @@
+#pragma once
+// Parameters of the fleet planner (several vehicles share the streets). YAML section "rl.fleet".
+#include <string>
+
+namespace slamroute::rl {
+
+struct FleetConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (FleetConfig.cpp)
+  int vehicles = 1;                     ///< K; 1 = the single-vehicle planners
+  /// partition | postman (Fleet.hpp); the command line takes it from --planner, so it is no
+  /// YAML key (one place to choose the planner)
+  std::string strategy = "partition";
+  int balance_moves = 200;              ///< partition: at most this many edge moves
+  int candidates_per_move = 12;         ///< partition: boundary edges tried per move
+  int kmeans_iterations = 100;          ///< partition: Lloyd iterations at most
+};
+
+template <class V>
+void visitFields(V& v, FleetConfig& c) {
+  v.field("vehicles", c.vehicles, "number of mapping vehicles K (1: one route, the planners)");
+  v.field("balance_moves", c.balance_moves,
+          "partition: at most this many boundary-edge moves to shorten the longest route");
+  v.field("candidates_per_move", c.candidates_per_move,
+          "partition: boundary edges of the longest route tried per move before giving up");
+  v.field("kmeans_iterations", c.kmeans_iterations, "partition: Lloyd iterations at most");
+}
+
+}  // namespace slamroute::rl
