@@ -57,25 +57,26 @@ TEST(StreetMap, FrontierStreetsAreTheOnesLeavingTheKnownDisc) {
 
 TEST(KnownPaths, PlanOnlyOverKnownStreets) {
   const GridNet n;
-  int e00_01 = -1, e01_02 = -1, e00_10 = -1;
+  int e11_01 = -1, e01_02 = -1, e10_11 = -1;
   for (int e = 0; e < n.pg.m; ++e) {
-    if (n.sumo(e) == "g00_g01") e00_01 = e;
+    if (n.sumo(e) == "g11_g01") e11_01 = e;
     if (n.sumo(e) == "g01_g02") e01_02 = e;
-    if (n.sumo(e) == "g10_g00") e00_10 = e;
+    if (n.sumo(e) == "g10_g11") e10_11 = e;
   }
-  ASSERT_GE(e00_01, 0);
-  // from g10_g00 (arriving at g00) straight on to g01 then g02: 2 edges of ~200 m
-  const KnownPaths all(n.pg, e00_10, [](int) { return true; });
+  ASSERT_GE(e11_01, 0);
+  // from g10_g11 (arriving at the centre g11) left to g01, then right to g02: 2 edges
+  const KnownPaths all(n.pg, e10_11, [](int) { return true; });
   const auto p = all.pathTo(e01_02);
   ASSERT_TRUE(p);
-  EXPECT_EQ(p->edges, (std::vector<int>{e00_01, e01_02}));
-  EXPECT_NEAR(p->length_m, n.pg.len[static_cast<std::size_t>(e00_01)] + n.pg.len[static_cast<std::size_t>(e01_02)], 1e-9);
-  // without g00_g01 known the way round is longer (3 x 3 grid: at least 4 more edges)
-  const KnownPaths partial(n.pg, e00_10, [&](int e) { return e != e00_01; });
+  EXPECT_EQ(p->edges, (std::vector<int>{e11_01, e01_02}));
+  EXPECT_NEAR(p->length_m, n.pg.len[static_cast<std::size_t>(e11_01)] + n.pg.len[static_cast<std::size_t>(e01_02)], 1e-9);
+  // without g11_g01 known the way round is longer (at least 4 edges)
+  const KnownPaths partial(n.pg, e10_11, [&](int e) { return e != e11_01; });
   ASSERT_TRUE(partial.pathTo(e01_02));
   EXPECT_GE(partial.pathTo(e01_02)->edges.size(), 4u);
+  EXPECT_GT(partial.distance(e01_02), all.distance(e01_02));
   // nothing known: nothing reachable
-  const KnownPaths none(n.pg, e00_10, [](int) { return false; });
+  const KnownPaths none(n.pg, e10_11, [](int) { return false; });
   EXPECT_FALSE(none.pathTo(e01_02));
   EXPECT_FALSE(none.nearest([](int) { return true; }));
 }
