@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
+#include "slamroute/explore/KnownPaths.hpp"
 #include "slamroute/explore/Measures.hpp"
 
 namespace slamroute::explore {
@@ -187,10 +188,19 @@ void ExploreRun::enterEdge(simulate::OnlineVehicles& vehicles, int k, int edge, 
   vehicles.setRoute(x.id, {sumoEdge(edge), sumoEdge(x.next), sumoEdge(wander(x.next))});
 }
 
+// A vehicle keeps its target until it gets there or the target stops being open (another
+// vehicle drove it): re-deciding at every street lets assignments flip back and forth while
+// the vehicles circle. Only a new decision asks the strategy (and counts as one).
 int ExploreRun::chooseNext(int k) {
   Explorer& x = explorers_[static_cast<std::size_t>(k)];
+  const FleetView f = view();
+  const int t = targets_[static_cast<std::size_t>(k)];
+  if (t >= 0 && f.open(t, k)) {
+    const KnownPaths paths(pg_, x.edge, [&](int e) { return streets_.known(e); });
+    if (const auto p = paths.pathTo(t)) return p->edges.front();
+  }
   const auto c0 = std::chrono::steady_clock::now();
-  const Decision d = strategy_->decide(view(), k);
+  const Decision d = strategy_->decide(f, k);
   result_.decision_ms.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0).count());
   ++result_.decisions;
