@@ -42,7 +42,7 @@ j = json.load(open(d + "/explore.json")); t = json.load(open(d + "/timing.json")
 m = {round(x["share"] * 100): x for x in j["milestones"]}
 ratio = lambda x: "%.2f" % x["fleet_distance_over_bound"] if x["reached"] else "–"
 time = lambda x: "%.0f" % x["time_s"] if x["reached"] else "–"
-print("| %s | %s | %s | %d / %d | %s | %s | %s | %.1f, %.0f | %.0f |" % (
+print("| %s | %s | %s | %d / %d | %s | %s | %s | %.2f, %.1f | %.0f |" % (
     net, k, s, j["streets_driven"], j["directed_streets"], ratio(m[95]), time(m[95]),
     time(m[100]), t["mean_ms"], t["max_ms"], float(wall)))
 PY

@@ -173,6 +173,7 @@ void ExploreRun::advance(int k, int edge, double t) {
   if (x.edge >= 0) recordDriven(x.edge, t);
   x.settled = x.idle;
   x.edge = edge;
+  if (!driven_[static_cast<std::size_t>(edge)]) ++entered_;
   driven_[static_cast<std::size_t>(edge)] = true;
   if (targets_[static_cast<std::size_t>(k)] == edge) targets_[static_cast<std::size_t>(k)] = -1;
   x.result.edges.push_back(sumoEdge(edge));
@@ -238,7 +239,8 @@ void ExploreRun::recordDriven(int edge, double t) {
 
 bool ExploreRun::finished() const {
   if (result_.edges_driven >= pg_.m) return true;
-  if (explorers_.empty()) return false;
+  // a street entered for the first time counts once it has been driven to its end
+  if (explorers_.empty() || entered_ > result_.edges_driven) return false;
   return std::all_of(explorers_.begin(), explorers_.end(), [](const Explorer& x) { return x.settled; });
 }
 

@@ -69,6 +69,7 @@ class ExploreRun {
   std::vector<int> drive_count_;      ///< times completed
   std::vector<int> targets_;
   ExploreResult result_;
+  int entered_ = 0;                   ///< streets entered at least once
   std::size_t scans_ = 0;
   double t0_ = -1.0;                  ///< first departure [s]
 };
