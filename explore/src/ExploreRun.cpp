@@ -179,14 +179,27 @@ void ExploreRun::advance(int k, int edge, double t) {
   x.result.edges.push_back(sumoEdge(edge));
 }
 
-// The route becomes [edge, chosen turn, a provisional one after it]: a street shorter than one
-// step's travel may be passed between two looks, and the vehicle must never run out of route.
+// The route becomes [edge, chosen turn, provisional turns for another kLookaheadM]: streets
+// shorter than one step's travel (real nets have chains of sub-metre edges) may be passed
+// between two looks, and the vehicle must never run out of route. Streets passed that way are
+// counted as driven; their turns were the provisional ones.
 void ExploreRun::enterEdge(simulate::OnlineVehicles& vehicles, int k, int edge, double t) {
+  constexpr double kLookaheadM = 80.0;
   Explorer& x = explorers_[static_cast<std::size_t>(k)];
-  if (x.next >= 0 && edge != x.next) advance(k, x.next, t);  // passed within one step
+  const auto at = std::find(x.route.begin() + (x.route.empty() ? 0 : 1), x.route.end(), edge);
+  if (at != x.route.end())
+    for (auto it = x.route.begin() + 1; it != at; ++it) advance(k, *it, t);
   advance(k, edge, t);
-  x.next = chooseNext(k);
-  vehicles.setRoute(x.id, {sumoEdge(edge), sumoEdge(x.next), sumoEdge(wander(x.next))});
+  x.route = {edge, chooseNext(k)};
+  for (double ahead = 0.0; ahead < kLookaheadM && x.route.size() < 12;) {
+    x.route.push_back(wander(x.route.back()));
+    ahead += pg_.len[static_cast<std::size_t>(x.route.back())];
+  }
+  std::vector<std::string> sumo;
+  for (int e : x.route) sumo.push_back(sumoEdge(e));
+  logDebug("explore: " + x.id + " at t=" + std::to_string(t) + " s on " + sumo[0] + ", next " +
+           sumo[1]);
+  vehicles.setRoute(x.id, sumo);
 }
 
 // A vehicle keeps its target until it gets there or the target stops being open (another

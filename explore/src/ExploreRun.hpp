@@ -30,7 +30,7 @@ class ExploreRun {
   struct Explorer {
     std::string id;
     int edge = -1;              ///< PlanGraph edge it is on
-    int next = -1;              ///< the turn chosen at the end of `edge`
+    std::vector<int> route;     ///< the route SUMO has: edge, chosen turn, provisional ones
     double last_scan_m = -1e9;  ///< odometer at the last sweep [m]
     double odometer_m = 0.0;
     Point2 pos = Point2::Zero();  ///< where it is (its start before it departs)
