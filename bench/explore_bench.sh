@@ -5,6 +5,7 @@
 # legal postman walk of one vehicle that knows the map), simulated time to 95 % and 100 %, compute
 # per decision. Usage: bench/explore_bench.sh [BUILD_DIR] [OUT_DIR] [NETS...]
 #   NETS: default bologna ingolstadt adlershof (all when none given). Runs one after another.
+#   KS (environment): the fleet sizes, default "1 2 4"; STRATEGIES likewise.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"
@@ -26,8 +27,8 @@ net_path() {
 echo "| net | K | strategy | streets driven | dist. to 95 % / bound | time to 95 % [s] | time to 100 % [s] | ms / decision (mean, max) | wall [s] |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for net in "${nets[@]}"; do
-  for k in 1 2 4; do
-    for s in nearest gp-frontier fleet central siba; do
+  for k in ${KS:-1 2 4}; do
+    for s in ${STRATEGIES:-nearest gp-frontier fleet central siba}; do
       dir="$out/$net/k$k/$s"
       t0=$(date +%s.%N)
       if ! "$bin" --log-level warn explore --net "$(net_path "$net")" --vehicles "$k" --strategy "$s" --out "$dir" > /dev/null 2> "$out/$net-k$k-$s.err"; then
