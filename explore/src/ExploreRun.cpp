@@ -190,6 +190,8 @@ void ExploreRun::enterEdge(simulate::OnlineVehicles& vehicles, int k, int edge, 
   if (at != x.route.end())
     for (auto it = x.route.begin() + 1; it != at; ++it) advance(k, *it, t);
   advance(k, edge, t);
+  for (int i = pg_.nextBegin(edge); i < pg_.nextEnd(edge); ++i)
+    streets_.markOffered(pg_.next[static_cast<std::size_t>(i)]);
   x.route = {edge, chooseNext(k)};
   for (double ahead = 0.0; ahead < kLookaheadM && x.route.size() < 12;) {
     x.route.push_back(wander(x.route.back()));

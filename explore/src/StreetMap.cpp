@@ -38,7 +38,7 @@ Point2 halfway(const Polyline& pl) {
 
 StreetMap::StreetMap(const rl::PlanGraph& pg, const RoadGraph& g, const OccupancyGrid& grid)
     : grid_(grid), cells_(static_cast<std::size_t>(pg.m)), seen_(static_cast<std::size_t>(pg.m), 0),
-      mid_(static_cast<std::size_t>(pg.m)) {
+      offered_(static_cast<std::size_t>(pg.m), false), mid_(static_cast<std::size_t>(pg.m)) {
   for (int e = 0; e < pg.m; ++e) {
     const Polyline& pl = g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].polyline;
     cells_[static_cast<std::size_t>(e)] = cellsAlong(pl, grid, grid.cellSize() / 2.0);
@@ -65,7 +65,9 @@ bool StreetMap::fullySeen(int edge) const {
 }
 
 int StreetMap::numKnown() const {
-  return static_cast<int>(std::count_if(seen_.begin(), seen_.end(), [](int s) { return s > 0; }));
+  int n = 0;
+  for (std::size_t e = 0; e < seen_.size(); ++e) n += known(static_cast<int>(e));
+  return n;
 }
 
 std::vector<FrontierPoint> StreetMap::frontierPoints() const {
