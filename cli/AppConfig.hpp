@@ -5,6 +5,7 @@
 #include <string>
 
 #include "slamroute/evaluate/Config.hpp"
+#include "slamroute/explore/Config.hpp"
 #include "slamroute/rl/Config.hpp"
 #include "slamroute/roadgraph/Config.hpp"
 #include "slamroute/simulate/Config.hpp"
@@ -17,6 +18,7 @@ struct AppConfig {
   rl::Config rl;
   simulate::Config simulate;
   evaluate::Config evaluate;
+  explore::Config explore;
 };
 
 template <class V>
@@ -26,6 +28,7 @@ void visitFields(V& v, AppConfig& c) {
   v.section("rl", c.rl);
   v.section("simulate", c.simulate);
   v.section("evaluate", c.evaluate);
+  v.section("explore", c.explore);
 }
 
 }  // namespace slamroute::cli

@@ -36,6 +36,7 @@ void registerCompare(CLI::App& app, Context& ctx);
 void registerRun(CLI::App& app, Context& ctx);
 void registerExperiment(CLI::App& app, Context& ctx);
 void registerSweep(CLI::App& app, Context& ctx);
+void registerExplore(CLI::App& app, Context& ctx);
 
 /// The shipped default city (networks/default_city/default_city.net.xml).
 std::string defaultNetPath();

@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
   cli::registerRun(app, ctx);
   cli::registerExperiment(app, ctx);
   cli::registerSweep(app, ctx);
+  cli::registerExplore(app, ctx);
 
   // One line per error, like every other error of slamroute (CLI11 adds a second).
   app.failure_message([](const CLI::App*, const CLI::Error& e) {

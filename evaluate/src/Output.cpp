@@ -240,13 +240,15 @@ void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, 
   writePng(path, img);
 }
 
-void plotErrorAlongDistance(const std::filesystem::path& path, const TrajectoryMetrics& m,
-                            int size_px) {
+void plotCurve(const std::filesystem::path& path, const std::vector<double>& x,
+               const std::vector<double>& y, const std::string& title, int size_px,
+               double y_max) {
   const int W = std::max(300, size_px), H = std::max(200, size_px / 2), ml = 60, mb = 40, mt = 30, mr = 20;
   cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
-  if (m.errors_m.empty()) throw std::invalid_argument("plotErrorAlongDistance: empty trajectory");
-  const double dmax = std::max(1.0, m.distance_m.back());
-  const double emax = std::max(1e-3, *std::max_element(m.errors_m.begin(), m.errors_m.end())) * 1.1;
+  if (x.empty() || x.size() != y.size())
+    throw std::invalid_argument(path.string() + ": a curve needs as many x as y values, at least one");
+  const double dmax = std::max(1.0, x.back());
+  const double emax = y_max > 0 ? y_max : std::max(1e-3, *std::max_element(y.begin(), y.end())) * 1.1;
   auto px = [&](double d, double e) {
     return cv::Point(static_cast<int>(ml + d / dmax * (W - ml - mr)),
                      static_cast<int>(H - mb - e / emax * (H - mb - mt)));
@@ -254,11 +256,16 @@ void plotErrorAlongDistance(const std::filesystem::path& path, const TrajectoryM
   drawTicks(img, dmax, emax, px);
   cv::line(img, px(0, 0), px(dmax, 0), cv::Scalar(0, 0, 0), 1);
   cv::line(img, px(0, 0), px(0, emax), cv::Scalar(0, 0, 0), 1);
-  for (std::size_t i = 1; i < m.errors_m.size(); ++i)
-    cv::line(img, px(m.distance_m[i - 1], m.errors_m[i - 1]), px(m.distance_m[i], m.errors_m[i]),
-             cv::Scalar(200, 60, 0), 1, cv::LINE_AA);
-  cv::putText(img, "ATE [m] vs distance [m]", {ml, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
+  for (std::size_t i = 1; i < y.size(); ++i)
+    cv::line(img, px(x[i - 1], y[i - 1]), px(x[i], y[i]), cv::Scalar(200, 60, 0), 1, cv::LINE_AA);
+  cv::putText(img, title, {ml, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1);
   writePng(path, img);
+}
+
+void plotErrorAlongDistance(const std::filesystem::path& path, const TrajectoryMetrics& m,
+                            int size_px) {
+  if (m.errors_m.empty()) throw std::invalid_argument("plotErrorAlongDistance: empty trajectory");
+  plotCurve(path, m.distance_m, m.errors_m, "ATE [m] vs distance [m]", size_px);
 }
 
 }  // namespace slamroute::evaluate

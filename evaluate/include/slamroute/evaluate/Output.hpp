@@ -68,6 +68,11 @@ class MapErrorImage {
 
 /// Top view: ground truth (green) and aligned estimate (red), same scale on both axes.
 void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, int size_px);
+/// Line plot of y against x (x ascending, both axes from 0) with labelled ticks and a grid;
+/// y_max > 0 fixes the top of the y axis, else 1.1 x the largest y. Written atomically.
+void plotCurve(const std::filesystem::path& path, const std::vector<double>& x,
+               const std::vector<double>& y, const std::string& title, int size_px,
+               double y_max = 0.0);
 /// ATE (after alignment) against distance travelled along the ground truth.
 void plotErrorAlongDistance(const std::filesystem::path& path, const TrajectoryMetrics& m,
                             int size_px);
