@@ -41,13 +41,13 @@ TEST(MotionModel, WheelOdometryPredictsInsteadOfTheVelocity) {
 }
 
 // A registered step with a sideways and vertical component and a roll: without odometry the
-// prediction keeps the car's part (2 m forward, 4 deg of yaw along the chord), with
-// vehicle_motion off the whole 6-DoF motion.
+// prediction keeps the car's part (0.5 m forward, 4 deg of yaw along the chord; 5 m/s, so the
+// turn-rate clamp does not act), with vehicle_motion off the whole 6-DoF motion.
 TEST(MotionModel, WithoutOdometryTheVelocityIsACarsForwardSpeedAndYawRate) {
-  Pose3 step = forward(2.0, 4.0);
-  step.translation() = Vec3(2.0, 0.3, 0.2);
+  Pose3 step = forward(0.5, 4.0);
+  step.translation() = Vec3(0.5, 0.08, 0.05);
   step.linear() = step.linear() * Eigen::AngleAxisd(0.05, Vec3::UnitX()).toRotationMatrix();
-  const double d = std::hypot(2.0, 0.3), half = 2.0 * std::numbers::pi / 180.0;
+  const double d = std::hypot(0.5, 0.08), half = 2.0 * std::numbers::pi / 180.0;
   for (const bool car : {true, false}) {
     Config cfg;
     cfg.odometry.vehicle_motion = car;
