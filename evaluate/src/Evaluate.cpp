@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
@@ -313,7 +314,7 @@ nlohmann::json evaluateScans(const fs::path& drive, const ScanSource& all_scans,
                      {"correction_m", l.correction_m}, {"by_place", l.by_place},
                      {"t_old_new", {l.T_old_new.translation().x(), l.T_old_new.translation().y(),
                                     l.T_old_new.translation().z()}},
-                     {"yaw_old_new_deg", std::atan2(l.T_old_new.rotation()(1, 0), l.T_old_new.rotation()(0, 0)) *
+                     {"yaw_old_new_deg", yawOf(l.T_old_new) *
                                              180.0 / std::numbers::pi}});
   j["loops"] = loops;
 

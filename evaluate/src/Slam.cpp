@@ -18,6 +18,7 @@
 #include "slam/ScanToScan.hpp"
 #include "slam/SlamClock.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/evaluate/MapTiles.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 
@@ -264,7 +265,7 @@ struct LidarSlam::Impl {
 
   void logFrame(const slam::Prediction& step, const AlignResult& r, const MapStep& m, bool implausible) const {
     const auto yawDeg = [](const Pose3& T) {
-      return std::to_string(std::atan2(T.rotation()(1, 0), T.rotation()(0, 0)) * 180.0 / std::numbers::pi);
+      return std::to_string(yawOf(T) * 180.0 / std::numbers::pi);
     };
     logDebug("t=" + std::to_string(step.t) + " s: " + toString(m.status) + (m.failed ? " (failed)" : "") +
              (check_motion ? "" : " relocalised") + (implausible ? " odometry implausible" : "") + ", inliers " +

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "slamroute/core/Yaw.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 
 namespace slamroute::evaluate::slam {
@@ -20,8 +21,7 @@ namespace {
 /// A car's part of a motion: the same yaw and travelled distance along the chord of a constant-
 /// rate turn (heading yaw / 2), no sideways, vertical, roll or pitch component.
 Pose3 vehicleMotion(const Pose3& m) {
-  const Mat3 R = m.linear();
-  const double yaw = std::atan2(R(1, 0), R(0, 0));
+  const double yaw = yawOf(m);
   const double d = std::copysign(m.translation().head<2>().norm(), m.translation().x());
   Pose3 v = Pose3::Identity();
   v.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
