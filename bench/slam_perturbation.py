@@ -2,10 +2,14 @@
 # How stable a drive's SLAM result is: re-evaluates each drive with one weight or noise parameter
 # of the evaluate config changed by -1 % and +1 % and prints, per drive, the baseline ATE RMSE, the
 # largest relative change and the parameter that caused it (bench/RESULTS.md "Stability").
-# Usage: bench/slam_perturbation.py [--bin build/cli/slamroute] [--jobs 2]
+# Usage: bench/slam_perturbation.py [--bin build/cli/slamroute] [--jobs 2] [--params lidar-only|S.K,..]
 #        [--set SECTION.KEY=VALUE ...] [--seed 42] OUT_DIR DRIVE_DIR [DRIVE_DIR ...]
+# (--params: the parameters to change, default all of PARAMS; "lidar-only" those that act when
+# there is no wheel odometry)
 # (--set evaluate settings every run starts from, e.g. --set odometry.use_wheel_odometry=false)
-# Evaluations go to OUT_DIR/<drive>/<param>_<sign>/ (kept, so a rerun resumes). Standard library only.
+# Evaluations go to OUT_DIR/<drive>/<param>_<sign>/ (kept, so a rerun resumes); --report-only prints
+# the table from the evaluations finished so far (how many of the 25 per drive it says). Standard
+# library only.
 import argparse, concurrent.futures, json, os, subprocess, sys
 
 # (section, key): the weights and noise figures of the SLAM (sigmas, robust kernel, blending).
@@ -15,6 +19,13 @@ PARAMS = [
     ("odometry", "wheel_rotation_slack_deg"), ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"),
     ("loop", "graph_odom_sigma_m"), ("loop", "graph_odom_sigma_rad"), ("loop", "graph_loop_sigma_m"),
     ("loop", "graph_loop_sigma_rad"), ("loop", "fitness_m2"),
+]
+# Those that act without wheel odometry (the odometry prior and slacks do not), plus the motion
+# model's turn figures that only act then.
+LIDAR_ONLY = [
+    ("odometry", "imu_tilt_weight"), ("odometry", "failed_turn_decay"), ("odometry", "max_yaw_accel_deg_s2"),
+    ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"), ("loop", "graph_odom_sigma_m"),
+    ("loop", "graph_loop_sigma_m"), ("loop", "fitness_m2"),
 ]
 
 
@@ -46,8 +57,10 @@ def to_yaml(cfg):
     return "\n".join(lines) + ("\n" if cfg else " {}\n")
 
 
-def evaluate(binary, seed, drive, out, yaml_text):
+def evaluate(binary, seed, drive, out, yaml_text, report_only=False):
     metrics = os.path.join(out, "metrics.json")
+    if report_only:
+        return json.load(open(metrics))["ate_rmse_m"] if os.path.exists(metrics) else None
     if not os.path.exists(metrics):
         os.makedirs(os.path.dirname(out), exist_ok=True)
         cfg = out + ".yaml"
@@ -67,6 +80,8 @@ def main():
     ap.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
                     help="an evaluate setting every run starts from")
     ap.add_argument("--seed", type=int, default=42)
+    ap.add_argument("--params", default="", help='"lidar-only" or SECTION.KEY,... (default: all)')
+    ap.add_argument("--report-only", action="store_true", help="no evaluations: the table of those done")
     ap.add_argument("out")
     ap.add_argument("drives", nargs="+")
     a = ap.parse_args()
@@ -77,32 +92,42 @@ def main():
         if not (sec and key and val):
             sys.exit(f"--set {item}: expected SECTION.KEY=VALUE")
         base.setdefault(sec, {})[key] = val
+    params = PARAMS
+    if a.params == "lidar-only":
+        params = LIDAR_ONLY
+    elif a.params:
+        params = [tuple(p.split(".", 1)) for p in a.params.split(",")]
     dflt = defaults(a.bin)
-    missing = [p for p in PARAMS if p not in dflt]
+    missing = [p for p in params if p not in dflt]
     if missing:
         sys.exit(f"{a.bin}: config --dump lacks {missing}")
     jobs = []
     for d in a.drives:
         name = os.path.basename(os.path.normpath(d))
         jobs.append((d, name, "base", to_yaml(base)))
-        for sec, key in PARAMS:
+        for sec, key in params:
             for sign, f in (("minus", 0.99), ("plus", 1.01)):
                 cfg = {k: dict(v) for k, v in base.items()}
                 cfg.setdefault(sec, {})[key] = repr(dflt[(sec, key)] * f)
                 jobs.append((d, name, f"{sec}.{key}_{sign}", to_yaml(cfg)))
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as ex:
-        futs = {ex.submit(evaluate, a.bin, a.seed, d, os.path.join(a.out, n, tag), y): (n, tag)
+        futs = {ex.submit(evaluate, a.bin, a.seed, d, os.path.join(a.out, n, tag), y, a.report_only): (n, tag)
                 for d, n, tag, y in jobs}
         ate = {futs[f]: f.result() for f in concurrent.futures.as_completed(futs)}
-    print("| drive | ATE RMSE [m] | ATE range over +-1 % [m] | largest change [%] | caused by |")
-    print("|---|---|---|---|---|")
+    ate = {k: v for k, v in ate.items() if v is not None}
+    print("| drive | evaluations | ATE RMSE [m] | ATE range over +-1 % [m] | largest change [%] | caused by |")
+    print("|---|---|---|---|---|---|")
     for d in a.drives:
         n = os.path.basename(os.path.normpath(d))
-        base = ate[(n, "base")]
         runs = {t: v for (dn, t), v in ate.items() if dn == n and t != "base"}
+        if (n, "base") not in ate or not runs:
+            print(f"| {n} | {len(runs)} of {2 * len(params)} | - | - | - | - |")
+            continue
+        base = ate[(n, "base")]
         worst = max(runs, key=lambda t: abs(runs[t] - base))
         lo, hi = min(runs.values()), max(runs.values())
-        print(f"| {n} | {base:.3f} | {lo:.3f} - {hi:.3f} | {100 * abs(runs[worst] - base) / base:.1f} | {worst} |")
+        print(f"| {n} | {len(runs)} of {2 * len(params)} | {base:.3f} | {lo:.3f} - {hi:.3f} | "
+              f"{100 * abs(runs[worst] - base) / base:.1f} | {worst} |")
 
 
 if __name__ == "__main__":

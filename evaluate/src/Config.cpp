@@ -75,6 +75,7 @@ void validateOdometry(const OdometryConfig& c) {
   check(c.imu_tilt_weight >= 0 && c.imu_tilt_weight <= 1, "imu_tilt_weight", c.imu_tilt_weight, "must be in [0, 1]");
   check(c.failed_turn_decay >= 0 && c.failed_turn_decay <= 1, "failed_turn_decay", c.failed_turn_decay,
         "must be in [0, 1]");
+  check(finiteNonNegative(c.max_yaw_accel_deg_s2), "max_yaw_accel_deg_s2", c.max_yaw_accel_deg_s2, "must be >= 0");
   check(finiteNonNegative(c.gyro_standstill_mps), "gyro_standstill_mps", c.gyro_standstill_mps, "must be >= 0");
   check(finiteNonNegative(c.gyro_min_standstill_s), "gyro_min_standstill_s", c.gyro_min_standstill_s, "must be >= 0");
   check(finiteNonNegative(c.gyro_standstill_margin_s), "gyro_standstill_margin_s", c.gyro_standstill_margin_s,

@@ -2,6 +2,7 @@
 // plausibility with known motions.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -64,6 +65,26 @@ TEST(MotionModel, WithoutOdometryTheVelocityIsACarsForwardSpeedAndYawRate) {
     } else {
       EXPECT_TRUE(p.isApprox(step, 1e-9));
     }
+  }
+}
+
+// Straight at 5 m/s, then registrations that turn 4 deg per 0.1 s (40 deg/s): the predicted turn
+// rate follows at max_yaw_accel_deg_s2 (60 deg/s^2: 6 deg/s per step) until it reaches 40 deg/s;
+// unbounded (0) it jumps at once.
+TEST(MotionModel, WithoutOdometryTheTurnRateBuildsUpAsACarsDoes) {
+  for (const double accel : {60.0, 0.0}) {
+    Config cfg;
+    cfg.odometry.max_yaw_accel_deg_s2 = accel;
+    slam::MotionModel m(cfg, Pose3::Identity());
+    m.recordFrame(0.0, Pose3::Identity());
+    m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(0.5), 0.1);
+    EXPECT_NEAR(m.turnRateDegPerS(), 0.0, 1e-9);
+    for (int k = 1; k <= 8; ++k) {
+      m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(0.5, 4.0), 0.1);
+      const double want = accel > 0 ? std::min(40.0, 6.0 * k) : 40.0;
+      EXPECT_NEAR(m.turnRateDegPerS(), want, 1e-6) << "accel " << accel << " step " << k;
+    }
+    EXPECT_NEAR(m.predictStep(0.1).speed_mps, 5.0, 1e-6);
   }
 }
 

@@ -20,13 +20,25 @@ void MotionModel::setInitialMotion(const Pose3& T_first_second, double dt_s) {
 namespace {
 /// A car's part of a motion: the same yaw and travelled distance along the chord of a constant-
 /// rate turn (heading yaw / 2), no sideways, vertical, roll or pitch component.
-Pose3 vehicleMotion(const Pose3& m) {
-  const double yaw = yawOf(m);
-  const double d = std::copysign(m.translation().head<2>().norm(), m.translation().x());
+Pose3 carMotion(double yaw, double d) {
   Pose3 v = Pose3::Identity();
   v.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
   v.translation() = Vec3(d * std::cos(yaw / 2), d * std::sin(yaw / 2), 0.0);
   return v;
+}
+
+Pose3 vehicleMotion(const Pose3& m) {
+  return carMotion(yawOf(m), std::copysign(m.translation().head<2>().norm(), m.translation().x()));
+}
+
+/// `next` (a car's motion over dt) with its yaw rate moved at most max_accel * dt from the yaw
+/// rate of `last` (over last_dt): a car's turn rate builds up over a second or so, so one
+/// registration that turned several degrees on a feature-poor street does not set the turn of
+/// the following predictions.
+Pose3 boundedYawRate(const Pose3& next, double dt, const Pose3& last, double last_dt, double max_accel) {
+  const double rate0 = yawOf(last) / last_dt;
+  const double rate = std::clamp(yawOf(next) / dt, rate0 - max_accel * dt, rate0 + max_accel * dt);
+  return carMotion(rate * dt, std::copysign(next.translation().head<2>().norm(), next.translation().x()));
 }
 }  // namespace
 
@@ -96,8 +108,14 @@ void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
   } else if (outcome == Outcome::Relocalised && have_velocity_) {
     velocity_.linear().setIdentity();
   } else if (consecutive) {
-    velocity_ = T_good.inverse() * T_world;
-    if (odometry_.empty() && cfg_.odometry.vehicle_motion) velocity_ = vehicleMotion(velocity_);
+    Pose3 v = T_good.inverse() * T_world;
+    if (odometry_.empty() && cfg_.odometry.vehicle_motion) {
+      v = vehicleMotion(v);
+      const double max_accel = cfg_.odometry.max_yaw_accel_deg_s2 * std::numbers::pi / 180.0;
+      if (max_accel > 0 && have_velocity_)
+        v = boundedYawRate(v, std::max(1e-3, dt), velocity_, velocity_dt_, max_accel);
+    }
+    velocity_ = v;
     velocity_dt_ = std::max(1e-3, dt);
     have_velocity_ = true;
     // A wrong pose must not make the prediction spin on: clamp to what a car can turn.

@@ -100,6 +100,10 @@ struct OdometryConfig {
   /// so an error in one registration is not extrapolated into the next prediction (on a
   /// feature-poor street a full 6-DoF velocity let a height error grow from scan to scan).
   bool vehicle_motion = true;
+  /// With vehicle_motion: how fast the predicted turn rate may change [deg/s^2]. A car's turn
+  /// builds up over a second or so; bounded, one registration that turned a few degrees on a
+  /// feature-poor street does not set the turn of the predictions after it. 0 = unbounded.
+  double max_yaw_accel_deg_s2 = 60.0;
 };
 
 /// Scan-to-map registration against the local map of recent keyframes, and keyframe selection.
@@ -293,6 +297,8 @@ void visitFields(V& v, OdometryConfig& c) {
   v.field("failed_turn_decay", c.failed_turn_decay, "turn rate kept per failed scan (share)");
   v.field("vehicle_motion", c.vehicle_motion,
           "without wheel odometry, predict with forward speed and yaw rate only (false = full 6-DoF velocity)");
+  v.field("max_yaw_accel_deg_s2", c.max_yaw_accel_deg_s2,
+          "with vehicle_motion: largest change of the predicted turn rate [deg/s^2], 0 = unbounded");
 }
 
 template <class V>
