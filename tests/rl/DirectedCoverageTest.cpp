@@ -2,37 +2,15 @@
 // coverage of the net's SUMO edges (core/SumoCoverage.hpp), on routes the planners make.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "RlTestUtil.hpp"
-#include "TestTmp.hpp"
+#include "TwoWayStreetNet.hpp"
 #include "slamroute/core/SumoCoverage.hpp"
 
 namespace slamroute::rl {
 namespace {
 
-// One two-way street A-B, 100 m each way, U-turns at both ends.
-const char* kStreetNet = R"(<?xml version="1.0"?>
-<net version="1.9">
-  <location netOffset="0.00,0.00" convBoundary="0,0,100,0" origBoundary="0,0,100,0" projParameter="!"/>
-  <edge id="AB" from="A" to="B" priority="1">
-    <lane id="AB_0" index="0" speed="13.89" length="100" shape="0,-1.6 100,-1.6"/>
-  </edge>
-  <edge id="BA" from="B" to="A" priority="1">
-    <lane id="BA_0" index="0" speed="13.89" length="100" shape="100,1.6 0,1.6"/>
-  </edge>
-  <junction id="A" type="priority" x="0" y="0" incLanes="BA_0" intLanes="" shape=""/>
-  <junction id="B" type="priority" x="100" y="0" incLanes="AB_0" intLanes="" shape=""/>
-  <connection from="AB" to="BA" fromLane="0" toLane="0" dir="t" state="M"/>
-  <connection from="BA" to="AB" fromLane="0" toLane="0" dir="t" state="M"/>
-</net>
-)";
-
 TEST(DirectedCoverage, TwoWayStreetDrivenOneWayIsHalfDirectedAndWholeTwoWay) {
-  const auto dir = slamroute::test::testTmp() / "directed_coverage";
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "street.net.xml") << kStreetNet;
-  const SumoNet net = SumoNet::read(dir / "street.net.xml");
+  const SumoNet net = slamroute::test::twoWayStreetNet();  // and a bus lane
   const RoadGraph g = RoadGraph::fromSumoNet(net, /*lscc_only=*/false);
   const PlanGraph pg = PlanGraph::build(g);
   int ab = -1;
