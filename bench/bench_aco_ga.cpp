@@ -52,6 +52,7 @@ Row runPlanner(const RoadGraph& g, const char* planner, double threshold, int se
     rl::Config cfg;
     cfg.planner = planner;
     cfg.coverage.c_threshold_m2 = threshold;
+    cfg.eif = rl::gridWorldNoise();  // the paper-like environments' bounds were set for it
     const Route r = rl::plan(g, cfg, static_cast<std::uint64_t>(seed), "grid");
     const auto x = nlohmann::json::parse(r.extra_json);
     row.length.add(r.length_m);

@@ -87,6 +87,7 @@ Samples collectSamples(const fs::path& out, int seeds) {
       add(m, "rpe_trans_pct", "rpe");
       add(m, "loop_closures", "lc");
       add(r, "length_m", "len", 1e-3);
+      add(r.value("directed_coverage", json::object()), "edges_pct", "dcov");
       add(r, "edge_coverage_pct", "cov");
       add(r, "node_coverage_pct", "ncov");
     }
@@ -100,11 +101,11 @@ std::string paperTables12(const fs::path& out, int seeds) {
     auto& x = st[v];
     auto cell = [&](const char* k, int prec) { return pipeline::formatMeanSd(pipeline::meanSd(x[k]), prec); };
     return "| " + v + " | " + cell("ate_mean", 3) + " | " + cell("ate_rmse", 3) + " | " + cell("rpe", 2) + " | " +
-           cell("lc", 1) + " | " + cell("len", 2) + " | " + cell("cov", 1) + " | " + cell("ncov", 1) + " |\n";
+           cell("lc", 1) + " | " + cell("len", 2) + " | " + cell("dcov", 1) + " | " + cell("cov", 1) + " | " + cell("ncov", 1) + " |\n";
   };
   const std::string head =
-      "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | street coverage [%] | node coverage [%] |\n"
-      "|---|---|---|---|---|---|---|---|\n";
+      "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | directed SUMO edges [%] | two-way street coverage [%] | node coverage [%] |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
   std::ostringstream md;
   md << "## Table 1: Q-learning vs random route (mean ± std over " << seeds << (seeds == 1 ? " seed" : " seeds")
      << ")\n\n"

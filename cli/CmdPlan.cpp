@@ -6,6 +6,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 
 #include "Commands.hpp"
 #include "CrewFiles.hpp"
@@ -14,6 +15,7 @@
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoCoverage.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/export/ExportRoute.hpp"
 #include "slamroute/rl/Planners.hpp"
@@ -46,6 +48,18 @@ std::filesystem::path writeRouteFiles(const Route& r, const std::filesystem::pat
   }
   files.commit();
   return rou;
+}
+
+/// Directed SUMO coverage first (when the net is known), then the two-way graph figure.
+std::string coverageText(const Route& r) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(1);
+  if (r.sumo_coverage)
+    os << "directed SUMO edges " << r.sumo_coverage->edges_pct << " % (length "
+       << r.sumo_coverage->length_pct << " %), " << r.sumo_coverage->routeLengthM() / 1000.0
+       << " km in SUMO, ";
+  os << "two-way graph coverage " << r.edge_coverage_pct << " %";
+  return os.str();
 }
 
 }  // namespace
@@ -110,14 +124,15 @@ void registerPlan(CLI::App& app, Context& ctx) {
     const std::filesystem::path out(o->out);
     if (isFleetRequest(cfg, o->fleet))
       return planFleetCommand(ctx, g, cfg, o->fleet, where, out, net.has_value());
-    const Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
+    Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
     if (r.sumo_edges.empty() && !o->net.empty())
       throw std::runtime_error("plan: the route has no SUMO edges; cannot write the .rou.xml");
+    if (net) r.sumo_coverage = sumoCoverage(*net, r.sumo_edges);
     const std::filesystem::path rou = writeRouteFiles(r, out);
     const auto extra = nlohmann::json::parse(r.extra_json);
     std::cout << std::fixed << std::setprecision(1) << r.planner << ": " << r.edges.size()
               << " edges, " << r.length_m / 1000.0 << " km, node coverage " << r.node_coverage_pct
-              << " %, edge coverage " << r.edge_coverage_pct << " %, " << r.loop_closures
+              << " %, " << coverageText(r) << ", " << r.loop_closures
               << " loop closures, illegal turns " << extra.value("illegal_turns", 0) << ", "
               << std::setprecision(2) << r.planning_seconds << " s"
               << (r.completed_by_shortest_paths ? " (completed by shortest paths)" : "") << "\n"

@@ -36,29 +36,32 @@ Route routeFromJsonObject(const json& j) {
   r.completed_by_shortest_paths = j.value("completed_by_shortest_paths", false);
   r.notes = j.value("notes", std::string());
   if (j.contains("extra")) r.extra_json = j.at("extra").dump();
+  r.sumo_coverage = sumoCoverageFromJson(j);
   return r;
 }
 
 json routeToJson(const Route& r) {
-  return {{"planner", r.planner},
-          {"seed", r.seed},
-          {"length_m", r.length_m},
-          {"node_coverage_pct", r.node_coverage_pct},
-          {"edge_coverage_pct", r.edge_coverage_pct},
-          {"revisits", r.revisits},
-          {"loop_closures", r.loop_closures},
-          {"mean_edge_weight", r.mean_edge_weight},
-          {"final_logdet_cov", r.final_logdet_cov},
-          {"max_logdet_cov", r.max_logdet_cov},
-          {"planning_seconds", r.planning_seconds},
-          {"heuristic", r.heuristic},
-          {"completed_by_shortest_paths", r.completed_by_shortest_paths},
-          {"notes", r.notes},
-          {"nodes", r.nodes},
-          {"edges", r.edges},
-          {"sumo_edges", r.sumo_edges},
-          {"logdet_cov_along", r.logdet_cov_along},
-          {"extra", json::parse(r.extra_json.empty() ? "{}" : r.extra_json)}};
+  json j = {{"planner", r.planner},
+            {"seed", r.seed},
+            {"length_m", r.length_m},
+            {"node_coverage_pct", r.node_coverage_pct},
+            {"edge_coverage_pct", r.edge_coverage_pct},
+            {"revisits", r.revisits},
+            {"loop_closures", r.loop_closures},
+            {"mean_edge_weight", r.mean_edge_weight},
+            {"final_logdet_cov", r.final_logdet_cov},
+            {"max_logdet_cov", r.max_logdet_cov},
+            {"planning_seconds", r.planning_seconds},
+            {"heuristic", r.heuristic},
+            {"completed_by_shortest_paths", r.completed_by_shortest_paths},
+            {"notes", r.notes},
+            {"nodes", r.nodes},
+            {"edges", r.edges},
+            {"sumo_edges", r.sumo_edges},
+            {"logdet_cov_along", r.logdet_cov_along},
+            {"extra", json::parse(r.extra_json.empty() ? "{}" : r.extra_json)}};
+  if (r.sumo_coverage) sumoCoverageToJson(*r.sumo_coverage, j);
+  return j;
 }
 
 }  // namespace detail

@@ -216,6 +216,48 @@ pugi::xml_node parseNet(pugi::xml_document& doc, const std::string& data, const 
 
 }  // namespace
 
+namespace {
+
+/// Internal (junction) lanes: their lengths and, for a lane that continues on another internal
+/// lane (an internal junction splits a turn), that lane.
+struct InternalLanes {
+  std::unordered_map<std::string, double> length_m;
+  std::unordered_map<std::string, std::string> next;
+
+  static InternalLanes read(const pugi::xml_node& root) {
+    InternalLanes in;
+    for (auto e : root.children("edge")) {
+      const std::string id = e.attribute("id").as_string();
+      if (std::string(e.attribute("function").as_string()) != "internal" && (id.empty() || id[0] != ':'))
+        continue;
+      for (auto l : e.children("lane"))
+        in.length_m[l.attribute("id").as_string()] = l.attribute("length").as_double(0.0);
+    }
+    for (auto c : root.children("connection")) {
+      const std::string from = c.attribute("from").as_string(), via = c.attribute("via").as_string();
+      if (!from.empty() && from[0] == ':' && !via.empty())
+        in.next[from + "_" + std::to_string(c.attribute("fromLane").as_int())] = via;
+    }
+    return in;
+  }
+
+  /// Length of the chain of internal lanes starting at `lane` (cycles cannot occur in a valid
+  /// net; the chain is cut after as many steps as there are lanes).
+  double chainLength(std::string lane) const {
+    double total = 0.0;
+    for (std::size_t k = 0; k <= length_m.size() && !lane.empty(); ++k) {
+      const auto it = length_m.find(lane);
+      if (it == length_m.end()) break;
+      total += it->second;
+      const auto nx = next.find(lane);
+      lane = nx == next.end() ? std::string() : nx->second;
+    }
+    return total;
+  }
+};
+
+}  // namespace
+
 struct SumoNetBuilder {
   static void addTurn(SumoNet& net, const std::string& from, const std::string& to) {
     auto& v = net.turns_[from];
@@ -224,6 +266,7 @@ struct SumoNetBuilder {
 
   /// The connections between normal edges; those passenger cars may take are the allowed turns.
   static void readConnections(SumoNet& net, const pugi::xml_node& root) {
+    const InternalLanes internal = InternalLanes::read(root);
     for (auto c : root.children("connection")) {
       SumoConnection con;
       con.from = c.attribute("from").as_string();
@@ -235,6 +278,7 @@ struct SumoNetBuilder {
       con.to_lane = c.attribute("toLane").as_int();
       con.dir = c.attribute("dir").as_string();
       con.via = c.attribute("via").as_string();
+      con.via_length_m = internal.chainLength(con.via);
       if (connectionAllowsPassenger(c, con, *fe, *te)) addTurn(net, con.from, con.to);
       net.connections.push_back(std::move(con));
     }

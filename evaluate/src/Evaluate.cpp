@@ -17,6 +17,7 @@
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/OdometrySpec.hpp"
+#include "slamroute/core/SumoCoverage.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
 #include "slamroute/evaluate/MapOutput.hpp"
@@ -38,6 +39,17 @@ struct LenientLoader {
 };
 
 double nanToNull(double v) { return v; }  // nlohmann writes NaN as null
+
+/// The primary coverage figure: directed SUMO edges of the drivable part driven, and the drive's
+/// length in SUMO, from the edge sequence the vehicle drove (SumoCoverage.hpp).
+void addDirectedCoverage(const SumoNet& net, const std::vector<PoseEdge>& pose_edges,
+                         nlohmann::json& j) {
+  std::vector<std::string> driven;
+  for (const auto& pe : pose_edges)
+    if (!pe.edge.empty() && pe.edge[0] != ':' && (driven.empty() || driven.back() != pe.edge))
+      driven.push_back(pe.edge);
+  sumoCoverageToJson(sumoCoverage(net, driven), j);
+}
 
 /// coverage_edge_pct: visited passenger edges / passenger edges of the net named in world.yaml.
 void addCoverage(const fs::path& drive, const std::vector<PoseEdge>& pose_edges, nlohmann::json& j) {
@@ -66,6 +78,7 @@ void addCoverage(const fs::path& drive, const std::vector<PoseEdge>& pose_edges,
     return;
   }
   const SumoNet sn = SumoNet::read(np);
+  addDirectedCoverage(sn, pose_edges, j);
   std::size_t total = 0, hit = 0;
   for (const auto& e : sn.edges) {
     if (e.isInternal() || !e.allowsPassenger()) continue;

@@ -5,6 +5,7 @@
 
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/core/SumoCoverage.hpp"
 #include "slamroute/core/SumoRoute.hpp"
 
 namespace slamroute::pipeline {
@@ -88,8 +89,9 @@ void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {
     if (legal.dropped_edges > 0) note << ", " << legal.dropped_edges << " edges no legal path passes dropped";
     r.notes = note.str();
     r.sumo_edges = legal.edges;
-    r.writeJson(route_json);
   }
+  r.sumo_coverage = sumoCoverage(net, r.sumo_edges);  // of the route SUMO drives
+  r.writeJson(route_json);
   fs::path rou = route_json;
   rou.replace_extension(".rou.xml");
   r.writeRouXml(rou);

@@ -88,11 +88,19 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   const auto q = nlohmann::json::parse(readFile(out / "routes" / "qlearning.json"));
   const auto rnd = nlohmann::json::parse(readFile(out / "routes" / "random.json"));
   EXPECT_LT(rnd["length_m"].get<double>(), q["length_m"].get<double>() + 200.0);
+  // Directed coverage of the net's SUMO edges, planned (route.json) and as driven (metrics.json):
+  // postman drives every direction of every street of the plus net (8 directed edges).
+  const auto pm = nlohmann::json::parse(readFile(out / "routes" / "postman.json"));
+  const auto pd = nlohmann::json::parse(readFile(out / "eval" / "postman" / "metrics.json"));
+  EXPECT_EQ(pm["directed_coverage"]["edges_total"].get<int>(), 8);
+  EXPECT_DOUBLE_EQ(pm["directed_coverage"]["edges_pct"].get<double>(), 100.0);
+  EXPECT_DOUBLE_EQ(pd["directed_coverage"]["edges_pct"].get<double>(), 100.0);
+  EXPECT_GT(pm["sumo_length"]["in_junctions_m"].get<double>(), 0.0);
   const std::string report = readFile(out / "report.md");
   for (const char* s : {"| qlearning |", "| random |", "| postman |", "Spearman", "report/graph_weights.png",
                         "| node recall | ", "| survey | value | meaning |", "| streets driven | ",
                         "| sumo_mapping | value | meaning |", "| turns forbidden | ",
-                        "| noise correlation time | 2.0 s | "})
+                        "| noise correlation time | 2.0 s | ", "| directed SUMO edges [%] |"})
     EXPECT_NE(report.find(s), std::string::npos) << s;
   EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
   // Map accuracy: the median distance and the share beyond the 2 m clamp, from metrics.json (a

@@ -15,6 +15,7 @@ Config coverageCfg(const std::string& planner, double threshold_m2) {
   Config c;
   c.planner = planner;
   c.coverage.c_threshold_m2 = threshold_m2;
+  c.eif = gridWorldNoise();  // the noise these grids' bounds were chosen for
   return c;
 }
 

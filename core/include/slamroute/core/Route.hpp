@@ -3,8 +3,11 @@
 // route file (.rou.xml) with one vehicle driving it.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "slamroute/core/SumoCoverage.hpp"
 
 namespace slamroute {
 
@@ -16,7 +19,10 @@ struct Route {
   std::vector<std::string> sumo_edges;  ///< SUMO edge sequence (drivable), when known
   double length_m = 0.0;
   double node_coverage_pct = 0.0;       ///< share of nodes visited [%]
-  double edge_coverage_pct = 0.0;       ///< share of street length driven [%]
+  double edge_coverage_pct = 0.0;       ///< two-way, graph: share of street length driven [%]
+  /// Directed coverage of the net's drivable SUMO edges and the length SUMO drives (the primary
+  /// figures), known when the route was checked against the net.
+  std::optional<SumoCoverage> sumo_coverage;
   int revisits = 0;                     ///< arrivals at already-visited nodes
   int loop_closures = 0;                ///< predicted loop closures (revisits after a cycle)
   double mean_edge_weight = 0.0;        ///< length-weighted mean weight driven

@@ -49,6 +49,7 @@ struct SumoConnection {
   int from_lane = 0, to_lane = 0;
   std::string dir;    ///< s, l, r, t (U-turn), L, R, invalid
   std::string via;    ///< internal lane id, may be empty
+  double via_length_m = 0.0;  ///< internal lanes from `via` to the next normal edge [m]
 };
 
 /// A <roundabout>: its junctions and the edges that circle it.

@@ -10,14 +10,19 @@
 namespace slamroute::rl {
 
 /// Extended information filter over the vehicle pose (x, y, heading): the R_U model (eq. 6).
+/// The motion noise (the *_var_per_m and poor_weight_gain) is fitted to the SLAM's measured drift
+/// per street: bench/bench_eif_calibration.cpp reads evaluate's per_edge.csv of `run` /
+/// `experiment` drives, estimates the noise per metre of each street piece from its drift and
+/// fits it as a line in (1 - edge weight); bench/RESULTS.md has the fit and how well C_k then
+/// ranks the measured error along each drive.
 struct EifConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
   double init_sigma_xy_m = 0.1;           ///< initial position std-dev [m]
   double init_sigma_heading_rad = 0.01;   ///< initial heading std-dev [rad]
-  double long_var_per_m = 1e-3;           ///< along-track variance added per metre driven [m^2/m]
-  double lat_var_per_m = 5e-4;            ///< cross-track variance added per metre [m^2/m]
-  double heading_var_per_m = 2e-6;        ///< heading variance added per metre [rad^2/m]
-  double poor_weight_gain = 4.0;          ///< noise x (1 + gain * (1 - weight)): poor streets drift more
+  double long_var_per_m = 3.05e-3;        ///< along-track variance added per metre driven [m^2/m]
+  double lat_var_per_m = 1.53e-3;         ///< cross-track variance added per metre [m^2/m]
+  double heading_var_per_m = 1.3e-7;      ///< heading variance added per metre [rad^2/m]
+  double poor_weight_gain = 3.06;         ///< noise x (1 + gain * (1 - weight)): poor streets drift more
   double closure_sigma_xy_m = 0.2;        ///< loop-closure registration std-dev, position [m]
   double closure_sigma_heading_rad = 0.01;  ///< loop-closure registration std-dev, heading [rad]
   double loop_min_travel_m = 50.0;        ///< a revisit is a loop closure after this much driving [m]
