@@ -1,11 +1,12 @@
 // The header, road-graph, results, uncertainty, per-planner and step-time sections of report.md.
+#include "ReportSections.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
 
 #include "ReportFigures.hpp"
-#include "ReportSections.hpp"
 #include "slamroute/core/Route.hpp"
 #include "slamroute/pipeline/JsonFile.hpp"
 
@@ -73,8 +74,8 @@ void writeWorldPicture(std::ostringstream& md, const ReportData& data) {
 void writeHeaderSection(std::ostringstream& md, const ReportData& data) {
   const ReportInputs& in = data.in;
   md << "# slamroute report\n\n"
-     << "Net: `" << in.net << "`  \nCommand: `" << in.command << "`  \nTotal time: "
-     << reportNumber(in.total_seconds, 1) << " s";
+     << "Net: `" << in.net << "`  \nCommand: `" << in.command
+     << "`  \nTotal time: " << reportNumber(in.total_seconds, 1) << " s";
   const auto kept = std::count_if(in.step_seconds.begin(), in.step_seconds.end(),
                                   [](const auto& st) { return std::isnan(st.second); });
   if (kept > 0)
@@ -116,9 +117,9 @@ void writeResultsSection(std::ostringstream& md, const ReportData& data) {
        << reportNumber(r, "node_coverage_pct", 1) << " | " << reportNumber(r, "loop_closures", 0)
        << " | " << reportNumber(r, "final_logdet_cov", 2) << " | "
        << reportNumber(r, "planning_seconds", 3) << " | " << reportNumber(m, "ate_rmse_m", 3)
-       << " | " << reportNumber(m, "ate_mean_m", 3) << " | "
-       << reportNumber(m, "rpe_trans_pct", 2) << " | " << reportNumber(m, "loop_closures", 0)
-       << " | " << mapCell(m, "map_") << " | " << mapCell(m, "map_aligned_") << " |\n";
+       << " | " << reportNumber(m, "ate_mean_m", 3) << " | " << reportNumber(m, "rpe_trans_pct", 2)
+       << " | " << reportNumber(m, "loop_closures", 0) << " | " << mapCell(m, "map_") << " | "
+       << mapCell(m, "map_aligned_") << " |\n";
   }
   md << "\n";
 }

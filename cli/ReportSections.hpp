@@ -2,10 +2,9 @@
 // The sections of report.md. Each writer appends one part of the Markdown (and the pictures it
 // shows) from the run's files, loaded once into ReportData; writeReport lists them in order, so a
 // new section is one writer and one entry in that list.
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <string>
