@@ -41,7 +41,7 @@ std::map<std::string, std::string> streetKinds(const fs::path& drive) {
   return kinds;
 }
 
-nlohmann::json evaluateDriveFolder(const std::string& drive_dir, const std::string& out,
+evaluate::EvaluationResult evaluateDriveFolder(const std::string& drive_dir, const std::string& out,
                                    const evaluate::Config& cfg) {
   const fs::path drive(drive_dir);
   if (!fs::is_directory(drive)) throw std::invalid_argument(drive_dir + ": not a drive folder");
@@ -62,7 +62,7 @@ nlohmann::json evaluateDriveFolder(const std::string& drive_dir, const std::stri
 }
 
 /// A KITTI sequence has no wheel odometry; without poses.txt there is nothing to measure against.
-nlohmann::json evaluateKittiSequence(const std::string& seq_dir, const std::string& sensor,
+evaluate::EvaluationResult evaluateKittiSequence(const std::string& seq_dir, const std::string& sensor,
                                      const std::string& out, const evaluate::Config& cfg) {
   const KittiSequence seq = readKittiSequence(seq_dir, lidarPreset(sensor));
   logInfo("evaluate: " + std::to_string(seq.scans->size()) + " scans from " + seq_dir +
@@ -71,6 +71,21 @@ nlohmann::json evaluateKittiSequence(const std::string& seq_dir, const std::stri
     logInfo("evaluate: " + seq_dir + " has no " + kitti_files::kPoses +
             ": trajectory metrics skipped, the estimate starts at the identity");
   return evaluate::evaluateScans(seq_dir, *seq.scans, seq.ground_truth, out, cfg);
+}
+
+/// One line of what was measured; figures as metrics.json spells them.
+void printSummary(const evaluate::EvaluationResult& r, const std::string& out) {
+  using nlohmann::json;
+  const json loops(r.loops.size());
+  if (!r.trajectory) {
+    std::cout << "no ground truth: trajectory metrics skipped; " << json(r.scans)
+              << " scans, loop closures " << loops << " -> " << out << "\n";
+    return;
+  }
+  const evaluate::TrajectorySummary& t = *r.trajectory;
+  std::cout << "ATE rmse " << json(t.ate_rmse_m) << " m, RPE " << json(t.rpe_trans_pct)
+            << " %, loop closures " << loops << ", " << json(t.evaluated_length_m)
+            << " m evaluated -> " << out << "\n";
 }
 
 }  // namespace
@@ -116,16 +131,10 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
       throw std::invalid_argument("--to must be later than --from");
     if (o->drive.empty() == o->kitti.empty())
       throw std::invalid_argument("evaluate needs --drive DIR or --kitti SEQ_DIR");
-    const nlohmann::json j = o->drive.empty()
-                                 ? evaluateKittiSequence(o->kitti, o->sensor, o->out, cfg)
-                                 : evaluateDriveFolder(o->drive, o->out, cfg);
-    if (!j.contains("ate_rmse_m")) {
-      std::cout << "no ground truth: trajectory metrics skipped; " << j["scans"]
-                << " scans, loop closures " << j["loop_closures"] << " -> " << o->out << "\n";
-      return;
-    }
-    std::cout << "ATE rmse " << j["ate_rmse_m"] << " m, RPE " << j["rpe_trans_pct"] << " %, loop closures "
-              << j["loop_closures"] << ", " << j["evaluated_length_m"] << " m evaluated -> " << o->out << "\n";
+    const evaluate::EvaluationResult r =
+        o->drive.empty() ? evaluateKittiSequence(o->kitti, o->sensor, o->out, cfg)
+                         : evaluateDriveFolder(o->drive, o->out, cfg);
+    printSummary(r, o->out);
   });
 }
 

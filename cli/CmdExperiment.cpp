@@ -19,6 +19,7 @@
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/evaluate/EvaluationResult.hpp"
 #include "slamroute/pipeline/JsonFile.hpp"
 #include "slamroute/pipeline/Stages.hpp"
 #include "slamroute/pipeline/Statistics.hpp"
@@ -78,14 +79,20 @@ Samples collectSamples(const fs::path& out, int seeds) {
   for (int s = 1; s <= seeds; ++s)
     for (const auto& v : kVariants) {
       const json r = pipeline::readJsonIfPresent(run.route(runId(v, s)));
-      const json m = pipeline::readJsonIfPresent(run.metrics(runId(v, s)));
+      const fs::path metrics = run.metrics(runId(v, s));
+      const std::map<std::string, double> m =
+          fs::exists(metrics) ? evaluate::evaluationFigures(evaluate::readEvaluationJson(metrics))
+                              : std::map<std::string, double>{};
       auto add = [&](const json& j, const char* k, const std::string& key, double scale = 1.0) {
         if (j.contains(k) && j[k].is_number()) st[v.name][key].push_back(j[k].get<double>() * scale);
       };
-      add(m, "ate_rmse_m", "ate_rmse");
-      add(m, "ate_mean_m", "ate_mean");
-      add(m, "rpe_trans_pct", "rpe");
-      add(m, "loop_closures", "lc");
+      auto addFigure = [&](const char* k, const std::string& key) {
+        if (const auto it = m.find(k); it != m.end()) st[v.name][key].push_back(it->second);
+      };
+      addFigure("ate_rmse_m", "ate_rmse");
+      addFigure("ate_mean_m", "ate_mean");
+      addFigure("rpe_trans_pct", "rpe");
+      addFigure("loop_closures", "lc");
       add(r, "length_m", "len", 1e-3);
       add(r.value("directed_coverage", json::object()), "edges_pct", "dcov");
       add(r, "edge_coverage_pct", "cov");

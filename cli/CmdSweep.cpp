@@ -1,11 +1,13 @@
 // `slamroute sweep SPEC.yaml --out DIR`: a study of nets x planners x seeds x config variants as
 // one task graph (pipeline/Sweep.hpp). Under `mpirun -n N` or `srun -n N` rank 0 schedules and
 // every rank runs tasks; started directly it runs them here, --jobs at once.
+#include <cstring>
 #include <filesystem>
 
 #include "Commands.hpp"
 #include "Pipeline.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/pipeline/Subprocess.hpp"
 #include "slamroute/pipeline/Sweep.hpp"
 #include "slamroute/pipeline/SweepResults.hpp"
 
@@ -39,8 +41,12 @@ void scheduleStudy(Context& ctx, const SweepOpts& o, pipeline::Cluster& cluster,
                               commandLine(ctx, o, cluster.size()));
   logInfo("results: " + (out / "results.csv").string() + ", " + (out / "summary.md").string());
   std::size_t failed = 0;
-  for (const auto& s : outcome.status)
-    failed += s.state == pipeline::TaskState::Failed || s.state == pipeline::TaskState::Skipped;
+  for (const auto& s : outcome.status) failed += s.state != pipeline::TaskState::Done;
+  if (outcome.interrupted_by != 0)
+    throw pipeline::Interrupted(outcome.interrupted_by,
+                                std::string("sweep interrupted by ") + strsignal(outcome.interrupted_by) +
+                                    "; " + std::to_string(failed) + " task(s) not finished (--resume "
+                                    "continues from the tasks that finished)");
   if (failed > 0)
     throw std::runtime_error("sweep: " + std::to_string(failed) + " task(s) failed or not run (" +
                              (out / "failed_tasks.txt").string() + ")");

@@ -76,35 +76,34 @@ std::optional<int> finishedStep(int pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+void stopSteps(const std::vector<int>& pids, int sig) {
+  for (int pid : pids) ::kill(pid, sig);
+  for (int pid : pids) ::waitpid(pid, nullptr, 0);
+}
+
 namespace {
 
 volatile sig_atomic_t g_stop_signal = 0;
 
 void onStopSignal(int sig) { g_stop_signal = sig; }
 
-/// Catches SIGINT / SIGTERM / SIGHUP while steps run (restoring the previous handlers after), so
-/// the steps can be stopped with the run instead of going on as orphans.
-class StopSignals {
- public:
-  StopSignals() {
-    g_stop_signal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = onStopSignal;
-    sigemptyset(&sa.sa_mask);
-    for (std::size_t i = 0; i < kSignals.size(); ++i) ::sigaction(kSignals[i], &sa, &old_[i]);
-  }
-  ~StopSignals() {
-    for (std::size_t i = 0; i < kSignals.size(); ++i) ::sigaction(kSignals[i], &old_[i], nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
-  std::array<struct sigaction, 3> old_{};
-};
+constexpr std::array<int, 3> kStopSignals{SIGINT, SIGTERM, SIGHUP};
 
 }  // namespace
+
+StopSignals::StopSignals() {
+  g_stop_signal = 0;
+  struct sigaction sa {};
+  sa.sa_handler = onStopSignal;
+  sigemptyset(&sa.sa_mask);
+  for (std::size_t i = 0; i < kStopSignals.size(); ++i) ::sigaction(kStopSignals[i], &sa, &old_[i]);
+}
+
+StopSignals::~StopSignals() {
+  for (std::size_t i = 0; i < kStopSignals.size(); ++i) ::sigaction(kStopSignals[i], &old_[i], nullptr);
+}
+
+int StopSignals::received() const { return g_stop_signal; }
 
 void stopWithParent() {
   const char* parent = std::getenv(kParentEnv);
@@ -148,31 +147,66 @@ std::string selfExe() {
   return buf;
 }
 
+namespace {
+
+using StepClock = std::chrono::steady_clock;
+using RunningSteps = std::map<pid_t, std::pair<std::size_t, StepClock::time_point>>;  ///< pid -> step, start
+
+/// Passes the stop signal on to the running steps, waits for them and throws Interrupted.
+[[noreturn]] void stopOnSignal(int sig, const std::vector<Step>& steps, const RunningSteps& running) {
+  std::string stopped;
+  std::vector<int> pids;
+  for (const auto& [p, run] : running) {
+    pids.push_back(p);
+    stopped += (stopped.empty() ? "" : ", ") + steps[run.first].label;
+  }
+  stopSteps(pids, sig);
+  throw Interrupted(sig, std::string("interrupted by ") + strsignal(sig) +
+                             (stopped.empty() ? "" : "; stopped " + stopped) +
+                             " (--resume continues from the steps that finished)");
+}
+
+/// One line per running step quoting the last line of its log.
+void quoteProgress(const std::vector<Step>& steps, const RunningSteps& running,
+                   StepClock::time_point now) {
+  for (const auto& [p, run] : running) {
+    const std::string line = lastLogLine(steps[run.first].log);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " [%.0f s]", std::chrono::duration<double>(now - run.second).count());
+    logInfo("  running  " + steps[run.first].label + buf + (line.empty() ? "" : ": " + line));
+  }
+}
+
+/// A step that ended with wait status `status`: its result and, when it succeeded, its stamp.
+/// Returns why it failed (empty: it succeeded).
+std::string finishStep(const Step& step, int status, StepClock::time_point start, StepResult& r) {
+  r.seconds = std::chrono::duration<double>(StepClock::now() - start).count();
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  if (r.exit_code != 0)
+    return step.label + " failed: " + lastLogLine(step.log) + " (log: " + step.log.string() + ")";
+  if (!step.stamp.empty()) writeFileAtomic(stampPath(step), step.stamp);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " (%.1f s)", r.seconds);
+  logInfo("  finished " + step.label + buf);
+  return {};
+}
+
+}  // namespace
+
 std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s) {
-  using Clock = std::chrono::steady_clock;
-  auto last_status = Clock::now();
+  auto last_status = StepClock::now();
   std::vector<StepResult> results(steps.size());
-  std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
+  RunningSteps running;
   std::size_t next = 0;
   std::string failure;
   const StopSignals stop_signals;
   while (next < steps.size() || !running.empty()) {
-    if (const int sig = g_stop_signal) {
-      std::string stopped;
-      for (const auto& [p, run] : running) {
-        ::kill(p, sig);
-        stopped += (stopped.empty() ? "" : ", ") + steps[run.first].label;
-      }
-      for (const auto& [p, run] : running) ::waitpid(p, nullptr, 0);
-      throw Interrupted(sig, std::string("interrupted by ") + strsignal(sig) +
-                                 (stopped.empty() ? "" : "; stopped " + stopped) +
-                                 " (--resume continues from the steps that finished)");
-    }
+    if (const int sig = stop_signals.received()) stopOnSignal(sig, steps, running);
     while (failure.empty() && next < steps.size() && static_cast<int>(running.size()) < std::max(1, jobs)) {
       logInfo("  started  " + steps[next].label);
       std::error_code ec;
       std::filesystem::remove(stampPath(steps[next]), ec);  // stale until the step succeeds again
-      running[startStep(steps[next])] = {next, Clock::now()};
+      running[startStep(steps[next])] = {next, StepClock::now()};
       ++next;
     }
     if (running.empty()) break;
@@ -180,16 +214,10 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
     const pid_t pid = ::waitpid(-1, &status, WNOHANG);
     if (pid < 0) throw std::runtime_error("waiting for pipeline steps failed");
     if (pid == 0) {  // none finished: quote the running steps' progress now and then
-      const auto now = Clock::now();
+      const auto now = StepClock::now();
       if (status_every_s > 0.0 && std::chrono::duration<double>(now - last_status).count() >= status_every_s) {
         last_status = now;
-        for (const auto& [p, run] : running) {
-          const std::string line = lastLogLine(steps[run.first].log);
-          char buf[64];
-          std::snprintf(buf, sizeof buf, " [%.0f s]",
-                        std::chrono::duration<double>(now - run.second).count());
-          logInfo("  running  " + steps[run.first].label + buf + (line.empty() ? "" : ": " + line));
-        }
+        quoteProgress(steps, running, now);
       }
       ::usleep(100000);
       continue;
@@ -198,18 +226,8 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
     if (it == running.end()) continue;
     const auto [idx, start] = it->second;
     running.erase(it);
-    StepResult& r = results[idx];
-    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    char buf[64];
-    std::snprintf(buf, sizeof buf, " (%.1f s)", r.seconds);
-    if (r.exit_code == 0) {
-      if (!steps[idx].stamp.empty()) writeFileAtomic(stampPath(steps[idx]), steps[idx].stamp);
-      logInfo("  finished " + steps[idx].label + buf);
-    } else if (failure.empty()) {
-      failure = steps[idx].label + " failed: " + lastLogLine(steps[idx].log) + " (log: " +
-                steps[idx].log.string() + ")";
-    }
+    const std::string why = finishStep(steps[idx], status, start, results[idx]);
+    if (failure.empty()) failure = why;
     if (!failure.empty()) next = steps.size();  // start nothing new; wait for the rest
   }
   if (!failure.empty()) throw std::runtime_error(failure);

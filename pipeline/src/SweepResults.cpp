@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <sstream>
 
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/evaluate/EvaluationResult.hpp"
 #include "slamroute/pipeline/JsonFile.hpp"
 #include "slamroute/pipeline/Plot.hpp"
 #include "slamroute/pipeline/Statistics.hpp"
@@ -43,6 +45,13 @@ std::string rowStatus(const SweepRow& row, const SweepOutcome& o, const fs::path
   return "ok";
 }
 
+/// The evaluation's figures as "eval.<key>" columns (none when the evaluation did not finish).
+void addEvaluationFigures(const fs::path& metrics, std::map<std::string, double>& out) {
+  if (!fs::exists(metrics)) return;
+  for (const auto& [k, v] : evaluate::evaluationFigures(evaluate::readEvaluationJson(metrics)))
+    out["eval." + k] = v;
+}
+
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.10g", v);
@@ -62,7 +71,7 @@ std::vector<RowResult> collectResults(const std::vector<SweepRow>& rows, const S
     json route = readJsonIfPresent(run.route(row.planner));
     route.erase("extra");  // the planners' own statistics: names differ between planners
     flatten(route, "route.", r.metrics);
-    flatten(readJsonIfPresent(run.metrics(row.planner)), "eval.", r.metrics);
+    addEvaluationFigures(run.metrics(row.planner), r.metrics);
     res.push_back(std::move(r));
   }
   return res;
@@ -192,6 +201,9 @@ std::string failedList(const SweepOutcome& o) {
       txt << o.tasks[i].name << ": failed after " << s.attempts << " attempts: " << s.error << "\n";
     else if (s.state == TaskState::Skipped)
       txt << o.tasks[i].name << ": " << s.error << "\n";
+    else if (s.state != TaskState::Done)
+      txt << o.tasks[i].name << ": not finished (the sweep was stopped by "
+          << strsignal(o.interrupted_by) << ")\n";
   }
   return txt.str();
 }
@@ -202,7 +214,7 @@ std::string taskCounts(const SweepOutcome& o) {
   for (const auto& s : o.status) {
     if (s.state == TaskState::Done) ++(s.kept ? kept : ran);
     if (s.state == TaskState::Done && s.attempts > 1) ++retried;
-    if (s.state == TaskState::Failed || s.state == TaskState::Skipped) ++failed;
+    if (s.state != TaskState::Done) ++failed;
   }
   char buf[256];
   std::snprintf(buf, sizeof buf,

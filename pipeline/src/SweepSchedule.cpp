@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <set>
 
@@ -45,7 +46,13 @@ class Scheduler {
   SweepOutcome run() {
     const auto t0 = Clock::now();
     auto last_beat = Clock::now();
+    const StopSignals stop_signals;
+    int interrupted_by = 0;
     while (!q_.finished()) {
+      if ((interrupted_by = stop_signals.received()) != 0) {
+        stopLocalTasks(interrupted_by);
+        break;
+      }
       receive();
       reapLocal();
       dropSilentRanks();
@@ -59,7 +66,7 @@ class Scheduler {
     }
     for (int r = 1; r < c_.size(); ++r)
       if (ranks_[static_cast<std::size_t>(r)].alive) c_.send(r, Tag::Stop, "");
-    SweepOutcome out{tasks_, {}, secondsSince(t0), c_.size()};
+    SweepOutcome out{tasks_, {}, secondsSince(t0), c_.size(), interrupted_by};
     for (std::size_t i = 0; i < tasks_.size(); ++i) out.status.push_back(q_.status(i));
     return out;
   }
@@ -77,6 +84,21 @@ class Scheduler {
         finish(j.at("task").get<std::size_t>(), j.at("exit").get<int>(), j.at("seconds").get<double>(), m->from);
       }
     }
+  }
+
+  /// Passes the stop signal on to the tasks running here and waits for them (the other ranks
+  /// stop theirs when told to stop). The stopped tasks stay unfinished: no stamp, so --resume
+  /// runs them again.
+  void stopLocalTasks(int sig) {
+    std::vector<int> pids;
+    std::string names;
+    for (const auto& [pid, run] : local_) {
+      pids.push_back(pid);
+      names += (names.empty() ? "" : ", ") + tasks_[run.first].name;
+    }
+    logWarn(std::string("sweep: ") + strsignal(sig) + (names.empty() ? "" : ", stopping " + names));
+    stopSteps(pids, sig);
+    local_.clear();
   }
 
   void reapLocal() {

@@ -46,9 +46,9 @@ void reportFinished(Cluster& c, std::map<int, Running>& running) {
 }
 
 void stopAll(std::map<int, Running>& running) {
-  for (const auto& [pid, r] : running) ::kill(pid, SIGTERM);
-  for (const auto& [pid, r] : running)
-    while (!finishedStep(pid)) ::usleep(20000);
+  std::vector<int> pids;
+  for (const auto& [pid, r] : running) pids.push_back(pid);
+  stopSteps(pids, SIGTERM);
   running.clear();
 }
 

@@ -5,7 +5,7 @@
 // street of the PlanGraph with legal turns; C_k is defined in Uncertainty.hpp.
 #include <chrono>
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 
 #include "AntColony.hpp"
@@ -91,33 +91,27 @@ PlanOutput planCoverage(const PlanGraph& pg, const TurnPaths& paths, const Confi
                                      cc.place_max_fraction * cc.c_threshold_m2};
   std::vector<int> considered;
   detail::WalkResult walk = runBaseline(cfg.planner, prob, considered);
-  nlohmann::json ga = nullptr;
+  std::optional<CoverageStats::Ga> ga;
   if (cfg.planner == "aco-ga") {
     const double sw_length = walk.length_m;
     const detail::GeneticResult g =
         detail::geneticRevisits(prob, considered, walk, cc.ga, seed + 1);
     walk = g.best;
-    ga = {{"generations", g.generations_run},
-          {"evaluations", g.evaluations},
-          {"improved_at_generation", g.improved_at_generation},
-          {"switching_length_m", sw_length}};
+    ga = CoverageStats::Ga{g.generations_run, g.evaluations, g.improved_at_generation, sw_length};
   }
   PlanOutput out;
   out.edges = walk.edges;
   out.heuristic = true;
-  out.extra_json =
-      nlohmann::json{
-          {"coverage_legs", walk.reached.size()},
-          {"loop_closure_revisits", walk.revisit_after.size()},
-          {"revisit_length_m", walk.revisit_length_m},
-          {"aco",
-           {{"tour_cost_m", tour.cost_m},
-            {"nearest_neighbour_m", tour.nearest_neighbour_m},
-            {"improved_at_iteration", tour.improved_at_iteration},
-            {"cities", tour.cities.size()}}},
-          {"ga", ga},
-          {"seconds", {{"distances", dist_s}, {"aco", aco_s}, {"total", secondsSince(t0)}}}}
-          .dump();
+  out.stats = CoverageStats{
+      static_cast<long long>(walk.reached.size()),
+      static_cast<long long>(walk.revisit_after.size()),
+      walk.revisit_length_m,
+      {tour.cost_m, tour.nearest_neighbour_m, tour.improved_at_iteration,
+       static_cast<long long>(tour.cities.size())},
+      ga,
+      dist_s,
+      aco_s,
+      secondsSince(t0)};
   return out;
 }
 

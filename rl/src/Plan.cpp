@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
+#include "PlannerStatsJson.hpp"
 #include "slamroute/rl/Planners.hpp"
 #include "slamroute/rl/Uncertainty.hpp"
 
@@ -71,7 +72,7 @@ PlanOutput runPlanner(const PlanGraph& pg, const TurnPaths& paths, const Config&
 /// route.json's "extra": the planner's own figures plus the planning graph and the route's checks.
 std::string extraJson(const RoadGraph& g, const PlanGraph& pg, const Config& cfg, int start,
                       const PlanOutput& out) {
-  nlohmann::json extra = nlohmann::json::parse(out.extra_json.empty() ? "{}" : out.extra_json);
+  nlohmann::json extra = plannerStatsJson(out.stats);
   extra["goal"] = cfg.goal;
   if (cfg.planner == "qlearning") extra["reward"] = cfg.reward;
   extra["plan_graph"] = {{"nodes", pg.n},

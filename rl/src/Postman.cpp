@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <map>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <limits>
 #include <stdexcept>
 
@@ -418,17 +417,15 @@ PlanOutput planPostman(const PlanGraph& pg, const TurnPaths& paths, const Config
   if (!cfg.postman.closed) trimAfterLastNewEdge(out.edges, pg.m);
   double length = 0.0;
   for (int e : out.edges) length += pg.len[sz(e)];
-  out.extra_json = nlohmann::json{{"turn_free_optimum_m", lower_bound},
-                                  {"legal_circulation_m", circulation_len},
-                                  {"trails_before_merge", components},
-                                  {"free_merges", best.swaps},
-                                  {"forcing_rounds", forcing_rounds},
-                                  {"one_way_detours", best.one_way},
-                                  {"closed_walk_detours", best.detours},
-                                  {"detour_length_m", circulationLength(pg, best.y) - circulation_len},
-                                  {"excess_over_turn_free_pct",
-                                   lower_bound > 0 ? 100.0 * (length / lower_bound - 1.0) : 0.0}}
-                       .dump();
+  out.stats = PostmanStats{lower_bound,
+                           circulation_len,
+                           components,
+                           best.swaps,
+                           forcing_rounds,
+                           best.one_way,
+                           best.detours,
+                           circulationLength(pg, best.y) - circulation_len,
+                           lower_bound > 0 ? 100.0 * (length / lower_bound - 1.0) : 0.0};
   return out;
 }
 

@@ -38,7 +38,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <random>
 #include <stdexcept>
 
@@ -422,16 +421,14 @@ PlanOutput planQLearning(const PlanGraph& pg, const TurnPaths& paths, const Conf
     out.notes = "greedy roll-out stalled " + std::to_string(rollout.segments) +
                 " time(s); completed by shortest paths to the nearest uncovered part";
   out.heuristic = true;
-  out.extra_json =
-      nlohmann::json{{"episodes", qc.episodes},
-                     {"episodes_reaching_goal", stats.episodes_reaching_goal},
-                     {"training_steps", stats.steps},
-                     {"q_table_entries", t.q.size()},
-                     {"u_ref_logdet_per_edge", env.u_ref},
-                     {"shortest_path_segments", rollout.segments},
-                     {"shortest_path_length_m", rollout.shortest_len_m},
-                     {"learned_policy_share", learnedShare(pg, out.edges, rollout.shortest_len_m)}}
-          .dump();
+  out.stats = QLearningStats{qc.episodes,
+                             stats.episodes_reaching_goal,
+                             stats.steps,
+                             static_cast<long long>(t.q.size()),
+                             env.u_ref,
+                             rollout.segments,
+                             rollout.shortest_len_m,
+                             learnedShare(pg, out.edges, rollout.shortest_len_m)};
   return out;
 }
 

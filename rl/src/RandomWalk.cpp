@@ -2,7 +2,6 @@
 // "random route"). Capped at random.max_steps_per_edge * edges, then finished by shortest paths.
 // With random.budget_m > 0 the walk stops once it has driven that far, goal met or not: a
 // mapping crew has a fixed driving budget, and Table 1 compares routes of equal length.
-#include <nlohmann/json.hpp>
 #include <random>
 
 #include "Coverage.hpp"
@@ -40,8 +39,7 @@ PlanOutput planRandom(const PlanGraph& pg, const TurnPaths& paths, const Config&
     out.notes = "random walk hit its step cap; finished by shortest paths";
   }
   out.heuristic = true;
-  out.extra_json = nlohmann::json{{"shortest_path_segments", segments},
-                                  {"shortest_path_length_m", extra}}.dump();
+  out.stats = RandomWalkStats{segments, extra};
   return out;
 }
 

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "slamroute/core/Log.hpp"
@@ -159,10 +158,7 @@ PlanOutput planTsp(const PlanGraph& pg, const TurnPaths& paths, const Config& cf
   const double matrix_cost = tourCost(d, order, tc.closed_tour);
   if (tc.closed_tour) order.push_back(start);
   const double length = expandLegs(pg, paths, order, start, out.edges);
-  out.extra_json = nlohmann::json{{"method", method},
-                                  {"tour_cost_m", length},
-                                  {"matrix_tour_cost_m", matrix_cost}}
-                       .dump();
+  out.stats = TspStats{method, length, matrix_cost};
   return out;
 }
 

@@ -217,31 +217,16 @@ std::uint64_t folderBytes(const fs::path& dir) {
   return total;
 }
 
-}  // namespace
-
-SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const SurveyConfig& sc = cfg.survey;
-  if (!(sc.trace_hz > 0) || !(sc.step_length_s > 0) || !(sc.route_length_m > 0))
-    throw std::invalid_argument("survey: trace_hz, step_length_s and route_length_m must be > 0");
-  const SumoNet net = SumoNet::read(opts.net);
-  const DriveGraph dg = DriveGraph::fromNet(net);
-  StagingDir staging(opts.out_dir, "survey.json");
-
-  const auto routes = coveringRoutes(dg, sc.route_length_m);
-  std::set<std::size_t> planned;
-  for (const auto& r : routes) planned.insert(r.begin(), r.end());
-  logInfo("survey: " + std::to_string(routes.size()) + " covering routes over " +
-          std::to_string(dg.numEdges()) + " drivable edges of " + opts.net.string());
-
-  SurveyRecord rec = simulate(net, dg, routes, sc, opts.seed);
-
+/// What the survey drove: vehicles, trace rows and the drivable edges visited (the rest listed
+/// in `unvisited`), against the `planned` covering routes.
+SurveyResult surveyFigures(const SurveyRecord& rec, const DriveGraph& dg,
+                           const std::set<std::size_t>& planned,
+                           std::vector<std::string>& unvisited) {
   SurveyResult res;
   res.survey_vehicles = rec.survey_vehicles;
   res.background_vehicles = static_cast<std::size_t>(rec.background);
   res.trace_rows = rec.trace_rows;
   res.drivable_edges = dg.numEdges();
-  std::vector<std::string> unvisited;
   for (const auto& e : dg.edges) {
     if (rec.visited.count(e.sumo_edge))
       ++res.visited_edges;
@@ -252,10 +237,11 @@ SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
   res.planned_coverage_pct = res.drivable_edges ? 100.0 * planned.size() / res.drivable_edges : 0.0;
   res.sim_seconds = rec.sim_seconds;
   res.depth_frames = rec.shots.size();
+  return res;
+}
 
-  writeFileAtomic(staging.path() / "traces.csv", rec.traces);
-  writeDepthFrames(staging.path() / "depth", net, cfg, opts.seed, rec.shots);
-
+void writeSurveyJson(const fs::path& path, const SurveyOptions& opts, const SurveyConfig& sc,
+                     const SurveyResult& res, const std::vector<std::string>& unvisited) {
   nlohmann::json j;
   j["net"] = fs::absolute(opts.net).lexically_normal().string();
   j["seed"] = opts.seed;
@@ -273,7 +259,33 @@ SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
   j["planned_coverage_pct"] = res.planned_coverage_pct;
   j["unvisited_edges"] = unvisited;
   j["sim_seconds"] = res.sim_seconds;
-  writeFileAtomic(staging.path() / "survey.json", j.dump(2) + "\n");
+  writeFileAtomic(path, j.dump(2) + "\n");
+}
+
+}  // namespace
+
+SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const SurveyConfig& sc = cfg.survey;
+  if (!(sc.trace_hz > 0) || !(sc.step_length_s > 0) || !(sc.route_length_m > 0))
+    throw std::invalid_argument("survey: trace_hz, step_length_s and route_length_m must be > 0");
+  const SumoNet net = SumoNet::read(opts.net);
+  const DriveGraph dg = DriveGraph::fromNet(net);
+  StagingDir staging(opts.out_dir, "survey.json");
+
+  const auto routes = coveringRoutes(dg, sc.route_length_m);
+  std::set<std::size_t> planned;
+  for (const auto& r : routes) planned.insert(r.begin(), r.end());
+  logInfo("survey: " + std::to_string(routes.size()) + " covering routes over " +
+          std::to_string(dg.numEdges()) + " drivable edges of " + opts.net.string());
+
+  const SurveyRecord rec = simulate(net, dg, routes, sc, opts.seed);
+  std::vector<std::string> unvisited;
+  SurveyResult res = surveyFigures(rec, dg, planned, unvisited);
+
+  writeFileAtomic(staging.path() / "traces.csv", rec.traces);
+  writeDepthFrames(staging.path() / "depth", net, cfg, opts.seed, rec.shots);
+  writeSurveyJson(staging.path() / "survey.json", opts, sc, res, unvisited);
   res.bytes_written = folderBytes(staging.path());
   staging.commit();
   res.out_dir = staging.target();

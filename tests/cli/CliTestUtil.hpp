@@ -5,10 +5,12 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 namespace slamroute::test {
 
@@ -59,6 +61,26 @@ inline void expectCleanFailure(const std::string& args, const std::string& fragm
   std::size_t n = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
   EXPECT_EQ(n, keep) << "something was written for: " << args;
+}
+
+/// Polls `done` every 20 ms for at most `max_s` seconds (a bound against a hang, not a speed
+/// figure); false when it never came true.
+template <class F>
+bool waitFor(F done, int max_s = 60) {
+  for (int i = 0; i < max_s * 50; ++i) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+/// Gone or a zombie (whoever adopted an orphan may not reap it at once).
+inline bool processDead(long pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;
+  const auto close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z';
 }
 
 }  // namespace slamroute::test

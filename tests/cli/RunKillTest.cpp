@@ -6,9 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <fstream>
-#include <thread>
 
 #include "CliTestUtil.hpp"
 
@@ -26,25 +24,6 @@ long stagingPid(const fs::path& run) {
   return 0;
 }
 
-/// Gone or a zombie (whoever adopted the orphan may not reap it at once).
-bool dead(long pid) {
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return true;
-  const auto close = line.rfind(')');
-  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z';
-}
-
-/// Polls `done` every 20 ms for at most a minute (a bound against a hang, not a speed figure).
-template <class F>
-bool waitFor(F done) {
-  for (int i = 0; i < 3000; ++i) {
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return false;
-}
-
 TEST(RunKill, AStepDiesWithItsKilledRunAndRemovesItsStagingFolder) {
   const auto dir = test::cliTempDir("run_kill");
   // Survey routes long enough that the survey is still running when the run is killed.
@@ -58,11 +37,11 @@ TEST(RunKill, AStepDiesWithItsKilledRunAndRemovesItsStagingFolder) {
     ::_exit(127);
   }
   long survey = 0;
-  ASSERT_TRUE(waitFor([&] { return (survey = stagingPid(dir / "run")) != 0; }))
+  ASSERT_TRUE(test::waitFor([&] { return (survey = stagingPid(dir / "run")) != 0; }))
       << "the survey step never started";
   ::kill(run, SIGKILL);
   ::waitpid(run, nullptr, 0);
-  EXPECT_TRUE(waitFor([&] { return dead(survey); }))
+  EXPECT_TRUE(test::waitFor([&] { return test::processDead(survey); }))
       << "the survey step (pid " << survey << ") outlived its run";
   EXPECT_EQ(stagingPid(dir / "run"), 0) << "its staging folder is left";
   EXPECT_FALSE(fs::exists(dir / "run" / "survey"));

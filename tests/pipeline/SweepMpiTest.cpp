@@ -6,31 +6,16 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <fstream>
-#include <iterator>
-#include <sstream>
 #include <thread>
 
-#include "cli/CliTestUtil.hpp"
-#include "slamroute/core/AtomicFile.hpp"
+#include "SweepTestUtil.hpp"
 
 namespace slamroute {
 namespace {
 namespace fs = std::filesystem;
-
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-/// A study of one net, two planners, one seed, the SLAM on the first 30 s of each drive: 8 tasks.
-fs::path writeSpec(const fs::path& dir) {
-  writeFileAtomic(dir / "fast.yaml", "evaluate:\n  input:\n    scan_stride: 5\n    end_s: 30\n");
-  writeFileAtomic(dir / "spec.yaml", "nets: [" + std::string(SLAMROUTE_SOURCE_DIR) +
-                                         "/networks/test/plus.net.xml]\nplanners: [qlearning, random]\n"
-                                         "seeds: [3]\nvariants:\n  - {name: fast, config: fast.yaml}\n");
-  return dir / "spec.yaml";
-}
+using test::csvLines;
+using test::readText;
+using test::writeSpec;
 
 /// `mpirun -n RANKS slamroute sweep ...` on loopback (root allowed: CI containers run as root).
 /// `recovery`: the job goes on when a rank dies (mpirun then exits 0 whatever rank 0 returns).
@@ -51,14 +36,6 @@ std::string whyNoMpi() {
   if (test::runCommand("command -v mpirun").code != 0)
     return "mpirun not found (scripts/setup.sh installs openmpi-bin)";
   return "";
-}
-
-/// results.csv's rows: every metric but the run's own timings (left out of the file).
-std::vector<std::string> csvLines(const fs::path& csv) {
-  std::vector<std::string> lines;
-  std::istringstream in(readText(csv));
-  for (std::string l; std::getline(in, l);) lines.push_back(l);
-  return lines;
 }
 
 TEST(SweepMpi, TwoRanksGiveTheRowsOfALocalSweep) {

@@ -90,3 +90,29 @@ TEST(Postman, OpenRouteStopsAfterFullCoverage) {
 
 }  // namespace
 }  // namespace slamroute::rl
+
+namespace slamroute::rl {
+namespace {
+
+TEST(Postman, ItsTypedStatisticsAreWhatRouteJsonCarries) {
+  // Every node of the two-way grid is balanced: the legal circulation drives each edge once, at
+  // the turn-free optimum (2400 m), with no detour.
+  const RoadGraph g = test::grid(3, 3);
+  const PlanGraph pg = PlanGraph::build(g);
+  const TurnPaths paths(pg);
+  const PlanOutput out = planPostman(pg, paths, postmanCfg(), 0);
+  ASSERT_TRUE(std::holds_alternative<PostmanStats>(out.stats));
+  const PostmanStats& s = std::get<PostmanStats>(out.stats);
+  EXPECT_NEAR(s.turn_free_optimum_m, 2400.0, 1e-6);
+  EXPECT_NEAR(s.legal_circulation_m, 2400.0, 1e-6);
+  EXPECT_NEAR(s.detour_length_m, 0.0, 1e-9);
+  EXPECT_NEAR(s.excess_over_turn_free_pct, 0.0, 1e-9);
+  const nlohmann::json extra = test::extra(plan(g, postmanCfg(), 1));
+  EXPECT_DOUBLE_EQ(extra.at("turn_free_optimum_m").get<double>(), s.turn_free_optimum_m);
+  EXPECT_EQ(extra.at("trails_before_merge").get<long long>(), s.trails_before_merge);
+  EXPECT_EQ(extra.at("forcing_rounds").get<long long>(), s.forcing_rounds);
+  EXPECT_TRUE(extra.at("forcing_rounds").is_number_integer());
+}
+
+}  // namespace
+}  // namespace slamroute::rl

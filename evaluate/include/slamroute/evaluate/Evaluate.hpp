@@ -1,6 +1,7 @@
 #pragma once
 // `slamroute evaluate` and `slamroute compare` as library calls: run the SLAM pipeline on a drive
-// folder, write estimate.tum / metrics.json / map.pcd / per_edge.csv / plots.
+// folder, write estimate.tum / metrics.json / map.pcd / per_edge.csv / plots and return what was
+// measured (EvaluationResult).
 #include <filesystem>
 #include <map>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "slamroute/core/Scan.hpp"
 #include "slamroute/evaluate/Config.hpp"
+#include "slamroute/evaluate/EvaluationResult.hpp"
 #include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/evaluate/Slam.hpp"
 
@@ -19,10 +21,13 @@ LidarSpec readSensorSpec(const std::filesystem::path& path);
 
 MetricsOptions metricsOptions(const Config& cfg);
 
+TrajectorySummary trajectorySummary(const TrajectoryMetrics& m);
 /// The trajectory part of metrics.json (also what `compare --json` prints).
 nlohmann::json trajectoryJson(const TrajectoryMetrics& m);
 
 /// Reliability summary: per-reason counts and merged stretches of non-Ok frames.
+Reliability reliabilityOf(const SlamResult& r);
+/// reliabilityOf as it appears in metrics.json.
 nlohmann::json reliabilityJson(const SlamResult& r);
 
 /// Disk an evaluation of a drive of `route_km` needs in its output folder [GB = 10^9 bytes]:
@@ -34,20 +39,20 @@ double evaluationDiskGb(double route_km, const Config& cfg);
 
 /// Runs the whole evaluation of a drive folder and writes the outputs into `out`: evaluateScans
 /// with the drive's groundtruth.tum (throws when it is missing or empty).
-nlohmann::json evaluateDrive(const std::filesystem::path& drive, const ScanSource& source,
+EvaluationResult evaluateDrive(const std::filesystem::path& drive, const ScanSource& source,
                              const std::filesystem::path& out, const Config& cfg,
                              const std::map<std::string, std::string>& edge_labels = {});
 
 /// Runs the whole evaluation of the scans of `folder` and writes the outputs into `out`.
 /// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
-/// still computed after SE(3) alignment. Returns the metrics.json content. An empty
-/// `ground_truth` (a recording without one): the estimate starts at the identity and
-/// metrics.json has no trajectory metrics ("trajectory_metrics": "skipped: ..."). The drive-folder
+/// still computed after SE(3) alignment. Returns what metrics.json holds. An empty
+/// `ground_truth` (a recording without one): the estimate starts at the identity and the result
+/// has no trajectory metrics ("trajectory_metrics": "skipped: ..." in the file). The drive-folder
 /// files that `folder` holds are used: odometry.csv / odometry.yaml (motion prior), world.ply
 /// (map accuracy), pose_edges.csv (per-edge drift), world.yaml (coverage).
 /// `edge_labels` (optional): a label per SUMO edge (e.g. the simulated world's street kind);
-/// metrics.json then gets "drift_by_label": the length-weighted mean drift per label.
-nlohmann::json evaluateScans(const std::filesystem::path& folder, const ScanSource& source,
+/// the result then has drift_by_label: the length-weighted mean drift per label.
+EvaluationResult evaluateScans(const std::filesystem::path& folder, const ScanSource& source,
                              const Trajectory& ground_truth, const std::filesystem::path& out,
                              const Config& cfg,
                              const std::map<std::string, std::string>& edge_labels = {});

@@ -2,6 +2,9 @@
 // Runs slamroute's own subcommands as child processes. libsumo allows one simulation per
 // process, so the pipeline runs every SUMO step (survey, each drive) in its own process; this
 // also lets independent steps use both cores.
+#include <signal.h>
+
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -36,6 +39,22 @@ struct Interrupted : std::runtime_error {
   int signal;  ///< the signal that stopped the run; the program exits with 128 + it
 };
 
+/// While one lives, SIGINT, SIGTERM and SIGHUP (a job scheduler stopping the run, a closed
+/// terminal, Ctrl-C) are caught instead of ending the process, so that the steps it runs can be
+/// stopped with it instead of going on as orphans; the previous handlers come back when it goes.
+class StopSignals {
+ public:
+  StopSignals();
+  ~StopSignals();
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  /// The last stop signal caught since construction; 0: none.
+  int received() const;
+
+ private:
+  std::array<struct sigaction, 3> old_{};
+};
+
 /// In a step started by runSteps: asks the kernel to send SIGTERM when the parent dies (SIGKILL
 /// of `run` included), so no step goes on as an orphan writing results nobody stamps; SIGTERM
 /// removes the step's staging folder. Does nothing in a process not started by runSteps.
@@ -51,6 +70,10 @@ int startStep(const Step& s);
 /// The exit code of a child started by startStep once it has ended (128 + signal when killed);
 /// nullopt while it runs. Reaps only that child.
 std::optional<int> finishedStep(int pid);
+
+/// Sends `sig` to each child started by startStep and waits until each has ended (a step cleans
+/// up on SIGINT / SIGTERM: its staging folder goes).
+void stopSteps(const std::vector<int>& pids, int sig);
 
 /// Runs `steps` with at most `jobs` at once, prints one line per start/finish and, every
 /// `status_every_s` seconds (0 = never), one line per running step quoting the last line of its

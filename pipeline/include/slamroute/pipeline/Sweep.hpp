@@ -27,9 +27,13 @@ struct SweepOutcome {
   std::vector<TaskStatus> status;  ///< per task
   double seconds = 0.0;            ///< wall time of the whole sweep
   int ranks = 1;
+  /// The SIGINT / SIGTERM / SIGHUP that stopped the sweep (0: it ran to the end). Its running
+  /// tasks were stopped with it and are left unfinished, like the ones not started.
+  int interrupted_by = 0;
 };
 
-/// Rank 0: runs `tasks` to the end over the cluster's ranks and tells the others to stop.
+/// Rank 0: runs `tasks` to the end (or until a stop signal) over the cluster's ranks and tells
+/// the others to stop.
 SweepOutcome scheduleSweep(Cluster& cluster, std::vector<SweepTask> tasks, const SweepOptions& opts);
 
 /// Ranks > 0: runs the tasks rank 0 sends until it says stop (or goes silent for

@@ -9,6 +9,7 @@
 #include "slamroute/core/Route.hpp"
 #include "slamroute/rl/Config.hpp"
 #include "slamroute/rl/PlanGraph.hpp"
+#include "slamroute/rl/PlannerStats.hpp"
 
 namespace slamroute::rl {
 
@@ -18,7 +19,7 @@ struct PlanOutput {
   bool heuristic = false;                   ///< optimality not guaranteed
   bool completed_by_shortest_paths = false; ///< finished by shortest paths after a stall / cap
   std::string notes;
-  std::string extra_json = "{}";            ///< planner-specific figures (JSON object)
+  PlannerStats stats;                       ///< the planner family's own figures
 };
 
 /// Coverage goal of an episode / a route: every node visited, or every street driven.

@@ -1,0 +1,93 @@
+// The report's test of the paper's premise: does the depth-image edge weight predict the LiDAR
+// drift measured on the edge, and which kinds of simulated street drift least.
+#include <cmath>
+#include <fstream>
+
+#include "ReportSections.hpp"
+#include "slamroute/pipeline/Plot.hpp"
+#include "slamroute/pipeline/Statistics.hpp"
+
+namespace slamroute::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The comma-separated fields of one CSV line.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream ss(line);
+  std::string f;
+  while (std::getline(ss, f, ',')) fields.push_back(f);
+  return fields;
+}
+
+/// Adds one per_edge.csv row (edge, ..., length_m at 3, drift_pct at 6) to `acc`.
+void addDriftRow(const std::vector<std::string>& c, PooledDrift& acc) {
+  if (c.size() < 7) return;
+  try {
+    const double len = std::stod(c[3]), drift = std::stod(c[6]);
+    if (!std::isfinite(drift) || len < 20.0) return;  // short pieces: drift is noise
+    acc[c[0]].first += drift * len;
+    acc[c[0]].second += len;
+  } catch (const std::exception&) {
+  }
+}
+
+}  // namespace
+
+PooledDrift pooledDrift(const fs::path& out, const std::vector<std::string>& planners) {
+  PooledDrift acc;
+  for (const auto& p : planners) {
+    std::ifstream in(out / "eval" / p / "per_edge.csv");
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) addDriftRow(csvFields(line), acc);
+  }
+  return acc;
+}
+
+void writeWeightVsDriftSection(std::ostringstream& md, const ReportData& data) {
+  md << "## Does the edge weight predict LiDAR drift?\n\n";
+  std::vector<double> w, d;
+  for (const auto& e : data.graph.edges)
+    for (const auto& se : e.sumo_edges) {
+      auto it = data.drift.find(se);
+      if (it == data.drift.end() || it->second.second <= 0) continue;
+      w.push_back(e.weight);
+      d.push_back(it->second.first / it->second.second);
+    }
+  const double rho = pipeline::spearman(w, d);
+  md << "Spearman rank correlation between an edge's depth-image weight and the measured "
+        "translational drift on it (pooled over all drives, pieces >= 20 m): **rho = "
+     << reportNumber(rho, 3) << "** over n = " << w.size()
+     << " SUMO edges. The paper's premise predicts rho < 0 (a higher weight, i.e. more varied "
+        "surface normals, should mean less drift).\n\n";
+  if (w.empty()) return;
+  pipeline::scatterPng(data.pictures / "weight_vs_drift.png", w, d, "edge weight", "drift [%]");
+  md << "![weight vs drift](report/weight_vs_drift.png)\n\n";
+}
+
+/// Length-weighted mean drift per kind of street the simulated world lined the edge with: the
+/// ground truth behind the depth-image weight (rich streets should drift least).
+void writeDriftByStreetKindSection(std::ostringstream& md, const ReportData& data) {
+  if (!data.world) return;
+  PooledDrift by_kind;  // street kind -> (sum drift*len, sum len)
+  for (const auto& [edge, dl] : data.drift) {
+    std::string kind;
+    try {
+      kind = simulate::streetKindName(data.world->streetKind(edge));
+    } catch (const std::exception&) {
+      continue;  // not a street of this world
+    }
+    by_kind[kind].first += dl.first;
+    by_kind[kind].second += dl.second;
+  }
+  md << "Drift by the kind of street the simulated city lines it with (all drives pooled, "
+        "length-weighted):\n\n| street kind | driven [km] | drift [%] |\n|---|---|---|\n";
+  for (const auto& [kind, dl] : by_kind)
+    md << "| " << kind << " | " << reportNumber(dl.second / 1000.0, 2) << " | "
+       << reportNumber(dl.first / dl.second, 2) << " |\n";
+  md << "\n";
+}
+
+}  // namespace slamroute::cli
