@@ -5,10 +5,36 @@
 
 #include "Commands.hpp"
 #include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/FleetRoute.hpp"
 #include "slamroute/simulate/Drive.hpp"
+#include "slamroute/simulate/FleetDrive.hpp"
 #include "slamroute/simulate/SimulatedScanSource.hpp"
 
 namespace slamroute::cli {
+namespace {
+
+std::string driveLine(const simulate::DriveResult& r) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "%zu edges, %.0f m driven in %.1f s simulated (%zu poses, %d teleports)",
+                r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(),
+                r.teleports);
+  return line;
+}
+
+/// A fleet's route.json: every vehicle in one SUMO session, DIR/vehicle_K + DIR/fleet.json.
+void driveFleet(const simulate::DriveOptions& d, const simulate::Config& cfg) {
+  const simulate::FleetDriveResult r = simulate::runFleetDrive(d, cfg);
+  for (std::size_t k = 0; k < r.vehicles.size(); ++k)
+    std::cout << "drive: " << r.info.vehicles[k].id << ": " << driveLine(r.vehicles[k]) << "\n";
+  char line[160];
+  std::snprintf(line, sizeof line, "drive: fleet of %zu, makespan %.1f s simulated, %.1f s wall",
+                r.vehicles.size(), r.info.makespanSeconds(), r.wall_seconds);
+  std::cout << line << "\n"
+            << "wrote " << r.out_dir.string() << "\n";
+}
+
+}  // namespace
 
 void registerDrive(CLI::App& app, Context& ctx) {
   struct Opts {
@@ -55,14 +81,15 @@ void registerDrive(CLI::App& app, Context& ctx) {
     d.write_world_mesh = !o->no_mesh;
     d.join_forbidden_turns = !o->strict_turns;
     d.seed = ctx.cfg.seed;
+    if (FleetRoute::isFleetFile(d.route_file)) {
+      if (!o->map_png.empty()) throw std::invalid_argument("--map-png: one vehicle only");
+      driveFleet(d, cfg);
+      return;
+    }
     const simulate::DriveResult r = simulate::runDrive(d, cfg);
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "drive: %zu edges, %.0f m driven in %.1f s simulated (%zu poses, %d teleports), "
-                  "%.1f s wall",
-                  r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(),
-                  r.teleports, r.wall_seconds);
-    std::cout << line << "\n"
+    char wall[64];
+    std::snprintf(wall, sizeof wall, ", %.1f s wall", r.wall_seconds);
+    std::cout << "drive: " << driveLine(r) << wall << "\n"
               << "wrote " << r.out_dir.string() << "\n";
     if (!o->map_png.empty()) {
       simulate::MapPngOptions mo;
