@@ -115,3 +115,13 @@ FleetResult mergeFleet(const std::vector<FleetVehicleInput>& vehicles, const Con
                        const FleetMergeOptions& opt);
 
 }  // namespace slamroute::evaluate
+
+namespace slamroute::evaluate {
+
+/// Writes OUT/fleet_metrics.json (per vehicle and merged), OUT/merged_<folder>.tum (each
+/// vehicle's estimate after the merge), OUT/fleet_closures.csv and OUT/merged_map.pcd.
+/// `folders`: each vehicle's folder name (vehicle_K).
+void writeFleetOutputs(const std::filesystem::path& out, const FleetResult& r,
+                       const std::vector<std::string>& folders);
+
+}  // namespace slamroute::evaluate
