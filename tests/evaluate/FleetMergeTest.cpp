@@ -13,34 +13,6 @@ namespace {
 using namespace slamroute;
 using namespace slamroute::evaluate;
 
-/// One vehicle around the rounded 80 m loop, 1.5 m per scan, starting at arc length start_m.
-class LoopVehicle : public ScanSource {
- public:
-  LoopVehicle(const test::Scene& scene, double start_m) : scene_(scene), start_m_(start_m) {
-    spec_.channels = 32;
-    spec_.horizontal_samples = 900;
-  }
-  std::size_t size() const override { return 200; }
-  double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
-  Pose3 pose(std::size_t i) const {
-    return test::roundedLoopPose(start_m_ + 1.5 * static_cast<double>(i), 80.0, 10.0);
-  }
-  Scan scan(std::size_t i) const override {
-    return test::scanScene(scene_, pose(i), spec_, time(i), 0.03, 100 + i);
-  }
-  LidarSpec spec() const override { return spec_; }
-  Trajectory groundTruth() const {
-    Trajectory gt;
-    for (std::size_t i = 0; i < size(); ++i) gt.push_back({time(i), pose(i)});
-    return gt;
-  }
-
- private:
-  const test::Scene& scene_;
-  double start_m_;
-  LidarSpec spec_;
-};
-
 Trajectory moved(const Trajectory& t, const Pose3& T) {
   Trajectory out = t;
   for (auto& p : out) p.T_world_body = T * p.T_world_body;
@@ -48,8 +20,7 @@ Trajectory moved(const Trajectory& t, const Pose3& T) {
 }
 
 TEST(FleetMerge, ClosuresFromGroundTruthLeaveExactEstimatesUnchanged) {
-  const test::Scene scene = test::cityScene(80.0);
-  const LoopVehicle a(scene, 0.0), b(scene, 150.0);
+  const test::LoopScanSource a(0.0, 200), b(150.0, 200);
   std::vector<FleetVehicleInput> vs = {{"a", {}, a.groundTruth(), a.groundTruth(), &a},
                                        {"b", {}, b.groundTruth(), b.groundTruth(), &b}};
   const FleetMergeOptions opt;
@@ -76,8 +47,7 @@ TEST(FleetMerge, ClosuresFromGroundTruthLeaveExactEstimatesUnchanged) {
 }
 
 TEST(FleetMerge, FindsClosuresBetweenVehiclesAndJoinsAnOffsetEstimate) {
-  const test::Scene scene = test::cityScene(80.0);
-  const LoopVehicle a(scene, 0.0), b(scene, 150.0);
+  const test::LoopScanSource a(0.0, 200), b(150.0, 200);
   // b's estimate is its truth moved by 2.5 m and 4 degrees: a start pose known only roughly
   Pose3 off = test::poseXYZYaw(2.0, -1.5, 0.0, 4.0 * M_PI / 180.0);
   std::vector<FleetVehicleInput> vs = {{"a", {}, a.groundTruth(), a.groundTruth(), &a},
@@ -102,8 +72,7 @@ TEST(FleetMerge, FindsClosuresBetweenVehiclesAndJoinsAnOffsetEstimate) {
 }
 
 TEST(FleetMerge, CommonAteOfTwoEqualOffsetsIsZeroAndOfOneOffsetIsShared) {
-  const test::Scene scene = test::cityScene(80.0);
-  const LoopVehicle a(scene, 0.0), b(scene, 150.0);
+  const test::LoopScanSource a(0.0, 200), b(150.0, 200);
   const Pose3 shift = test::poseXYZYaw(3.0, 0.0, 0.0, 0.0);
   const auto same = commonAteRmse({moved(a.groundTruth(), shift), moved(b.groundTruth(), shift)},
                                   {a.groundTruth(), b.groundTruth()}, 0.02);

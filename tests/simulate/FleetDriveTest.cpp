@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "DriveTestUtil.hpp"
 #include "TestTmp.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/FleetDrive.hpp"
@@ -18,33 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using namespace slamroute;
 
-double distToPolyline(const Point3& p, const Polyline& pl) {
-  double best = 1e18;
-  for (std::size_t i = 1; i < pl.size(); ++i) {
-    const Eigen::Vector2d a = pl[i - 1].head<2>(), b = pl[i].head<2>(), q = p.head<2>();
-    const double len2 = (b - a).squaredNorm();
-    const double s = len2 > 0 ? std::clamp((q - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (a + s * (b - a) - q).norm());
-  }
-  return best;
-}
-
-/// The distinct edges of pose_edges.csv, in order.
-std::vector<std::string> drivenEdges(const fs::path& dir) {
-  std::ifstream in(dir / drive_files::kPoseEdges);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> seq;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string idx, t, edge;
-    std::getline(ss, idx, ',');
-    std::getline(ss, t, ',');
-    std::getline(ss, edge, ',');
-    if (seq.empty() || seq.back() != edge) seq.push_back(edge);
-  }
-  return seq;
-}
+using test::distToPolyline;
+using test::drivenEdges;
 
 /// Share of the ground-truth positions within 0.5 m of a lane of one of `edges`.
 double shareOnEdges(const Trajectory& gt, const SumoNet& net,
