@@ -126,14 +126,6 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg) {
 
 namespace {
 
-/// The voxel of a point: 21 bits per axis (+-2^20 voxels around the origin).
-std::uint64_t voxelKey(const Eigen::Vector3f& p, float inv) {
-  const auto q = [&](float v) {
-    return static_cast<std::uint64_t>(voxelIndex(v, inv) + (1 << 20)) & 0x1FFFFF;
-  };
-  return (q(p.x()) << 42) | (q(p.y()) << 21) | q(p.z());
-}
-
 /// (voxel, index) of every point, sorted: each voxel's points in input order.
 std::vector<std::pair<std::uint64_t, std::uint32_t>> sortedKeys(const Cloud& in, float inv) {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;

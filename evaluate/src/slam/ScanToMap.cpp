@@ -4,21 +4,57 @@
 
 namespace slamroute::evaluate::slam {
 
+ScanToMap::ScanToMap(const Config& cfg)
+    : cfg_(cfg), edge_cells_(cfg.mapping.edge_voxel_m), plane_cells_(cfg.mapping.surf_voxel_m) {}
+
 void ScanToMap::rebuild(const KeyframeGraph& graph, bool force) {
+  const Vec3 here = graph.back().T_world.translation();
+  if (!force && (here - built_at_).norm() < cfg_.mapping.local_map_update_m) return;
+  built_at_ = here;
+  const std::vector<int> want = inReach(graph);
+  if (force) {  // the keyframes' poses moved: start again
+    in_map_.clear();
+    edge_cells_.clear();
+    plane_cells_.clear();
+  }
+  take(want);        // keyframes that left the reach
+  put(graph, want);  // keyframes that came into it
+  map_.build(edge_cells_.centroids(), plane_cells_.centroids());
+}
+
+std::vector<int> ScanToMap::inReach(const KeyframeGraph& graph) const {
   const MappingConfig& c = cfg_.mapping;
   const Vec3 here = graph.back().T_world.translation();
-  if (!force && (here - built_at_).norm() < c.local_map_update_m) return;
-  built_at_ = here;
-  Cloud edges, planes;
+  std::vector<int> want;
   const int n = static_cast<int>(graph.size());
-  for (int k = n - 1; k >= 0 && k >= n - c.local_map_keyframes; --k) {
-    const Keyframe& kf = graph.at(static_cast<std::size_t>(k));
-    if ((kf.T_world.translation() - here).norm() > c.local_map_radius_m) continue;
-    const Cloud e = transformed(kf.edges, kf.T_world), p = transformed(kf.planes, kf.T_world);
-    edges.insert(edges.end(), e.begin(), e.end());
-    planes.insert(planes.end(), p.begin(), p.end());
+  for (int k = std::max(0, n - c.local_map_keyframes); k < n; ++k)
+    if ((graph.at(static_cast<std::size_t>(k)).T_world.translation() - here).norm() <= c.local_map_radius_m)
+      want.push_back(k);
+  return want;
+}
+
+void ScanToMap::take(const std::vector<int>& keep) {
+  for (auto it = in_map_.begin(); it != in_map_.end();) {
+    if (std::binary_search(keep.begin(), keep.end(), it->first)) {
+      ++it;
+      continue;
+    }
+    edge_cells_.remove(it->second.edges);
+    plane_cells_.remove(it->second.planes);
+    it = in_map_.erase(it);
   }
-  map_.build(voxelFilter(edges, c.edge_voxel_m), voxelFilter(planes, c.surf_voxel_m));
+}
+
+void ScanToMap::put(const KeyframeGraph& graph, const std::vector<int>& want) {
+  for (const int k : want) {
+    if (in_map_.count(k)) continue;
+    const Keyframe& kf = graph.at(static_cast<std::size_t>(k));
+    InMap& m = in_map_[k];
+    m.edges = transformed(kf.edges, kf.T_world);
+    m.planes = transformed(kf.planes, kf.T_world);
+    edge_cells_.add(m.edges);
+    plane_cells_.add(m.planes);
+  }
 }
 
 AlignOptions ScanToMap::options(const MotionModel& motion, const Prediction& step) const {

@@ -1,9 +1,13 @@
 #pragma once
 // Scan-to-map registration (LeGO-LOAM "mapOptimization"): the scan's features against a local
-// map of the recent keyframes' features near the vehicle, rebuilt as the vehicle moves.
+// map of the recent keyframes' features near the vehicle, updated as the vehicle moves.
+#include <map>
+#include <vector>
+
 #include "FrontEnd.hpp"
 #include "KeyframeGraph.hpp"
 #include "MotionModel.hpp"
+#include "VoxelCells.hpp"
 #include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/Registration.hpp"
 
@@ -11,10 +15,11 @@ namespace slamroute::evaluate::slam {
 
 class ScanToMap {
  public:
-  explicit ScanToMap(const Config& cfg) : cfg_(cfg) {}
+  explicit ScanToMap(const Config& cfg);
 
-  /// Rebuilds the local map around the newest keyframe after mapping.local_map_update_m of
-  /// motion, or at once with `force` (after a loop closure moved the keyframes).
+  /// Updates the local map around the newest keyframe after mapping.local_map_update_m of
+  /// motion: the last mapping.local_map_keyframes keyframes within mapping.local_map_radius_m.
+  /// `force`: at once and from scratch (after a loop closure moved the keyframes).
   void rebuild(const KeyframeGraph& graph, bool force);
   const FeatureMap& localMap() const { return map_; }
 
@@ -35,8 +40,17 @@ class ScanToMap {
   }
 
  private:
+  /// A keyframe's features in the world frame, as they went into the cells.
+  struct InMap {
+    Cloud edges, planes;
+  };
+  std::vector<int> inReach(const KeyframeGraph& graph) const;
+  void take(const std::vector<int>& keep);
+  void put(const KeyframeGraph& graph, const std::vector<int>& want);
 
   const Config& cfg_;
+  VoxelCells edge_cells_, plane_cells_;     ///< the local map's voxels (mapping.*_voxel_m)
+  std::map<int, InMap> in_map_;              ///< keyframe index -> its part of the local map
   FeatureMap map_;                           ///< world frame
   Vec3 built_at_ = Vec3::Constant(1e18);     ///< where the local map was last rebuilt
 };

@@ -1,0 +1,35 @@
+#pragma once
+// A voxel grid of running centroids that clouds can be added to and taken out of again. The local
+// map moves with the vehicle by adding the keyframe that comes into reach and taking out the one
+// that leaves, instead of re-filtering the clouds of all its ~40 keyframes at every update.
+#include <cstdint>
+#include <unordered_map>
+
+#include "slamroute/evaluate/Features.hpp"
+
+namespace slamroute::evaluate::slam {
+
+class VoxelCells {
+ public:
+  /// voxel_m > 0: cells as voxelFilter bins them (voxelKey).
+  explicit VoxelCells(double voxel_m);
+
+  void add(const Cloud& pts);
+  /// Takes out points added before (the same values), emptying cells they alone filled.
+  void remove(const Cloud& pts);
+  void clear() { cells_.clear(); }
+  /// One centroid per occupied voxel, in the cells' (deterministic) order.
+  Cloud centroids() const;
+  std::size_t size() const { return cells_.size(); }
+
+ private:
+  /// Double sums: a voxel's centroid after many adds and removes stays within float rounding.
+  struct Cell {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int n = 0;
+  };
+  float inv_;
+  std::unordered_map<std::uint64_t, Cell> cells_;
+};
+
+}  // namespace slamroute::evaluate::slam
