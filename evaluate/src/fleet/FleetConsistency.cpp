@@ -22,16 +22,34 @@ Eigen::Vector3d predicted(const FleetClosure& c, const FleetClosure& other,
   return (correction * kfOf(kfs, other.vehicle_b, other.keyframe_b).pose).translation();
 }
 
-bool agree(const FleetClosure& i, const FleetClosure& j,
+/// Path between two closures, summed over both vehicles [m].
+double pathBetween(const FleetClosure& i, const FleetClosure& j,
+                   const std::vector<std::vector<FleetKeyframe>>& kfs) {
+  return std::abs(kfOf(kfs, i.vehicle_a, i.keyframe_a).distance_m -
+                  kfOf(kfs, j.vehicle_a, j.keyframe_a).distance_m) +
+         std::abs(kfOf(kfs, i.vehicle_b, i.keyframe_b).distance_m -
+                  kfOf(kfs, j.vehicle_b, j.keyframe_b).distance_m);
+}
+
+bool agree(const FleetClosure& i, const FleetClosure& j, double path,
            const std::vector<std::vector<FleetKeyframe>>& kfs, const FleetMergeOptions& opt) {
-  const double path =
-      std::abs(kfOf(kfs, i.vehicle_a, i.keyframe_a).distance_m -
-               kfOf(kfs, j.vehicle_a, j.keyframe_a).distance_m) +
-      std::abs(kfOf(kfs, i.vehicle_b, i.keyframe_b).distance_m -
-               kfOf(kfs, j.vehicle_b, j.keyframe_b).distance_m);
   const Eigen::Vector3d own =
       (kfOf(kfs, j.vehicle_a, j.keyframe_a).pose * j.T_a_b).translation();
   return (predicted(i, j, kfs) - own).norm() <= opt.consistency_m + opt.consistency_per_m * path;
+}
+
+/// Whether closure i agrees with most of its neighbours (idx: its pair's closures).
+bool supported(std::size_t i, const std::vector<std::size_t>& idx,
+               const std::vector<FleetClosure>& closures,
+               const std::vector<std::vector<FleetKeyframe>>& kfs, const FleetMergeOptions& opt) {
+  int neighbours = 0, support = 0;
+  for (std::size_t j : idx) {
+    const double path = pathBetween(closures[i], closures[j], kfs);
+    if (path > opt.consistency_window_m) continue;
+    ++neighbours;
+    support += agree(closures[i], closures[j], path, kfs, opt) ? 1 : 0;
+  }
+  return 2 * support > neighbours && support >= opt.min_pair_closures;
 }
 
 }  // namespace
@@ -43,16 +61,8 @@ std::vector<FleetClosure> consistentClosures(const std::vector<FleetClosure>& cl
   for (std::size_t i = 0; i < closures.size(); ++i)
     by_pair[{closures[i].vehicle_a, closures[i].vehicle_b}].push_back(i);
   std::vector<bool> keep(closures.size(), false);
-  for (const auto& [pair, idx] : by_pair) {
-    std::vector<std::size_t> kept;
-    for (std::size_t i : idx) {
-      std::size_t support = 0;
-      for (std::size_t j : idx) support += agree(closures[i], closures[j], kfs, opt) ? 1 : 0;
-      if (2 * support > idx.size()) kept.push_back(i);
-    }
-    if (static_cast<int>(kept.size()) >= opt.min_pair_closures)
-      for (std::size_t i : kept) keep[i] = true;
-  }
+  for (const auto& [pair, idx] : by_pair)
+    for (std::size_t i : idx) keep[i] = supported(i, idx, closures, kfs, opt);
   std::vector<FleetClosure> out;
   for (std::size_t i = 0; i < closures.size(); ++i)
     if (keep[i]) out.push_back(closures[i]);

@@ -71,8 +71,10 @@ void FleetMergeOptions::validate() const {
   require(keyframe_spacing_m > 0.0, "keyframe_spacing_m must be > 0");
   require(target_keyframes_each_side >= 0, "target_keyframes_each_side must be >= 0");
   require(gate_m > 0.0, "gate_m must be > 0");
-  require(consistency_m > 0.0 && consistency_per_m >= 0.0 && min_pair_closures >= 1,
-          "consistency_m > 0, consistency_per_m >= 0 and min_pair_closures >= 1 needed");
+  require(consistency_m > 0.0 && consistency_per_m >= 0.0 && consistency_window_m > 0.0 &&
+              min_pair_closures >= 1,
+          "consistency_m, consistency_window_m > 0, consistency_per_m >= 0 and "
+          "min_pair_closures >= 1 needed");
   require(start_sigma_m > 0.0 && start_sigma_rad > 0.0, "start sigmas must be > 0");
   require(map_scan_stride >= 1, "map_scan_stride must be >= 1");
   require(facade_street_m > 0.0 && facade_sample_m > 0.0 && covered_m > 0.0,

@@ -24,10 +24,12 @@ struct FleetMergeOptions {
   /// Two closures of a pair of vehicles agree when one's correction of the other vehicle puts
   /// the other closure's keyframe within consistency_m + consistency_per_m x the path between
   /// the two closures (both vehicles; drift grows with it) of where that closure puts it. A
-  /// closure is kept when it agrees with more than half of its pair's closures, and a pair only
-  /// with at least min_pair_closures kept: one look-alike facade must not pull the graph [m].
+  /// closure is judged by its neighbours, the pair's closures within consistency_window_m of
+  /// path: kept when it agrees with more than half of them and with at least
+  /// min_pair_closures (itself included); one look-alike facade must not pull the graph [m].
   double consistency_m = 1.0;
-  double consistency_per_m = 0.02;  ///< [m/m]
+  double consistency_per_m = 0.02;      ///< [m/m]
+  double consistency_window_m = 200.0;  ///< [m]
   int min_pair_closures = 2;
   double start_sigma_m = 10.0;       ///< weak prior: each vehicle's first pose as estimated [m]
   double start_sigma_rad = 0.2;      ///< ... and heading [rad]
