@@ -5,7 +5,9 @@
 
 #include "Commands.hpp"
 #include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/FleetRoute.hpp"
 #include "slamroute/simulate/Drive.hpp"
+#include "slamroute/simulate/FleetDrive.hpp"
 #include "slamroute/simulate/SimulatedScanSource.hpp"
 
 namespace slamroute::cli {
@@ -74,19 +76,41 @@ void drawStackedScans(const DriveOpts& o, const simulate::Config& cfg,
   std::cout << "map: " << n << " points drawn to " << o.map_png << "\n";
 }
 
+std::string driveLine(const simulate::DriveResult& r) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "%zu edges, %.0f m driven in %.1f s simulated (%zu poses, %d teleports)",
+                r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(),
+                r.teleports);
+  return line;
+}
+
+/// A fleet's route.json: every vehicle in one SUMO session, DIR/vehicle_K + DIR/fleet.json.
+void driveFleet(const simulate::DriveOptions& d, const simulate::Config& cfg) {
+  const simulate::FleetDriveResult r = simulate::runFleetDrive(d, cfg);
+  for (std::size_t k = 0; k < r.vehicles.size(); ++k)
+    std::cout << "drive: " << r.info.vehicles[k].id << ": " << driveLine(r.vehicles[k]) << "\n";
+  char line[160];
+  std::snprintf(line, sizeof line, "drive: fleet of %zu, makespan %.1f s simulated, %.1f s wall",
+                r.vehicles.size(), r.info.makespanSeconds(), r.wall_seconds);
+  std::cout << line << "\n"
+            << "wrote " << r.out_dir.string() << "\n";
+}
+
 void runDriveCommand(Context& ctx, const DriveOpts& o) {
   ctx.load();
   simulate::Config cfg = ctx.cfg.simulate;
   if (!o.sensor.empty()) cfg.lidar.preset = o.sensor;
   if (o.traffic >= 0.0) cfg.drive.traffic_per_km = o.traffic;
-  const simulate::DriveResult r = simulate::runDrive(driveOptions(ctx, o), cfg);
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "drive: %zu edges, %.0f m driven in %.1f s simulated (%zu poses, %d teleports), "
-                "%.1f s wall",
-                r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(),
-                r.teleports, r.wall_seconds);
-  std::cout << line << "\n"
+  const simulate::DriveOptions d = driveOptions(ctx, o);
+  if (FleetRoute::isFleetFile(d.route_file)) {
+    if (!o.map_png.empty()) throw std::invalid_argument("--map-png: one vehicle only");
+    return driveFleet(d, cfg);
+  }
+  const simulate::DriveResult r = simulate::runDrive(d, cfg);
+  char wall[64];
+  std::snprintf(wall, sizeof wall, ", %.1f s wall", r.wall_seconds);
+  std::cout << "drive: " << driveLine(r) << wall << "\n"
             << "wrote " << r.out_dir.string() << "\n";
   if (!o.map_png.empty()) drawStackedScans(o, cfg, r);
 }

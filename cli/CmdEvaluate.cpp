@@ -8,6 +8,8 @@
 #include <memory>
 
 #include "Commands.hpp"
+#include "EvaluateFleet.hpp"
+#include "slamroute/core/FleetDrive.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/KittiSequence.hpp"
 #include "slamroute/core/Log.hpp"
@@ -88,11 +90,27 @@ void printSummary(const evaluate::EvaluationResult& r, const std::string& out) {
             << " m evaluated -> " << out << "\n";
 }
 
+/// A fleet's folder: each vehicle as a drive folder, then the merge; prints the fleet's figures.
+void evaluateFleet(const std::string& drive, const std::string& out, const evaluate::Config& cfg,
+                   bool keep_vehicles) {
+  const evaluate::FleetResult r = evaluateFleetFolder(
+      drive, out, cfg, keep_vehicles, [&cfg](const fs::path& d, const fs::path& o) {
+        evaluateDriveFolder(d.string(), o.string(), cfg);
+      });
+  for (const auto& v : r.vehicles)
+    std::cout << v.id << ": ATE rmse " << v.own_ate_rmse_m << " m alone, "
+              << v.common_ate_after_m << " m merged (one alignment)\n";
+  std::cout << "fleet: " << r.closures.size() << " inter-vehicle closures, ATE rmse "
+            << r.common_ate_before_m << " m before the merge, " << r.common_ate_after_m
+            << " m after; completeness " << r.completeness_pct << " % -> " << out << "\n";
+}
+
 }  // namespace
 
 void registerEvaluate(CLI::App& app, Context& ctx) {
   struct Opts {
     std::string drive, kitti, sensor = "paper", out;
+    bool keep_vehicles = false;
     double segment_m = -1.0;
     int scan_stride = 0;
     double from_s = -1.0, to_s = -1.0;
@@ -113,6 +131,8 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
   sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")->required();
   sub->add_option("--segment", o->segment_m, "extra RPE segment length [m] (default: config)");
   sub->add_flag("--no-loop-closure", o->no_loop_closure, "disable loop closure");
+  sub->add_flag("--keep-vehicles", o->keep_vehicles,
+                "fleet: keep the vehicles' evaluations already in OUT/vehicle_K (merge only)");
   sub->add_option("--scan-stride", o->scan_stride, "use every n-th scan (default: evaluate.input.scan_stride)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--from", o->from_s, "evaluate only from this drive time on [s] (default: start)")
@@ -131,6 +151,10 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
       throw std::invalid_argument("--to must be later than --from");
     if (o->drive.empty() == o->kitti.empty())
       throw std::invalid_argument("evaluate needs --drive DIR or --kitti SEQ_DIR");
+    if (!o->drive.empty() && FleetDriveInfo::isFleetFolder(o->drive)) {
+      evaluateFleet(o->drive, o->out, cfg, o->keep_vehicles);
+      return;
+    }
     const evaluate::EvaluationResult r =
         o->drive.empty() ? evaluateKittiSequence(o->kitti, o->sensor, o->out, cfg)
                          : evaluateDriveFolder(o->drive, o->out, cfg);

@@ -21,6 +21,19 @@ struct DriveRecord {
   int background_vehicles = 0;
 };
 
+/// One mapping vehicle: its SUMO id and its (validated) edges.
+struct MapperToDrive {
+  std::string id;
+  std::vector<std::string> edges;
+};
+
+/// Runs SUMO: one session, every mapper on its edges, all departing at 0 (SUMO inserts them as
+/// space allows), background traffic; one record per mapper, in order.
+std::vector<DriveRecord> recordMappers(const SumoNet& net,
+                                       const std::vector<MapperToDrive>& mappers,
+                                       const Config& cfg, const LidarSpec& spec,
+                                       std::uint64_t seed);
+
 /// Runs SUMO: one session, the mapper on `edges` (already validated), background traffic.
 DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edges,
                         const Config& cfg, const LidarSpec& spec, std::uint64_t seed);
@@ -30,10 +43,11 @@ DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edge
 void writeDriveScans(const std::filesystem::path& dir, const World& world, const Trajectory& gt,
                      const TrafficFrames& traffic, const LidarConfig& lidar, std::uint64_t seed);
 
-/// Writes every file of the drive folder into `dir` (the staging folder).
+/// Writes every file of the drive folder into `dir` (the staging folder). The odometry noise
+/// is drawn from `odometry_seed` (each vehicle of a fleet has its own wheels and gyro).
 DriveResult writeDriveFolder(const std::filesystem::path& dir, const SumoNet& net,
                              const std::vector<std::string>& edges, const DriveRecord& rec,
                              const World& world, const Config& cfg, const LidarSpec& spec,
-                             const DriveOptions& opts);
+                             const DriveOptions& opts, std::uint64_t odometry_seed);
 
 }  // namespace slamroute::simulate

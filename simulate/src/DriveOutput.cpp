@@ -48,7 +48,7 @@ DriveWorldFile readDriveWorldFile(const fs::path& drive_dir) {
 DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
                              const std::vector<std::string>& edges, const DriveRecord& rec,
                              const World& world, const Config& cfg, const LidarSpec& spec,
-                             const DriveOptions& opts) {
+                             const DriveOptions& opts, std::uint64_t odometry_seed) {
   DriveResult res;
   res.route = edges;
   res.groundtruth = rec.groundtruth;
@@ -61,7 +61,7 @@ DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
 
   writeTum(dir / drive_files::kGroundTruth, rec.groundtruth);
   writeFileAtomic(dir / drive_files::kPoseEdges, poseEdgesCsv(rec));
-  writeOdometryCsv(dir / drive_files::kOdometry, simulateOdometry(rec.groundtruth, cfg.drive, opts.seed));
+  writeOdometryCsv(dir / drive_files::kOdometry, simulateOdometry(rec.groundtruth, cfg.drive, odometry_seed));
   OdometrySpec odo_spec;
   odo_spec.scale_sigma = cfg.drive.odometry_scale_sigma;
   odo_spec.speed_noise_mps = cfg.drive.odometry_speed_noise_mps;

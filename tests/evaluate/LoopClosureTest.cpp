@@ -13,31 +13,8 @@
 namespace slamroute::evaluate {
 namespace {
 
-/// Noisy 32 x 900 scans along a rounded square loop (side 80 m) through the synthetic city,
-/// 1.5 m per scan, a bit more than one lap.
-class LoopSource : public ScanSource {
- public:
-  LoopSource() : scene_(test::cityScene(80.0)) {
-    spec_.channels = 32;
-    spec_.horizontal_samples = 900;
-  }
-  std::size_t size() const override { return 215; }
-  double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
-  Pose3 pose(std::size_t i) const { return test::roundedLoopPose(1.5 * static_cast<double>(i), 80.0, 10.0); }
-  Scan scan(std::size_t i) const override {
-    return test::scanScene(scene_, pose(i), spec_, time(i), 0.03, 100 + i);
-  }
-  LidarSpec spec() const override { return spec_; }
-  Trajectory groundTruth() const {
-    Trajectory gt;
-    for (std::size_t i = 0; i < size(); ++i) gt.push_back({time(i), pose(i)});
-    return gt;
-  }
-
- private:
-  test::Scene scene_;
-  LidarSpec spec_;
-};
+/// A bit more than one lap of the synthetic city block.
+using LoopSource = test::LoopScanSource;
 
 TEST(LoopClosure, FiresOnALoopAndLowersAte) {
   const LoopSource src;

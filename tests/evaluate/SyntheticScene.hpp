@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "slamroute/core/Scan.hpp"
+#include "slamroute/core/Trajectory.hpp"
 #include "slamroute/core/Types.hpp"
 
 namespace slamroute::evaluate::test {
@@ -143,5 +144,36 @@ inline Pose3 roundedLoopPose(double s, double side, double r) {
   }
   return poseXYZYaw(p.x(), p.y(), 1.8, yaw);
 }
+
+/// Noisy 32 x 900 scans along the rounded square loop (side 80 m, corner radius 10 m) through
+/// cityScene(80), 1.5 m per scan, from arc length start_m on.
+class LoopScanSource : public ScanSource {
+ public:
+  explicit LoopScanSource(double start_m = 0.0, std::size_t scans = 215)
+      : scene_(cityScene(80.0)), start_m_(start_m), scans_(scans) {
+    spec_.channels = 32;
+    spec_.horizontal_samples = 900;
+  }
+  std::size_t size() const override { return scans_; }
+  double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
+  Pose3 pose(std::size_t i) const {
+    return roundedLoopPose(start_m_ + 1.5 * static_cast<double>(i), 80.0, 10.0);
+  }
+  Scan scan(std::size_t i) const override {
+    return scanScene(scene_, pose(i), spec_, time(i), 0.03, 100 + i);
+  }
+  LidarSpec spec() const override { return spec_; }
+  Trajectory groundTruth() const {
+    Trajectory gt;
+    for (std::size_t i = 0; i < size(); ++i) gt.push_back({time(i), pose(i)});
+    return gt;
+  }
+
+ private:
+  Scene scene_;
+  double start_m_;
+  std::size_t scans_;
+  LidarSpec spec_;
+};
 
 }  // namespace slamroute::evaluate::test

@@ -1,4 +1,5 @@
 // runDrive on the 3x3 grid: ground truth on the route's lanes, 10 Hz, pose edges in route order.
+#include "DriveTestUtil.hpp"
 #include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
@@ -16,17 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace slamroute;
 
-/// Horizontal distance from p to a polyline.
-double distToPolyline(const Point3& p, const Polyline& pl) {
-  double best = 1e18;
-  for (std::size_t i = 1; i < pl.size(); ++i) {
-    const Eigen::Vector2d a = pl[i - 1].head<2>(), b = pl[i].head<2>(), q = p.head<2>();
-    const double len2 = (b - a).squaredNorm();
-    const double s = len2 > 0 ? std::clamp((q - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (a + s * (b - a) - q).norm());
-  }
-  return best;
-}
+using test::distToPolyline;
 
 TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   const fs::path dir = slamroute::test::testTmp() / "drive_grid";
@@ -61,16 +52,7 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   std::string line;
   std::getline(pe, line);
   EXPECT_EQ(line, "index,t,sumo_edge,lane_pos_m");
-  std::vector<std::string> seq;
-  while (std::getline(pe, line)) {
-    std::stringstream ss(line);
-    std::string idx, t, edge;
-    std::getline(ss, idx, ',');
-    std::getline(ss, t, ',');
-    std::getline(ss, edge, ',');
-    if (seq.empty() || seq.back() != edge) seq.push_back(edge);
-  }
-  EXPECT_EQ(seq, edges);
+  EXPECT_EQ(test::drivenEdges(dir), edges);
 
   // Positions on the route's lanes (outside junctions), the sensor its mount height above the
   // road (z = 0) give or take the road's camber and relief and the body's motion on them.

@@ -1,0 +1,65 @@
+// The files of a fleet evaluation (JSON only here, at the file boundary).
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/evaluate/Fleet.hpp"
+#include "slamroute/evaluate/Output.hpp"
+
+namespace slamroute::evaluate {
+namespace fs = std::filesystem;
+namespace {
+
+nlohmann::json vehicleJson(const FleetVehicleResult& v, const std::string& folder) {
+  return {{"id", v.id},
+          {"folder", folder},
+          {"keyframes", v.keyframes},
+          {"own_ate_rmse_m", v.own_ate_rmse_m},
+          {"common_ate_before_m", v.common_ate_before_m},
+          {"common_ate_after_m", v.common_ate_after_m},
+          {"completeness_pct", v.completeness_pct}};
+}
+
+std::string closuresCsv(const FleetResult& r) {
+  std::ostringstream os;
+  os << "vehicle_a,keyframe_a,t_a,vehicle_b,keyframe_b,t_b,x,y,z,yaw_deg,fitness_m2\n";
+  for (const auto& c : r.closures) {
+    const Vec3 t = c.T_a_b.translation();
+    const double yaw = std::atan2(c.T_a_b.linear()(1, 0), c.T_a_b.linear()(0, 0)) * 180.0 / M_PI;
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%d,%d,%.3f,%d,%d,%.3f,%.4f,%.4f,%.4f,%.3f,%.5f\n",
+                  c.vehicle_a, c.keyframe_a, c.t_a, c.vehicle_b, c.keyframe_b, c.t_b, t.x(),
+                  t.y(), t.z(), yaw, c.fitness_m2);
+    os << buf;
+  }
+  return os.str();
+}
+
+}  // namespace
+
+void writeFleetOutputs(const fs::path& out, const FleetResult& r,
+                       const std::vector<std::string>& folders) {
+  fs::create_directories(out);
+  nlohmann::json vs = nlohmann::json::array();
+  for (std::size_t v = 0; v < r.vehicles.size(); ++v) {
+    vs.push_back(vehicleJson(r.vehicles[v], folders[v]));
+    writeTum(out / ("merged_" + folders[v] + ".tum"), r.vehicles[v].merged);
+  }
+  const nlohmann::json j = {{"vehicles", vs},
+                            {"closures", r.closures.size()},
+                            {"closure_candidates", r.candidates},
+                            {"closures_inconsistent", r.inconsistent},
+                            {"common_ate_before_m", r.common_ate_before_m},
+                            {"common_ate_after_m", r.common_ate_after_m},
+                            {"completeness_pct", r.completeness_pct},
+                            {"facade_samples", r.facade_samples},
+                            {"map_accuracy_mean_m", r.map_accuracy_mean_m},
+                            {"map_accuracy_p95_m", r.map_accuracy_p95_m},
+                            {"map_points", r.map_points}};
+  writeFileAtomic(out / "fleet_closures.csv", closuresCsv(r));
+  if (!r.map.empty()) writePcd(out / "merged_map.pcd", r.map);
+  writeFileAtomic(out / "fleet_metrics.json", j.dump(2) + "\n");
+}
+
+}  // namespace slamroute::evaluate
