@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "slamroute/core/Yaw.hpp"
@@ -35,12 +36,23 @@ Pose3 vehicleMotion(const Pose3& m) {
 /// rate of `last` (over last_dt): a car's turn rate builds up over a second or so, so one
 /// registration that turned several degrees on a feature-poor street does not set the turn of
 /// the following predictions.
-Pose3 boundedYawRate(const Pose3& next, double dt, const Pose3& last, double last_dt, double max_accel) {
+Pose3 boundedYawRate(const Pose3& next, double dt, const Pose3& last, double last_dt,
+                     double max_accel) {
   const double rate0 = yawOf(last) / last_dt;
   const double rate = std::clamp(yawOf(next) / dt, rate0 - max_accel * dt, rate0 + max_accel * dt);
   return carMotion(rate * dt, std::copysign(next.translation().head<2>().norm(), next.translation().x()));
 }
 }  // namespace
+
+Pose3 MotionModel::carTurn(const Pose3& v, double dt, double max_accel) {
+  const double rate = yawOf(v) / dt;
+  // Two registrations in a row that agree on a turn rate beyond the bound are the car's turn:
+  // SUMO turns a car by up to 90 deg/s from one scan to the next (U-turns, junctions), faster
+  // than any bound, while wrong registrations on a feature-poor street scatter.
+  const bool confirmed = last_rate_ && std::abs(rate - *last_rate_) <= max_accel * dt;
+  last_rate_ = rate;
+  return confirmed ? v : boundedYawRate(v, dt, velocity_, velocity_dt_, max_accel);
+}
 
 void MotionModel::recordFrame(double t, const Pose3& T_world) {
   T_world_last_ = T_world;
@@ -103,6 +115,7 @@ Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {
 }
 
 void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world, double dt) {
+  if (outcome != Outcome::Registered || !consecutive) last_rate_.reset();
   if (outcome == Outcome::Failed && have_velocity_) {
     velocity_.linear() = scaledMotion(velocity_, cfg_.odometry.failed_turn_decay).linear();
   } else if (outcome == Outcome::Relocalised && have_velocity_) {
@@ -112,8 +125,7 @@ void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
     if (odometry_.empty() && cfg_.odometry.vehicle_motion) {
       v = vehicleMotion(v);
       const double max_accel = cfg_.odometry.max_yaw_accel_deg_s2 * std::numbers::pi / 180.0;
-      if (max_accel > 0 && have_velocity_)
-        v = boundedYawRate(v, std::max(1e-3, dt), velocity_, velocity_dt_, max_accel);
+      if (max_accel > 0 && have_velocity_) v = carTurn(v, std::max(1e-3, dt), max_accel);
     }
     velocity_ = v;
     velocity_dt_ = std::max(1e-3, dt);

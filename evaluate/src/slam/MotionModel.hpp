@@ -2,6 +2,8 @@
 // The SLAM's motion model: where the vehicle is expected at the next scan (wheel odometry + gyro
 // when the drive has them, else constant velocity), what motion a registration may claim, and
 // the IMU's roll / pitch. It owns the last pose and the velocity estimate.
+#include <optional>
+
 #include "slamroute/core/Odometry.hpp"
 #include "slamroute/core/Types.hpp"
 #include "slamroute/evaluate/Config.hpp"
@@ -66,6 +68,12 @@ class MotionModel {
   Pose3 velocity_ = Pose3::Identity();  ///< motion over velocity_dt_, body frame
   double velocity_dt_ = 0.1;            ///< [s]
   bool have_velocity_ = false;          ///< measured (or given), not the initial guess
+  /// The turn rate the last registration measured, when it directly followed another [rad/s].
+  std::optional<double> last_rate_;
+
+  /// A car's motion `v` over dt with its turn rate at most max_accel * dt from the velocity's,
+  /// unless the registration before measured the same turn rate (within that bound).
+  Pose3 carTurn(const Pose3& v, double dt, double max_accel);
 };
 
 }  // namespace slamroute::evaluate::slam
