@@ -7,6 +7,27 @@
 #include "slamroute/core/Yaw.hpp"
 
 namespace slamroute::evaluate {
+
+LoopVerifyOptions loopVerifyOptions(const LoopConfig& c) {
+  LoopVerifyOptions o;
+  o.icp_iterations = c.icp_iterations;
+  o.icp_max_corr_m = c.icp_max_corr_m;
+  o.accept = IcpAcceptance{c.fitness_m2, c.min_inlier_ratio};
+  o.max_yaw_change_deg = c.place_max_yaw_change_deg;
+  return o;
+}
+
+IcpAmbiguity loopAmbiguity(const LoopConfig& c) {
+  IcpAmbiguity a;
+  a.along_m = c.ambiguity_along_m;
+  a.across_m = c.ambiguity_across_m;
+  a.separation_m = c.ambiguity_separation_m;
+  a.inlier_margin = c.ambiguity_inlier_margin;
+  a.iterations = c.icp_iterations;
+  a.max_corr_m = c.icp_max_corr_m;
+  a.accept = IcpAcceptance{c.fitness_m2, c.min_inlier_ratio};
+  return a;
+}
 namespace {
 
 /// |a - b| wrapped into [0, pi].

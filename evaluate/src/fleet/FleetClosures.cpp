@@ -42,28 +42,6 @@ Cloud submap(const VehicleClouds& c, const std::vector<FleetKeyframe>& kfs, int 
   return voxelFilter(out, voxel_m);
 }
 
-LoopVerifyOptions verifyOptions(const Config& cfg) {
-  LoopVerifyOptions o;
-  o.icp_iterations = cfg.loop.icp_iterations;
-  o.icp_max_corr_m = cfg.loop.icp_max_corr_m;
-  o.accept.max_fitness_m2 = cfg.loop.fitness_m2;
-  o.accept.min_inlier_ratio = cfg.loop.min_inlier_ratio;
-  o.max_yaw_change_deg = cfg.loop.place_max_yaw_change_deg;
-  return o;
-}
-
-IcpAmbiguity ambiguityOptions(const Config& cfg) {
-  IcpAmbiguity a;
-  a.along_m = cfg.loop.ambiguity_along_m;
-  a.across_m = cfg.loop.ambiguity_across_m;
-  a.separation_m = cfg.loop.ambiguity_separation_m;
-  a.inlier_margin = cfg.loop.ambiguity_inlier_margin;
-  a.iterations = cfg.loop.icp_iterations;
-  a.max_corr_m = cfg.loop.icp_max_corr_m;
-  a.accept = verifyOptions(cfg).accept;
-  return a;
-}
-
 /// Closures of vehicle b's keyframes against vehicle a's.
 void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
                const std::vector<VehicleClouds>& clouds, const Config& cfg,
@@ -74,7 +52,7 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
   const auto& cb = clouds[static_cast<std::size_t>(b)];
   PlaceDatabase db(cfg.loop.place);
   for (std::size_t k = 0; k < ka.size(); ++k) db.add(static_cast<int>(k), ca.descriptors[k], ka[k].pose.translation());
-  const LoopVerifyOptions vo = verifyOptions(cfg);
+  const LoopVerifyOptions vo = loopVerifyOptions(cfg.loop);
   for (std::size_t k = 0; k < kb.size(); ++k) {
     PlaceQuery q;
     q.gate_centre = kb[k].pose.translation();
@@ -87,7 +65,7 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
                                   cfg.loop.voxel_m));
     const LoopVerification v = verifyLoop(target, Pose3::Identity(), cb.body[k], c, vo);
     if (!v.accepted) continue;
-    if (betterIcpMatch(target, cb.body[k], v.icp, ambiguityOptions(cfg))) continue;
+    if (betterIcpMatch(target, cb.body[k], v.icp, loopAmbiguity(cfg.loop))) continue;
     const auto& kfa = ka[static_cast<std::size_t>(c.keyframe)];
     out.push_back({a, b, c.keyframe, static_cast<int>(k), kfa.t, kb[k].t,
                    v.icp.T_target_source, v.icp.fitness_m2});

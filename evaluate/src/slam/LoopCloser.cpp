@@ -84,11 +84,10 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
   }
   const IcpTarget icp_target(voxelFilter(target, c.voxel_m));
   const Cloud source = voxelFilter(graph.clouds().get(cur.cloud), c.voxel_m);
-  const IcpAcceptance accept{c.fitness_m2, c.min_inlier_ratio};
+  const LoopVerifyOptions vo = loopVerifyOptions(c);
   IcpResult icp;
   if (cand.place) {  // ICP from the descriptor's yaw; it may not turn far from it
     const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
-    const LoopVerifyOptions vo{c.icp_iterations, c.icp_max_corr_m, accept, c.place_max_yaw_change_deg};
     const LoopVerification v = verifyLoop(icp_target, old.T_world, source, *cand.place, vo);
     if (!v.accepted) return std::nullopt;
     icp = v.icp;
@@ -98,11 +97,8 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
   logDebug("loop candidate kf " + std::to_string(old_kf) + " -> " + std::to_string(n - 1) + ": fitness " +
            std::to_string(icp.fitness_m2) + " inliers " + std::to_string(icp.inlier_ratio) +
            (cand.place ? " (place descriptor)" : ""));
-  if (!accept(icp)) return std::nullopt;
-  const IcpAmbiguity amb{c.ambiguity_along_m,      c.ambiguity_across_m, c.ambiguity_separation_m,
-                         c.ambiguity_inlier_margin, c.icp_iterations,     c.icp_max_corr_m,
-                         accept};
-  if (const auto other = betterIcpMatch(icp_target, source, icp, amb)) {
+  if (!vo.accept(icp)) return std::nullopt;
+  if (const auto other = betterIcpMatch(icp_target, source, icp, loopAmbiguity(c))) {
     ++stats_.ambiguous;
     logDebug("loop candidate refused: a match " + std::to_string(*other) + " m away fits better");
     return std::nullopt;

@@ -102,7 +102,8 @@ struct OdometryConfig {
   bool vehicle_motion = true;
   /// With vehicle_motion: how fast the predicted turn rate may change [deg/s^2]. A car's turn
   /// builds up over a second or so; bounded, one registration that turned a few degrees on a
-  /// feature-poor street does not set the turn of the predictions after it. 0 = unbounded.
+  /// feature-poor street does not set the turn of the predictions after it. Two registrations in
+  /// a row that agree on the new rate do (SUMO turns a car by up to 90 deg/s at once). 0 = off.
   double max_yaw_accel_deg_s2 = 60.0;
 };
 

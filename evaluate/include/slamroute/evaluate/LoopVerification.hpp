@@ -4,6 +4,7 @@
 // by the descriptor's yaw. The descriptor knows the rotation, which ICP with correspondences of a
 // few metres cannot find by itself; the translation it leaves to ICP (a place match means "within
 // a few metres").
+#include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/PlaceDatabase.hpp"
 #include "slamroute/evaluate/Registration.hpp"
 
@@ -23,6 +24,11 @@ struct LoopVerification {
   double yaw_change_deg = 0.0;  ///< |ICP yaw - descriptor yaw| relative to the candidate [deg]
   bool accepted = false;        ///< passes opt.accept and opt.max_yaw_change_deg
 };
+
+/// The loop closure's ICP checks as configured (LoopConfig): verification of a descriptor's
+/// candidate, and where to look for a better match elsewhere.
+LoopVerifyOptions loopVerifyOptions(const LoopConfig& c);
+IcpAmbiguity loopAmbiguity(const LoopConfig& c);
 
 /// `target`: the candidate's cloud (or submap) in frame F; `T_F_candidate`: the candidate
 /// keyframe's pose in F; `query_body`: the query keyframe's cloud in its body frame; `c`: the
