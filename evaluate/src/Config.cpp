@@ -131,6 +131,15 @@ void validateLoop(const LoopConfig& c) {
   check(finiteNonNegative(c.ambiguity_separation_m), "ambiguity_separation_m", c.ambiguity_separation_m, "must be >= 0");
   check(std::isfinite(c.max_correction_m), "max_correction_m", c.max_correction_m, "must be finite");
   check(finiteNonNegative(c.correction_per_m), "correction_per_m", c.correction_per_m, "must be >= 0");
+  check(finiteNonNegative(c.window_per_m), "window_per_m", c.window_per_m, "must be >= 0");
+  check(c.window_max_m >= c.radius_m && c.window_max_m <= 200, "window_max_m", c.window_max_m,
+        "must be in [radius_m, 200]");
+  check(c.correlative_yaw_deg >= 0 && c.correlative_yaw_deg <= 90, "correlative_yaw_deg", c.correlative_yaw_deg,
+        "must be in [0, 90]");
+  check(finiteNonNegative(c.correlative_separation_m), "correlative_separation_m", c.correlative_separation_m,
+        "must be >= 0");
+  check(c.correlative_max_ratio > 0 && c.correlative_max_ratio <= 1, "correlative_max_ratio",
+        c.correlative_max_ratio, "must be in (0, 1]");
   check(finitePositive(c.graph_odom_sigma_m), "graph_odom_sigma_m", c.graph_odom_sigma_m, "must be > 0");
   check(finitePositive(c.graph_odom_sigma_rad), "graph_odom_sigma_rad", c.graph_odom_sigma_rad, "must be > 0");
   check(finitePositive(c.graph_loop_sigma_m), "graph_loop_sigma_m", c.graph_loop_sigma_m, "must be > 0");

@@ -7,6 +7,7 @@
 
 #include "SlamClock.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/evaluate/CorrelativeSearch.hpp"
 #include "slamroute/evaluate/LoopVerification.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 
@@ -36,7 +37,7 @@ bool LoopCloser::tryClose(KeyframeGraph& graph, StageTimes& times) {
 std::optional<LoopCandidate> LoopCloser::nearbyCandidate(const KeyframeGraph& graph) const {
   const Keyframe& cur = graph.back();
   std::optional<LoopCandidate> best;
-  double best_d = cfg_.loop.radius_m;
+  double best_d = searchWindow(graph);
   for (std::size_t k = 0; k + 1 < graph.size(); ++k) {
     const Keyframe& kf = graph.at(k);
     if (cur.t - kf.t < cfg_.loop.min_time_gap_s) break;  // keyframes are in time order
@@ -70,18 +71,71 @@ std::optional<LoopCandidate> LoopCloser::placeCandidate(const KeyframeGraph& gra
   return LoopCandidate{best.keyframe, init, best, gate};
 }
 
-std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const LoopCandidate& cand) {
+double LoopCloser::searchWindow(const KeyframeGraph& graph) const {
   const LoopConfig& c = cfg_.loop;
-  const int old_kf = cand.keyframe;
+  if (!c.correlative) return c.radius_m;
+  return std::min(c.window_max_m, c.radius_m + c.window_per_m * graph.drivenSinceLoop());
+}
+
+Cloud LoopCloser::submap(const KeyframeGraph& graph, int old_kf, bool structure_only) const {
+  const LoopConfig& c = cfg_.loop;
   const Keyframe& cur = graph.back();
   const int n = static_cast<int>(graph.size());
   Cloud target;
   for (int k = std::max(0, old_kf - c.submap_keyframes); k <= std::min(n - 2, old_kf + c.submap_keyframes); ++k) {
     const Keyframe& kf = graph.at(static_cast<std::size_t>(k));
     if (cur.t - kf.t < c.min_time_gap_s) continue;
-    const Cloud moved = transformed(graph.clouds().get(kf.cloud), kf.T_world);
+    const Cloud& body = graph.clouds().get(kf.cloud);
+    const Cloud moved = transformed(structure_only ? structureOf(body) : body, kf.T_world);
     target.insert(target.end(), moved.begin(), moved.end());
   }
+  return target;
+}
+
+Cloud LoopCloser::within(const Cloud& cloud, const Vec3& centre, double range_m) {
+  Cloud out;
+  for (const auto& p : cloud)
+    if ((p.cast<double>() - centre).head<2>().squaredNorm() <= range_m * range_m) out.push_back(p);
+  return out;
+}
+
+Cloud LoopCloser::structureOf(const Cloud& body) const {
+  return structureAboveRoad(body, sensor_height_m_, kStructureMinM, kStructureMaxM);
+}
+
+std::optional<Pose3> LoopCloser::uniqueStart(const KeyframeGraph& graph, const LoopCandidate& cand) {
+  const LoopConfig& c = cfg_.loop;
+  CorrelativeOptions o;
+  o.window_m = searchWindow(graph);
+  o.yaw_window_rad = c.correlative_yaw_deg * std::numbers::pi / 180.0;
+  o.separation_m = c.correlative_separation_m;
+  o.prune_share = std::min(o.prune_share, c.correlative_max_ratio);
+  const Cloud source = within(structureOf(graph.clouds().get(graph.back().cloud)), Vec3::Zero(), kMatchRangeM);
+  const Cloud target = within(submap(graph, cand.keyframe, true), cand.init.translation(), kMatchRangeM + o.window_m);
+  const CorrelativeResult r = correlativeSearch(target, source, cand.init, o);
+  logDebug("loop candidate kf " + std::to_string(cand.keyframe) + ": correlative score " + std::to_string(r.score) +
+           " rival " + std::to_string(r.runner_up) + " at " + std::to_string(r.runner_up_offset.norm()) +
+           " m, window " + std::to_string(o.window_m) + " m, moved " +
+           std::to_string((r.best.translation() - cand.init.translation()).norm()) + " m");
+  if (r.runner_up >= c.correlative_max_ratio * r.score) return std::nullopt;
+  return r.best;
+}
+
+std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const LoopCandidate& cand) {
+  const LoopConfig& c = cfg_.loop;
+  const int old_kf = cand.keyframe;
+  const Keyframe& cur = graph.back();
+  const int n = static_cast<int>(graph.size());
+  Pose3 init = cand.init;
+  if (c.correlative && !cand.place) {
+    const std::optional<Pose3> start = uniqueStart(graph, cand);
+    if (!start) {
+      ++stats_.ambiguous;
+      return std::nullopt;
+    }
+    init = *start;
+  }
+  const Cloud target = submap(graph, old_kf, false);
   const IcpTarget icp_target(voxelFilter(target, c.voxel_m));
   const Cloud source = voxelFilter(graph.clouds().get(cur.cloud), c.voxel_m);
   const LoopVerifyOptions vo = loopVerifyOptions(c);
@@ -92,7 +146,7 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
     if (!v.accepted) return std::nullopt;
     icp = v.icp;
   } else {
-    icp = icp_target.align(source, cand.init, c.icp_iterations, c.icp_max_corr_m);
+    icp = icp_target.align(source, init, c.icp_iterations, c.icp_max_corr_m);
   }
   logDebug("loop candidate kf " + std::to_string(old_kf) + " -> " + std::to_string(n - 1) + ": fitness " +
            std::to_string(icp.fitness_m2) + " inliers " + std::to_string(icp.inlier_ratio) +

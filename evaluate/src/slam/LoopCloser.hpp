@@ -54,6 +54,24 @@ class LoopCloser {
   /// ICP of the newest keyframe's cloud against the candidate's submap, with the checks; the
   /// match when it passes them.
   std::optional<IcpResult> verify(const KeyframeGraph& graph, const LoopCandidate& c);
+  /// Half-width of the square searched around the estimate: grows with the path since the last
+  /// closure (the drift it may have brought) [m].
+  double searchWindow(const KeyframeGraph& graph) const;
+  /// The clouds of the candidate's keyframes each side, in the world frame; `structure_only`:
+  /// without the ground.
+  Cloud submap(const KeyframeGraph& graph, int old_kf, bool structure_only) const;
+  Cloud structureOf(const Cloud& body) const;
+  /// The points within range_m of centre in x / y.
+  static Cloud within(const Cloud& cloud, const Vec3& centre, double range_m);
+  /// The best pose of the correlative search over the window, unless a pose elsewhere in it
+  /// scores nearly as well (a look-alike stretch of street).
+  std::optional<Pose3> uniqueStart(const KeyframeGraph& graph, const LoopCandidate& cand);
+
+  /// Structure that tells places apart: above kerbs and bonnets, below where the sensor sees [m].
+  static constexpr double kStructureMinM = 0.4, kStructureMaxM = 10.0;
+  /// The correlative search scores the source points within this range (where both scans see
+  /// the same structure densely enough) against the target within it plus the window [m].
+  static constexpr double kMatchRangeM = 40.0;
   void accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp, StageTimes& times);
 
   const Config& cfg_;

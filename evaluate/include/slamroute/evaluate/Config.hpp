@@ -175,6 +175,21 @@ struct LoopConfig {
   /// bound [m], [m/m]
   double max_correction_m = -1.0;
   double correction_per_m = 0.002;
+  /// Uniqueness check of a candidate before its ICP (CorrelativeSearch.hpp): the structure above
+  /// the road of the new keyframe is scored at every x / y offset within the search window and
+  /// every yaw within +-correlative_yaw_deg of the estimate against the candidate's submap. ICP
+  /// starts from the best pose; the candidate is refused when a pose at least
+  /// correlative_separation_m away scores correlative_max_ratio of the best or more: the drifted
+  /// estimate may point at a look-alike stretch of street, where ICP alone finds a good fit with
+  /// a small correction. The window, and the radius in which old keyframes are candidates, is
+  /// radius_m + window_per_m x the path since the last closure, at most window_max_m: an
+  /// estimate that drifted beyond radius_m still finds its revisit [m], [m/m], [deg].
+  bool correlative = true;
+  double window_per_m = 0.005;
+  double window_max_m = 20.0;
+  double correlative_yaw_deg = 4.0;
+  double correlative_separation_m = 2.0;
+  double correlative_max_ratio = 0.9;
   double graph_odom_sigma_m = 0.05;     ///< pose-graph odometry edge sigma (translation) [m]
   double graph_odom_sigma_rad = 0.005;  ///< pose-graph odometry edge sigma (rotation) [rad]
   double graph_loop_sigma_m = 0.1;      ///< loop edge sigma (translation) [m]
@@ -354,6 +369,12 @@ void visitFields(V& v, LoopConfig& c) {
   v.field("ambiguity_separation_m", c.ambiguity_separation_m, "... at least this far from the first one [m]");
   v.field("ambiguity_inlier_margin", c.ambiguity_inlier_margin,
           "... matching this much larger a share of the points (and with a lower fitness)");
+  v.field("correlative", c.correlative, "refuse a candidate that a pose elsewhere in the window fits nearly as well");
+  v.field("window_per_m", c.window_per_m, "search window: radius_m + this x path since the last closure [m/m]");
+  v.field("window_max_m", c.window_max_m, "... at most this [m]");
+  v.field("correlative_yaw_deg", c.correlative_yaw_deg, "yaws searched around the estimate's [deg]");
+  v.field("correlative_separation_m", c.correlative_separation_m, "a rival pose is at least this far from the best [m]");
+  v.field("correlative_max_ratio", c.correlative_max_ratio, "refused when a rival scores this share of the best");
   v.field("max_correction_m", c.max_correction_m,
           "max jump of a loop closure right after another one (negative = no bound) [m]");
   v.field("correction_per_m", c.correction_per_m, "... plus this per metre driven since the last closure [m/m]");
