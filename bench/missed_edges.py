@@ -12,6 +12,8 @@ places, the node matched to each, its length along SUMO, and why it is missed:
   end node not detected   a chain end has no node; "tolerance" when an unmatched node lies
                           within 2 x radius of the place (it is there but placed too far)
   edge split              the streets along the chain meet at a node that is not a true place
+                          (a second node of a place whose junctions lie apart: "its place
+                          matched by node N")
   geometry mismatch       a street along the chain ends at another true place's node
   no street               no street of the graph runs along the chain (not driven, or cleared)
 A street runs along a chain when most of its polyline lies within ALONG_M of the chain's SUMO
@@ -137,8 +139,10 @@ def describe(n, ctx):
     """A node that is no true place: dead end or false node, and the junction nearest to it."""
     j = min(ctx["pos"], key=lambda j: math.dist(ctx["pos"][j], ctx["nodes"][n]))
     kind = "dead end" if n in ctx["end_nodes"] else "false node"
-    return "%s %d, %.0f m from %s (%d neighbouring places)" % (
-        kind, n, math.dist(ctx["pos"][j], ctx["nodes"][n]), j, len(ctx["pnb"][ctx["place"][j]]))
+    other = ctx["t2d"].get(ctx["place"][j])
+    return "%s %d, %.0f m from %s (%d neighbouring places%s)" % (
+        kind, n, math.dist(ctx["pos"][j], ctx["nodes"][n]), j, len(ctx["pnb"][ctx["place"][j]]),
+        ", its place matched by node %d" % other if other is not None else "")
 
 
 def main():
