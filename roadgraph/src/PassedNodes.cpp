@@ -10,6 +10,13 @@
 // ends are attached to that node already. Without it, eqs. 1-2 at the geodesic ends join the
 // two far contacts and the passed junction loses its arms (on Bologna, a big junction box cut the
 // western third of the graph off that way).
+// A geodesic end with no node near it (a dead end, e.g. at the border of the surveyed area) is
+// the end of a branch too when the cluster reaches fewer than three nodes: a street from a dead
+// end that bends round a junction to the next junction reaches only two, and unsplit it joins the
+// dead end to the far junction past the junction it turns at (Braunschweig: two streets whose
+// node lies 15 m off their bend). With three or more nodes the rule above decides alone: the
+// dead end of a long cluster that passes two junctions pulls the branch point (least sum of
+// distances) to the wrong one.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,18 +27,20 @@
 namespace slamroute::roadgraph::detail {
 namespace {
 
-/// Per intersection node within reach of the cluster, the cluster member nearest to it.
+/// The ends of the cluster's branches: the intersection nodes within reach of the cluster, each
+/// with the member nearest to it, then, when fewer than three nodes are reached, the geodesic
+/// ends without a node (dead ends).
 struct Contacts {
-  std::vector<int> ends;     ///< the nodes reached
-  std::vector<int> contact;  ///< per node (all intersections), its nearest member or -1
+  std::vector<int> ends;    ///< per contact, its node, or -1 for a dead end
+  std::vector<int> member;  ///< per contact, its member
 };
 
-Contacts nodeContacts(const StreetContext& ctx, const std::vector<int>& mem) {
+Contacts nodeContacts(const StreetContext& ctx, const std::vector<int>& mem,
+                      const std::vector<int>& dead_ends) {
   const std::vector<Point3>& sp = ctx.spts.pts;
   const double reach = ctx.ec.clear_radius_m + ctx.ec.cluster_tolerance_m;
   std::vector<double> best(ctx.n_inter, reach);
-  Contacts c;
-  c.contact.assign(ctx.n_inter, -1);
+  std::vector<int> contact(ctx.n_inter, -1);
   for (int i : mem)
     ctx.node_grid.forEachNear(sp[static_cast<std::size_t>(i)], reach, ctx.half_h, [&](int j) {
       const auto J = static_cast<std::size_t>(j);
@@ -39,11 +48,20 @@ Contacts nodeContacts(const StreetContext& ctx, const std::vector<int>& mem) {
       const double d = (ctx.nodes[J] - sp[static_cast<std::size_t>(i)]).head<2>().norm();
       if (d < best[J]) {
         best[J] = d;
-        c.contact[J] = i;
+        contact[J] = i;
       }
     });
+  Contacts c;
   for (std::size_t j = 0; j < ctx.n_inter; ++j)
-    if (c.contact[j] >= 0) c.ends.push_back(static_cast<int>(j));
+    if (contact[j] >= 0) {
+      c.ends.push_back(static_cast<int>(j));
+      c.member.push_back(contact[j]);
+    }
+  if (c.ends.size() >= 3) return c;  // a far dead end would pull the branch point off the hub
+  for (int i : dead_ends) {
+    c.ends.push_back(-1);
+    c.member.push_back(i);
+  }
   return c;
 }
 
@@ -91,17 +109,23 @@ std::size_t vehiclesThroughNode(const StreetContext& ctx, int c, const Point3& h
   return drivers.size();
 }
 
-/// One street per branch (members to their geodesically nearest branch contact), each from the
-/// branch's node to the passed node.
+/// One street per branch, each from the branch's node (-1 for a dead end, which the caller gives
+/// an end node) to the passed node. A member lies on the arm whose contact it is nearer to than
+/// the branch point C is (least d(contact, i) - d(contact, C)): on its own arm that difference is
+/// -d(C, i), on any other +d(C, i). The plain nearest contact would hand the part of a long arm
+/// next to C to a short arm, whose street then runs out along the long one and back.
 void streetsPerBranch(const StreetContext& ctx, int c, const std::vector<int>& mem,
                       const std::vector<std::vector<double>>& d, const std::vector<std::size_t>& branch,
-                      const std::vector<int>& ends, std::size_t hub, std::vector<Street>& streets) {
+                      const std::vector<int>& ends, std::size_t hub, std::size_t centre,
+                      std::vector<Street>& streets) {
   std::vector<std::vector<int>> part(branch.size());
+  auto beyond = [&](std::size_t q, int i) {
+    return d[branch[q]][static_cast<std::size_t>(i)] - d[branch[q]][centre];
+  };
   for (int i : mem) {
     std::size_t nearest = 0;
     for (std::size_t q = 1; q < branch.size(); ++q)
-      if (d[branch[q]][static_cast<std::size_t>(i)] < d[branch[nearest]][static_cast<std::size_t>(i)])
-        nearest = q;
+      if (beyond(q, i) < beyond(nearest, i)) nearest = q;
     part[nearest].push_back(i);
   }
   for (std::size_t q = 0; q < branch.size(); ++q) {
@@ -119,18 +143,22 @@ void streetsPerBranch(const StreetContext& ctx, int c, const std::vector<int>& m
 
 }  // namespace
 
-bool splitAtPassedNode(const StreetContext& ctx, int c, const std::vector<int>& mem, int na, int nb,
+bool splitAtPassedNode(const StreetContext& ctx, int c, const Street& s, int na, int nb,
                        std::vector<Street>& streets, GraphBuildStats& st) {
   const EdgeConfig& ec = ctx.ec;
   if (!ec.split_at_passed_nodes) return false;
-  const Contacts contacts = nodeContacts(ctx, mem);
+  const std::vector<int>& mem = s.members;
+  std::vector<int> dead_ends;
+  if (na < 0) dead_ends.push_back(s.a);
+  if (nb < 0) dead_ends.push_back(s.b);
+  const Contacts contacts = nodeContacts(ctx, mem, dead_ends);
   const std::vector<int>& ends = contacts.ends;
   if (ends.size() < 3) return false;
   std::vector<std::vector<double>> d(ends.size());
   for (std::size_t e = 0; e < ends.size(); ++e) {
     d[e].assign(ctx.spts.pts.size(), std::numeric_limits<double>::infinity());
     geodesic(ctx.spts.pts, ctx.sp_grid, ctx.spts.label, c, ec.cluster_tolerance_m,
-             contacts.contact[static_cast<std::size_t>(ends[e])], d[e]);
+             contacts.member[e], d[e]);
   }
   const int centre = branchPoint(mem, d);
   if (centre < 0) return false;
@@ -140,13 +168,13 @@ bool splitAtPassedNode(const StreetContext& ctx, int c, const std::vector<int>& 
   for (std::size_t e = 0; e < ends.size(); ++e)
     if (d[e][C] >= ec.clear_radius_m)
       branch.push_back(e);
-    else if (hub == ends.size() || d[e][C] < d[hub][C])
+    else if (ends[e] >= 0 && (hub == ends.size() || d[e][C] < d[hub][C]))
       hub = e;
   if (branch.size() < 2 || hub == ends.size() || ends[hub] == na || ends[hub] == nb) return false;
   const Point3& hp = ctx.nodes[static_cast<std::size_t>(ends[hub])];
   if (static_cast<int>(vehiclesThroughNode(ctx, c, hp)) < ec.min_link_vehicles) return false;
   ++st.passed_nodes;
-  streetsPerBranch(ctx, c, mem, d, branch, ends, hub, streets);
+  streetsPerBranch(ctx, c, mem, d, branch, ends, hub, C, streets);
   return true;
 }
 

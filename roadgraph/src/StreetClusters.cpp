@@ -173,7 +173,12 @@ std::vector<Street> attachStreets(const StreetPoints& spts, const Traces& traces
     // Eqs. 1-2 at the street's ends: nearest node j, then nearest node k != j.
     int na = nearestNode(ctx, sp[static_cast<std::size_t>(s.a)], -1);
     int nb = nearestNode(ctx, sp[static_cast<std::size_t>(s.b)], -1);
-    if (splitAtPassedNode(ctx, c, mem, na, nb, streets, st)) continue;
+    const std::size_t before = streets.size();
+    if (splitAtPassedNode(ctx, c, s, na, nb, streets, st)) {
+      for (std::size_t k = before; k < streets.size(); ++k)
+        if (streets[k].u < 0) streets[k].u = endNode(gn, streets[k].centre.front(), st);
+      continue;
+    }
     if (na >= 0 && na == nb && !attachBothEndsAtOneNode(ctx, c, s, na, nb, dist, st)) continue;
     // Centreline from a to b: centroids of geodesic-distance bins.
     s.centre = binnedCentre(sp, mem, dist, ec.polyline_step_m);

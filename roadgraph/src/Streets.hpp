@@ -63,9 +63,10 @@ struct StreetContext {
   const EdgeConfig& ec;
   double half_h;
 };
-/// Splits street cluster `c` (points `mem`, geodesic ends attached to nodes na, nb) at a junction
-/// it runs through, appending one street per branch; false when it does not (PassedNodes.cpp).
-bool splitAtPassedNode(const StreetContext& ctx, int c, const std::vector<int>& mem, int na, int nb,
+/// Splits street cluster `c` (its members and geodesic ends a, b in `s`, attached to nodes na, nb;
+/// -1: a dead end) at a junction it runs through, appending one street per branch (u = -1 for a
+/// branch ending at a dead end); false when it does not (PassedNodes.cpp).
+bool splitAtPassedNode(const StreetContext& ctx, int c, const Street& s, int na, int nb,
                        std::vector<Street>& streets, GraphBuildStats& st);
 
 /// Dead ends within `radius` of each other become one node (EndNodes.cpp).

@@ -241,6 +241,51 @@ TEST(GraphBuilder, StreetRunningThroughAJunctionWhoseNodeLiesOffItIsSplitThere) 
   }
 }
 
+TEST(GraphBuilder, StreetFromADeadEndPastAJunctionWhoseNodeLiesOffItIsSplitThere) {
+  // As above, but the main road ends 300 m east of H without a junction (the survey's border):
+  // its cluster reaches only two nodes, A and H, and its east end is a dead end. That end is a
+  // branch of its own, so the road is split at H (A-H, H-dead end) instead of joining A to the
+  // dead end past H; without the connector it stays one street A-dead end. The street A-H is the
+  // 100 m between them, not the half of the road nearer to A than to the dead end. H's arms
+  // north and north-east, one cluster forking near H between two dead ends, end at H either way.
+  for (const bool connected : {true, false}) {
+    std::vector<Road> roads = {{line({-100, 0, 0}, {400, 0, 0})},
+                               {line({0, -100, 0}, {0, 100, 0})},
+                               {line({100, 15, 0}, {100, 150, 0})},
+                               {line({100, 15, 0}, {170, 99, 0})},
+                               {line({100, 15, 0}, {30, 99, 0})}};
+    if (connected) roads.push_back({line({100, 0, 0}, {100, 15, 0})});
+    const auto r = graphFromTraces(makeTraces(roads, 0.5, 3, 1.0, /*passes=*/2), Config{});
+    const int a = intersectionNear(r, 0, 0);
+    int h = -1, d = -1, north = -1, north_east = -1;
+    for (std::size_t n = 0; n < r.graph.nodes.size(); ++n) {
+      const Point3& p = r.graph.nodes[n].pos;
+      const int id = static_cast<int>(n);
+      if (!r.node_is_end[n] && std::abs(p.x() - 100) < 5 && p.y() > 12 && p.y() < 20) h = id;
+      if (!r.node_is_end[n]) continue;
+      if (std::hypot(p.x() - 400, p.y()) < 10) d = id;
+      if (std::hypot(p.x() - 100, p.y() - 150) < 10) north = id;
+      if (std::hypot(p.x() - 170, p.y() - 99) < 10) north_east = id;
+    }
+    ASSERT_GE(a, 0) << "connected " << connected;
+    ASSERT_GE(h, 0) << "connected " << connected;
+    ASSERT_GE(d, 0) << "connected " << connected;
+    EXPECT_EQ(r.stats.intersections, 2u) << "connected " << connected;
+    EXPECT_TRUE(hasEdge(r.graph, h, north)) << "connected " << connected;
+    EXPECT_TRUE(hasEdge(r.graph, h, north_east)) << "connected " << connected;
+    EXPECT_FALSE(hasEdge(r.graph, north, north_east)) << "connected " << connected;
+    EXPECT_EQ(hasEdge(r.graph, a, h), connected);
+    EXPECT_EQ(hasEdge(r.graph, h, d), connected);
+    EXPECT_EQ(hasEdge(r.graph, d, h), connected);
+    EXPECT_EQ(hasEdge(r.graph, a, d), !connected);
+    for (const auto& e : r.graph.edges) {
+      if (!connected) continue;
+      if (e.u == a && e.v == h) EXPECT_NEAR(e.length_m, 110.0, 15.0);  // 100 m, then 15 m to H
+      if (e.u == h && e.v == d) EXPECT_NEAR(e.length_m, 310.0, 15.0);
+    }
+  }
+}
+
 TEST(GraphBuilder, OverpassStreetPassesUnderTheBridge) {
   Polyline bridge;
   for (double y = -200; y <= 200; y += 5) {

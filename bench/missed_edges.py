@@ -1,0 +1,194 @@
+#!/usr/bin/env python3
+"""Why build-graph misses true streets (bench/RESULTS.md, "Divided roads").
+
+Usage: bench/missed_edges.py NET.net.xml GRAPH.json [--link M] [--radius M]
+
+Rebuilds the place-level truth of build-graph's `place_validation` (roadgraph/src/SumoMatch.cpp:
+intersections joined by a passenger edge of at most --link m are one place; true intersections
+have >= 3 neighbouring places; a true street is a chain through places with 2 neighbours), matches
+the graph's intersection nodes to places the same way (closest pairs first, within --radius m)
+and prints the totals (to check against graph.json) and one line per missed chain: its end
+places, the node matched to each, its length along SUMO, and why it is missed:
+  end node not detected   a chain end has no node; "tolerance" when an unmatched node lies
+                          within 2 x radius of the place (it is there but placed too far)
+  edge split              the streets along the chain meet at a node that is not a true place
+                          (a second node of a place whose junctions lie apart: "its place
+                          matched by node N")
+  geometry mismatch       a street along the chain ends at another true place's node
+  no street               no street of the graph runs along the chain (not driven, or cleared)
+A street runs along a chain when most of its polyline lies within ALONG_M of the chain's SUMO
+lanes (both carriageways). Needs sumolib (Debian sumo-tools: $SUMO_HOME/tools).
+"""
+import argparse
+import json
+import math
+import os
+import sys
+from collections import defaultdict
+
+sys.path.insert(0, os.path.join(os.environ.get("SUMO_HOME", "/usr/share/sumo"), "tools"))
+import sumolib  # noqa: E402
+
+ALONG_M = 9.0          # a street point this close to the chain's lanes runs along it
+ALONG_SHARE = 0.6      # share of a street's points that must run along the chain
+STEP_M = 2.0
+
+
+def samples(shape, step=STEP_M):
+    out = []
+    for (ax, ay), (bx, by) in zip(shape, shape[1:]):
+        n = max(1, int(math.hypot(bx - ax, by - ay) / step))
+        out += [(ax + (bx - ax) * k / n, ay + (by - ay) * k / n) for k in range(n)]
+    return out + shape[-1:]
+
+
+class Grid:
+    def __init__(self, pts, cell=ALONG_M):
+        self.cell, self.cells = cell, defaultdict(list)
+        for p in pts:
+            self.cells[(int(p[0] // cell), int(p[1] // cell))].append(p)
+
+    def near(self, p, r):
+        cx, cy = int(p[0] // self.cell), int(p[1] // self.cell)
+        return any(math.dist(p, q) <= r for i in (-1, 0, 1) for j in (-1, 0, 1)
+                   for q in self.cells.get((cx + i, cy + j), ()))
+
+
+def place_truth(net_path, link_m):
+    net = sumolib.net.readNet(net_path, withInternal=False)
+    nb, pos, links = defaultdict(set), {}, []
+    for e in net.getEdges():
+        if not e.allows("passenger"):
+            continue
+        u, v = e.getFromNode().getID(), e.getToNode().getID()
+        pos[u], pos[v] = e.getFromNode().getCoord()[:2], e.getToNode().getCoord()[:2]
+        if u != v:
+            nb[u].add(v)
+            nb[v].add(u)
+            links.append((u, v, e.getLength(), [p[:2] for p in e.getShape()]))
+    parent = {j: j for j in pos}
+
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    for u, v, length, _ in links:
+        if length <= link_m and len(nb[u]) >= 3 and len(nb[v]) >= 3:
+            parent[find(u)] = find(v)
+    place = {j: find(j) for j in pos}
+    members, pnb, shapes = defaultdict(list), defaultdict(set), defaultdict(list)
+    for j in sorted(pos):
+        members[place[j]].append(j)
+    for u, v, length, shape in links:
+        a, b = place[u], place[v]
+        if a != b:
+            pnb[a].add(b)
+            pnb[b].add(a)
+            shapes[frozenset((a, b))].append((length, shape))
+    return members, pnb, shapes, pos
+
+
+def chains_of(pnb, truth):
+    chains = {}
+    for v in truth:
+        for w in pnb[v]:
+            path = [v, w]
+            while len(pnb[path[-1]]) == 2 and len(path) <= len(pnb):
+                a, b = sorted(pnb[path[-1]])
+                path.append(b if a == path[-2] else a)
+            if len(pnb[path[-1]]) >= 3 and path[-1] != v:
+                key = tuple(sorted((v, path[-1])))
+                chains.setdefault(key, path if path[0] == key[0] else path[::-1])
+    return chains
+
+
+def match_nodes(nodes, det, truth, members, pos, radius):
+    pairs = sorted((min(math.dist(nodes[d], pos[j]) for j in members[t]), d, t)
+                   for d in det for t in truth)
+    d2t, t2d = {}, {}
+    for dist, d, t in pairs:
+        if dist <= radius and d not in d2t and t not in t2d:
+            d2t[d], t2d[t] = t, d
+    return d2t, t2d
+
+
+def why(chain, path, ctx):
+    a, b = chain
+    if a not in ctx["t2d"] or b not in ctx["t2d"]:
+        lost = [t for t in chain if t not in ctx["t2d"]]
+        near = [d for d in ctx["det"] if d not in ctx["d2t"] and any(
+            math.dist(ctx["nodes"][d], ctx["pos"][j]) <= 2 * ctx["radius"]
+            for t in lost for j in ctx["members"][t])]
+        return "end node not detected" + (" (tolerance: node %s)" % near if near else "")
+    lane_pts = [p for x, y in zip(path, path[1:]) for _, s in ctx["shapes"][frozenset((x, y))]
+                for p in samples(s)]
+    grid = Grid(lane_pts)
+    along = [s for s, pl in ctx["streets"].items()
+             if sum(grid.near(p, ALONG_M) for p in pl) >= ALONG_SHARE * len(pl)]
+    if not along:
+        return "no street"
+    ends = {n for s in along for n in ctx["ends_of"][s]} - {ctx["t2d"][a], ctx["t2d"][b]}
+    others = sorted(n for n in ends if n in ctx["d2t"])
+    if others:
+        return "geometry mismatch (street %s ends at node %s)" % (along, others)
+    return "edge split (streets %s meet at %s)" % (along, ", ".join(describe(n, ctx) for n in ends))
+
+
+def describe(n, ctx):
+    """A node that is no true place: dead end or false node, and the junction nearest to it."""
+    j = min(ctx["pos"], key=lambda j: math.dist(ctx["pos"][j], ctx["nodes"][n]))
+    kind = "dead end" if n in ctx["end_nodes"] else "false node"
+    other = ctx["t2d"].get(ctx["place"][j])
+    return "%s %d, %.0f m from %s (%d neighbouring places%s)" % (
+        kind, n, math.dist(ctx["pos"][j], ctx["nodes"][n]), j, len(ctx["pnb"][ctx["place"][j]]),
+        ", its place matched by node %d" % other if other is not None else "")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("net")
+    ap.add_argument("graph")
+    ap.add_argument("--link", type=float, default=25.0)
+    ap.add_argument("--radius", type=float, default=15.0)
+    args = ap.parse_args()
+    members, pnb, shapes, pos = place_truth(args.net, args.link)
+    truth = sorted(t for t in pnb if len(pnb[t]) >= 3)
+    chains = chains_of(pnb, truth)
+    g = json.load(open(args.graph))
+    meta = g["metadata"] if isinstance(g["metadata"], dict) else json.loads(g["metadata"])
+    end_nodes = set(meta["end_nodes"])
+    nodes = {n["id"]: (n["x"], n["y"]) for n in g["nodes"]}
+    det = sorted(n for n in nodes if n not in end_nodes)
+    d2t, t2d = match_nodes(nodes, det, truth, members, pos, args.radius)
+    streets, ends_of, found = {}, {}, set()
+    for e in g["edges"]:
+        s = e.get("street", e["id"])
+        if s in streets:
+            continue
+        streets[s] = samples([tuple(p[:2]) for p in e["polyline"]])
+        ends_of[s] = (e["u"], e["v"])
+        if e["u"] in d2t and e["v"] in d2t:
+            key = tuple(sorted((d2t[e["u"]], d2t[e["v"]])))
+            if key in chains:
+                found.add(key)
+    ctx = dict(t2d=t2d, d2t=d2t, det=det, nodes=nodes, pos=pos, members=members, radius=args.radius,
+               shapes=shapes, streets=streets, ends_of=ends_of, end_nodes=end_nodes, pnb=pnb,
+               place={j: t for t, js in members.items() for j in js})
+    print("places %d, true chains %d, found %d (recall %.3f); graph.json: %d / %d (%.3f)" % (
+        len(truth), len(chains), len(found), len(found) / max(1, len(chains)),
+        meta["place_validation"]["found_chains"], meta["place_validation"]["true_chains"],
+        meta["place_validation"]["edge_recall"]))
+    for key in sorted(chains):
+        if key in found:
+            continue
+        path = chains[key]
+        length = sum(min(x for x, _ in shapes[frozenset((a, b))]) for a, b in zip(path, path[1:]))
+        xy = [tuple(round(c) for c in pos[members[t][0]]) for t in key]
+        print("%-28s %-28s nodes %4s %4s  %6.0f m  at %s %s  %s" % (
+            key[0][:28], key[1][:28], t2d.get(key[0], "-"), t2d.get(key[1], "-"), length,
+            xy[0], xy[1], why(key, path, ctx)))
+
+
+if __name__ == "__main__":
+    main()
