@@ -184,7 +184,9 @@ struct LoopConfig {
   /// a small correction. The window, and the radius in which old keyframes are candidates, is
   /// radius_m + window_per_m x the path since the last closure, at most window_max_m: an
   /// estimate that drifted beyond radius_m still finds its revisit [m], [m/m], [deg].
-  bool correlative = true;
+  /// Off by default: on a whole-city drive it refused every look-alike closure but bent the
+  /// map more than they had (docs/NOTES.md, "Correlative loop search").
+  bool correlative = false;
   double window_per_m = 0.005;
   double window_max_m = 20.0;
   double correlative_yaw_deg = 4.0;
