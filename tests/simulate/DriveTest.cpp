@@ -19,6 +19,98 @@ using namespace slamroute;
 
 using test::distToPolyline;
 
+/// Wheel odometry and gyro without noise, scale error or bias.
+simulate::DriveConfig noiseFreeOdometry() {
+  simulate::DriveConfig exact;
+  exact.odometry_scale_sigma = exact.odometry_speed_noise_mps = 0;
+  exact.gyro_bias_sigma_deg_s = exact.gyro_noise_deg_s = 0;
+  return exact;
+}
+
+void expectPosesOnTheRouteLanes(const Trajectory& gt, const simulate::DriveResult& r,
+                                const SumoNet& net) {
+  // Positions on the route's lanes (outside junctions), the sensor its mount height above the
+  // road (z = 0) give or take the road's camber and relief and the body's motion on them.
+  const double h = lidarPreset("vlp16").mount_height_m;
+  std::size_t on_edges = 0;
+  for (std::size_t i = 0; i < gt.size(); ++i) {
+    const Point3 p = gt[i].T_world_body.translation();
+    EXPECT_NEAR(p.z(), h, 0.15);
+    const SumoEdge* e = net.findEdge(r.pose_edges[i].sumo_edge);
+    ASSERT_NE(e, nullptr);
+    if (r.pose_edges[i].lane_pos_m > e->length()) continue;  // inside the junction after e
+    double d = 1e18;
+    for (const auto& lane : e->lanes) d = std::min(d, distToPolyline(p, lane.shape));
+    EXPECT_LT(d, 0.5) << "pose " << i << " on " << e->id;
+    ++on_edges;
+  }
+  EXPECT_GT(on_edges, gt.size() * 8 / 10);
+}
+
+void expectHeadingFollowsTheRoute(const Trajectory& gt, const SumoNet& net,
+                                  const std::string& first_edge) {
+  // Heading: the first edge runs from g00 to g01; the body x axis points along it.
+  const Polyline& s0 = net.findEdge(first_edge)->lanes[0].shape;
+  const Vec3 dir0 = (s0.back() - s0.front()).normalized();
+  EXPECT_GT(gt[5].T_world_body.linear().col(0).dot(dir0), 0.999);
+  // The route turns at four junctions: the heading turns smoothly (a car does not rotate by tens
+  // of degrees in 0.1 s, as SUMO's lane angle does when it enters an internal lane): at most
+  // 0.5 rad per metre driven, or 3 degrees per 0.1 s step while (nearly) standing.
+  for (std::size_t i = 1; i < gt.size(); ++i) {
+    const Vec3 a = gt[i - 1].T_world_body.linear().col(0), b = gt[i].T_world_body.linear().col(0);
+    const Vec3 step = gt[i].T_world_body.translation() - gt[i - 1].T_world_body.translation();
+    const double limit = std::max(0.5 * std::hypot(step.x(), step.y()), 3.0 * M_PI / 180.0 + 1e-9);
+    const double turn = std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0));
+    EXPECT_LE(turn, limit + 1e-6) << "pose " << i;
+  }
+}
+
+void expectOdometryFollowsTheGroundTruth(const Trajectory& gt, const WheelOdometry& odo,
+                                         double driven_m) {
+  // odometry.csv: integrated over the whole drive, the wheel odometry + gyro (1 % scale, gyro
+  // bias, noise) ends within a few metres and degrees of the ground truth's relative motion.
+  const Pose3 dg = gt.front().T_world_body.inverse() * gt.back().T_world_body;
+  const Pose3 dm = odo.motion(gt.front().t, gt.back().t);
+  EXPECT_LT((dm.translation() - dg.translation()).head<2>().norm(), 0.05 * driven_m);
+  EXPECT_LT(Eigen::AngleAxisd(dg.rotation().transpose() * dm.rotation()).angle(), 5.0 * M_PI / 180.0);
+  // Noise-free odometry reproduces each step of the ground truth (to a few cm: in sharp junction
+  // turns the rate-limited heading lets the sensor move slightly sideways, which wheels do not see).
+  const WheelOdometry clean = simulate::simulateOdometry(gt, noiseFreeOdometry(), 5);
+  for (std::size_t i = 10; i + 1 < gt.size(); i += 37) {
+    const Pose3 step = gt[i].T_world_body.inverse() * gt[i + 1].T_world_body;
+    const Pose3 m = clean.motion(gt[i].t, gt[i + 1].t);
+    EXPECT_LT((m.translation() - step.translation()).head<2>().norm(), 0.05) << i;
+  }
+}
+
+void expectImuTiltAndSeededNoise(const Trajectory& gt, const WheelOdometry& odo,
+                                 const simulate::Config& cfg) {
+  simulate::DriveConfig exact = noiseFreeOdometry();
+  // IMU roll / pitch: noise-free they are the ground truth's (Z-Y-X Euler) roll and pitch; with
+  // the default noise (0.05 deg bias, 0.1 deg white) within half a degree of them.
+  exact.tilt_bias_sigma_deg = exact.tilt_noise_deg = 0;
+  const WheelOdometry level = simulate::simulateOdometry(gt, exact, 5);
+  for (std::size_t i = 0; i + 1 < gt.size(); i += 23) {
+    const Mat3 R = gt[i].T_world_body.rotation();
+    ASSERT_TRUE(level.attitude(gt[i].t).has_value());
+    EXPECT_NEAR(level.attitude(gt[i].t)->roll_rad, std::atan2(R(2, 1), R(2, 2)), 1e-6) << i;
+    EXPECT_NEAR(level.attitude(gt[i].t)->pitch_rad, -std::asin(R(2, 0)), 1e-6) << i;
+    ASSERT_TRUE(odo.attitude(gt[i].t).has_value());
+    EXPECT_NEAR(odo.attitude(gt[i].t)->pitch_rad, -std::asin(R(2, 0)), 0.5 * M_PI / 180.0) << i;
+  }
+  simulate::DriveConfig no_imu = cfg.drive;
+  no_imu.tilt_bias_sigma_deg = -1.0;
+  EXPECT_FALSE(simulate::simulateOdometry(gt, no_imu, 5).attitude(gt[5].t).has_value());
+  // Same seed, same odometry; another seed, another bias.
+  const auto a1 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
+  const auto a2 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
+  const auto a3 = simulate::simulateOdometry(gt, cfg.drive, 6).samples();
+  ASSERT_EQ(a1.size(), a2.size());
+  for (std::size_t i = 0; i < a1.size(); ++i) ASSERT_EQ(a1[i].yaw_rate_rad_s, a2[i].yaw_rate_rad_s);
+  EXPECT_NE(a1[3].yaw_rate_rad_s, a3[3].yaw_rate_rad_s);
+  EXPECT_NEAR(a1[3].yaw_rate_rad_s, odo.samples()[3].yaw_rate_rad_s, 1e-6);  // file = 7 decimals
+}
+
 TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   const fs::path dir = slamroute::test::testTmp() / "drive_grid";
   const fs::path route = slamroute::test::testTmp() / "drive_grid_route.json";
@@ -54,81 +146,13 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   EXPECT_EQ(line, "index,t,sumo_edge,lane_pos_m");
   EXPECT_EQ(test::drivenEdges(dir), edges);
 
-  // Positions on the route's lanes (outside junctions), the sensor its mount height above the
-  // road (z = 0) give or take the road's camber and relief and the body's motion on them.
   const SumoNet net = SumoNet::read(o.net);
-  const double h = lidarPreset("vlp16").mount_height_m;
-  std::size_t on_edges = 0;
-  for (std::size_t i = 0; i < gt.size(); ++i) {
-    const Point3 p = gt[i].T_world_body.translation();
-    EXPECT_NEAR(p.z(), h, 0.15);
-    const SumoEdge* e = net.findEdge(r.pose_edges[i].sumo_edge);
-    ASSERT_NE(e, nullptr);
-    if (r.pose_edges[i].lane_pos_m > e->length()) continue;  // inside the junction after e
-    double d = 1e18;
-    for (const auto& lane : e->lanes) d = std::min(d, distToPolyline(p, lane.shape));
-    EXPECT_LT(d, 0.5) << "pose " << i << " on " << e->id;
-    ++on_edges;
-  }
-  EXPECT_GT(on_edges, gt.size() * 8 / 10);
-  // Heading: the first edge runs from g00 to g01; the body x axis points along it.
-  const Polyline& s0 = net.findEdge(edges[0])->lanes[0].shape;
-  const Vec3 dir0 = (s0.back() - s0.front()).normalized();
-  EXPECT_GT(gt[5].T_world_body.linear().col(0).dot(dir0), 0.999);
-  // The route turns at four junctions: the heading turns smoothly (a car does not rotate by tens
-  // of degrees in 0.1 s, as SUMO's lane angle does when it enters an internal lane): at most
-  // 0.5 rad per metre driven, or 3 degrees per 0.1 s step while (nearly) standing.
-  for (std::size_t i = 1; i < gt.size(); ++i) {
-    const Vec3 a = gt[i - 1].T_world_body.linear().col(0), b = gt[i].T_world_body.linear().col(0);
-    const Vec3 step = gt[i].T_world_body.translation() - gt[i - 1].T_world_body.translation();
-    const double limit = std::max(0.5 * std::hypot(step.x(), step.y()), 3.0 * M_PI / 180.0 + 1e-9);
-    const double turn = std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0));
-    EXPECT_LE(turn, limit + 1e-6) << "pose " << i;
-  }
-
-  // odometry.csv: integrated over the whole drive, the wheel odometry + gyro (1 % scale, gyro
-  // bias, noise) ends within a few metres and degrees of the ground truth's relative motion.
+  expectPosesOnTheRouteLanes(gt, r, net);
+  expectHeadingFollowsTheRoute(gt, net, edges[0]);
   const WheelOdometry odo = readOdometryCsv(dir / drive_files::kOdometry);
   ASSERT_EQ(odo.samples().size() + 1, gt.size());
-  const Pose3 dg = gt.front().T_world_body.inverse() * gt.back().T_world_body;
-  const Pose3 dm = odo.motion(gt.front().t, gt.back().t);
-  const double path = r.driven_m;
-  EXPECT_LT((dm.translation() - dg.translation()).head<2>().norm(), 0.05 * path);
-  EXPECT_LT(Eigen::AngleAxisd(dg.rotation().transpose() * dm.rotation()).angle(), 5.0 * M_PI / 180.0);
-  // Noise-free odometry reproduces each step of the ground truth (to a few cm: in sharp junction
-  // turns the rate-limited heading lets the sensor move slightly sideways, which wheels do not see).
-  simulate::DriveConfig exact;
-  exact.odometry_scale_sigma = exact.odometry_speed_noise_mps = 0;
-  exact.gyro_bias_sigma_deg_s = exact.gyro_noise_deg_s = 0;
-  const WheelOdometry clean = simulate::simulateOdometry(gt, exact, 5);
-  for (std::size_t i = 10; i + 1 < gt.size(); i += 37) {
-    const Pose3 step = gt[i].T_world_body.inverse() * gt[i + 1].T_world_body;
-    const Pose3 m = clean.motion(gt[i].t, gt[i + 1].t);
-    EXPECT_LT((m.translation() - step.translation()).head<2>().norm(), 0.05) << i;
-  }
-  // IMU roll / pitch: noise-free they are the ground truth's (Z-Y-X Euler) roll and pitch; with
-  // the default noise (0.05 deg bias, 0.1 deg white) within half a degree of them.
-  exact.tilt_bias_sigma_deg = exact.tilt_noise_deg = 0;
-  const WheelOdometry level = simulate::simulateOdometry(gt, exact, 5);
-  for (std::size_t i = 0; i + 1 < gt.size(); i += 23) {
-    const Mat3 R = gt[i].T_world_body.rotation();
-    ASSERT_TRUE(level.attitude(gt[i].t).has_value());
-    EXPECT_NEAR(level.attitude(gt[i].t)->roll_rad, std::atan2(R(2, 1), R(2, 2)), 1e-6) << i;
-    EXPECT_NEAR(level.attitude(gt[i].t)->pitch_rad, -std::asin(R(2, 0)), 1e-6) << i;
-    ASSERT_TRUE(odo.attitude(gt[i].t).has_value());
-    EXPECT_NEAR(odo.attitude(gt[i].t)->pitch_rad, -std::asin(R(2, 0)), 0.5 * M_PI / 180.0) << i;
-  }
-  simulate::DriveConfig no_imu = cfg.drive;
-  no_imu.tilt_bias_sigma_deg = -1.0;
-  EXPECT_FALSE(simulate::simulateOdometry(gt, no_imu, 5).attitude(gt[5].t).has_value());
-  // Same seed, same odometry; another seed, another bias.
-  const auto a1 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
-  const auto a2 = simulate::simulateOdometry(gt, cfg.drive, 5).samples();
-  const auto a3 = simulate::simulateOdometry(gt, cfg.drive, 6).samples();
-  ASSERT_EQ(a1.size(), a2.size());
-  for (std::size_t i = 0; i < a1.size(); ++i) ASSERT_EQ(a1[i].yaw_rate_rad_s, a2[i].yaw_rate_rad_s);
-  EXPECT_NE(a1[3].yaw_rate_rad_s, a3[3].yaw_rate_rad_s);
-  EXPECT_NEAR(a1[3].yaw_rate_rad_s, odo.samples()[3].yaw_rate_rad_s, 1e-6);  // file = 7 decimals
+  expectOdometryFollowsTheGroundTruth(gt, odo, r.driven_m);
+  expectImuTiltAndSeededNoise(gt, odo, cfg);
 
   const auto j = nlohmann::json::parse(std::ifstream(dir / drive_files::kDriveInfo));
   EXPECT_EQ(j["teleports"].get<int>(), 0);
