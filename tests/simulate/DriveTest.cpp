@@ -117,14 +117,8 @@ TEST(Drive, GridRouteGroundTruthFollowsTheRouteLanesAt10Hz) {
   const std::vector<std::string> edges = {"g00_g01", "g01_g02", "g02_g12",
                                           "g12_g11", "g11_g10", "g10_g20"};
   std::ofstream(route) << nlohmann::json(edges).dump();
-  simulate::Config cfg;
-  cfg.lidar.preset = "vlp16";
-  simulate::DriveOptions o;
-  o.net = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/test/grid3x3.net.xml";
-  o.route_file = route;
-  o.out_dir = dir;
-  o.seed = 5;
-  o.write_world_mesh = false;
+  const simulate::Config cfg = test::vlp16Config();
+  const simulate::DriveOptions o = test::testDrive("test/grid3x3.net.xml", route, dir, 5);
   const simulate::DriveResult r = simulate::runDrive(o, cfg);
   EXPECT_EQ(r.teleports, 0);
   EXPECT_EQ(r.route, edges);
