@@ -65,7 +65,8 @@ class PostmanOnNet : public ::testing::TestWithParam<PostmanBound> {};
 TEST_P(PostmanOnNet, DrivesEveryEdgeNearTheLegalLowerBound) {
   const Route r = planOn(netNamed(GetParam().net), "postman", 1);
   const auto x = test::extra(r);
-  EXPECT_DOUBLE_EQ(r.edge_coverage_pct, 100.0);
+  // A share of summed lengths: on Adlershof's 696 edges it lands 1e-13 below 100.
+  EXPECT_NEAR(r.edge_coverage_pct, 100.0, 1e-9);
   // Every directed edge of the planning graph at least once.
   std::set<int> driven(r.edges.begin(), r.edges.end());
   EXPECT_EQ(static_cast<int>(driven.size()), x["plan_graph"]["edges"].get<int>());

@@ -65,7 +65,7 @@ TEST(SumoMatch, DefaultCityFromLaneTraces) {
 
 // Lane traces drive every lane once: far thinner than a survey, and big junctions (3-lane divided
 // roads, junction boxes of 20-40 m) see little turning traffic. Issue 4 asks >= 0.9 on surveys;
-// here about 0.8 is reached (what limits it: see bench/RESULTS.md, road graph section).
+// here 0.86 is reached (what limits it: see bench/RESULTS.md, road graph section).
 TEST(SumoMatch, BolognaFromLaneTraces) { checkNet(slamroute::test::bolognaNet(), 0.8); }
 
 // End to end as the issue runs it: `slamroute survey` (SUMO vehicles, 0.5 m GPS-like noise, seeded)
