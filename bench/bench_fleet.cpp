@@ -3,6 +3,8 @@
 // planning time, for K = 2, 4, 8 and both strategies. Depot: the first node of the planning
 // graph (rl.start_node = -1). Usage:
 //   bench_fleet [--strategies partition,postman] [--k 2,4,8] [--candidates N] [--moves N]
+// Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
+// networks/README.md); Berlin-Adlershof from Debian's sumo-tools.
 #include <cstdio>
 #include <filesystem>
 #include <sstream>

@@ -2,6 +2,8 @@
 // city-like grids (one-way streets, no U-turns) and the real nets; plus route lengths relative
 // to postman. Prints markdown tables (bench/RESULTS.md "Planning").
 //   bench_planning [--quick] [--no-tsp-above N]
+// The real nets Bologna and Ingolstadt are read from ../shared/networks beside the clone (not
+// shipped: see networks/README.md); a missing one prints a "missing" row.
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -60,16 +62,8 @@ std::string cell(const Run& r) {
   return buf;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  setLogLevel(LogLevel::Error);
-  bool quick = false;
-  int tsp_limit = 2000;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--quick")) quick = true;
-    if (!std::strcmp(argv[i], "--no-tsp-above") && i + 1 < argc) tsp_limit = std::atoi(argv[++i]);
-  }
+/// Planning time against graph size on synthetic grid cities (paper Table 3).
+void printGridTimes(bool quick, int tsp_limit) {
   struct Size {
     int rows, cols;
   };
@@ -102,6 +96,10 @@ int main(int argc, char** argv) {
                 p.illegal);
     std::fflush(stdout);
   }
+}
+
+/// Every planner on the real nets' largest legally drivable part.
+void printRealNets() {
   std::printf("\n## Real networks (largest legally drivable part)\n\n");
   std::printf("| net | plan nodes/edges | planner | seconds | length km | / postman | node cov %% | "
               "edge cov %% | illegal turns | loop closures | mean / max log det cov |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -128,7 +126,10 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   }
-  // What the learning contributes (paper Table 2 variants vs an untrained table).
+}
+
+/// What the learning contributes: paper Table 2's rewards against an untrained table.
+void printQLearningVariants() {
   std::printf("\n## Q-learning variants on a weighted 12x12 two-way grid (weights uniform in [0.1, 1])\n\n");
   std::printf("| reward | episodes | length km | mean edge weight | edge cov %% | mean / max log det cov | "
               "shortest-path share %% |\n|---|---|---|---|---|---|---|\n");
@@ -150,5 +151,20 @@ int main(int argc, char** argv) {
                   r.length_m / 1000.0, r.mean_edge_weight, r.edge_coverage_pct, mean, r.max_logdet_cov,
                   100.0 * sp / r.length_m);
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  setLogLevel(LogLevel::Error);
+  bool quick = false;
+  int tsp_limit = 2000;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--quick")) quick = true;
+    if (!std::strcmp(argv[i], "--no-tsp-above") && i + 1 < argc) tsp_limit = std::atoi(argv[++i]);
+  }
+  printGridTimes(quick, tsp_limit);
+  printRealNets();
+  printQLearningVariants();
   return 0;
 }

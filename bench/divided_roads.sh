@@ -7,6 +7,8 @@
 # Surveys (--depth-spacing 0: traces only) are made once per net and seed and reused. Prints one
 # Markdown row per net and seed: junction-level node P / R / F1 and edge P / R, then the same at
 # place level. NETS="name=NET.net.xml ..." replaces the default list.
+# Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
+# networks/README.md); a clone without that folder passes other nets through NETS.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"

@@ -6,6 +6,8 @@
 # per decision. Usage: bench/explore_bench.sh [BUILD_DIR] [OUT_DIR] [NETS...]
 #   NETS: default bologna ingolstadt adlershof (all when none given). Runs one after another.
 #   KS (environment): the fleet sizes, default "1 2 4"; STRATEGIES likewise.
+# Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
+# networks/README.md); without that folder name the other nets.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"

@@ -10,6 +10,8 @@
 #   NETS="pasubio=/usr/share/sumo/tools/sumolib/scenario/scenarios/RealWorld/pasubio/pasubio_buslanes.net.xml
 #         braunschweig=/usr/share/sumo/tools/game/bs3d/bs.net.xml drt=/usr/share/sumo/tools/game/DRT/osm.net.xml"
 # SWEEP_ONLY=N keeps the first N settings (1: the defaults only).
+# Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
+# networks/README.md); a clone without that folder passes other nets through NETS.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"

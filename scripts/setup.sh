@@ -4,11 +4,12 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake pkg-config ccache git python3
+  build-essential cmake ccache git python3
+  pkg-config                            # PCL's CMake config finds FLANN through it
   python3-numpy python3-scipy            # bench/*.py analysis scripts
   sumo sumo-tools                       # SUMO binaries, libsumo (libsumocpp.so + headers), tools
   libeigen3-dev libboost-graph-dev libopencv-dev libembree-dev liblemon-dev
-  libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
+  libceres-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev
   libtbb-dev libpugixml-dev libnanoflann-dev zlib1g-dev mpi-default-dev
   libopenmpi-dev openmpi-bin            # `slamroute sweep` over MPI ranks; its tests run mpirun
   libproj-dev                           # net x/y -> WGS84 lon/lat for GPX / KML

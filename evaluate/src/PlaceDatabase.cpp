@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "slamroute/core/ConfigCheck.hpp"
+
 namespace slamroute::evaluate {
 namespace {
 
@@ -76,7 +78,7 @@ struct PlaceDatabase::Impl {
 };
 
 PlaceDatabase::PlaceDatabase(PlaceRecognitionConfig cfg) : impl_(std::make_unique<Impl>()) {
-  cfg.validate("place");
+  config::validateSubsection("place.", cfg);
   impl_->cfg = cfg;
   impl_->tree = std::make_unique<RingKeyTree>(cfg.rings, impl_->adaptor);
 }

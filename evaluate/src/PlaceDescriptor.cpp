@@ -4,21 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "slamroute/core/ConfigCheck.hpp"
+
 namespace slamroute::evaluate {
 namespace {
-
-/// Throws "WHERE.KEY: VALUE what" when `ok` is false.
-template <class T>
-void require(bool ok, const std::string& where, const char* key, T value, const char* what) {
-  if (ok) return;
-  std::ostringstream os;
-  os << where << "." << key << ": " << value << " " << what;
-  throw std::invalid_argument(os.str());
-}
 
 /// Euclidean norm of each sector's column (over the rings).
 std::vector<double> columnNorms(const PlaceDescriptor& d) {
@@ -69,17 +61,14 @@ std::vector<float> spreadOverRings(const std::vector<float>& h, int rings, int s
 
 }  // namespace
 
-void PlaceRecognitionConfig::validate(const std::string& where) const {
-  require(rings >= 1 && rings <= 1000, where, "rings", rings, "must be in 1..1000");
-  require(sectors >= 4 && sectors <= 3600, where, "sectors", sectors, "must be in 4..3600");
-  require(std::isfinite(max_radius_m) && max_radius_m > 0.0, where, "max_radius_m", max_radius_m,
-          "must be > 0");
-  require(ring_spread >= 0.0 && ring_spread <= rings, where, "ring_spread", ring_spread,
-          "must be in [0, rings]");
-  require(max_distance > 0.0 && max_distance <= 1.0, where, "max_distance", max_distance,
-          "must be in (0, 1]");
-  require(ring_key_candidates >= 1, where, "ring_key_candidates", ring_key_candidates,
-          "must be >= 1");
+void PlaceRecognitionConfig::validate() const {
+  config::requireRange("rings", rings, 1, 1000);
+  config::requireRange("sectors", sectors, 4, 3600);
+  config::requirePositive("max_radius_m", max_radius_m);
+  config::requireRange("ring_spread", ring_spread, 0.0, static_cast<double>(rings));
+  if (!(max_distance > 0.0 && max_distance <= 1.0))
+    config::rejectValue("max_distance", max_distance, "in (0, 1]");
+  config::requireRange("ring_key_candidates", ring_key_candidates, 1, 100000000);
 }
 
 PlaceDescriptor makePlaceDescriptor(const Cloud& body, double sensor_height_m,

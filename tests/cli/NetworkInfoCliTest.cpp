@@ -5,23 +5,19 @@
 #include <nlohmann/json.hpp>
 
 #include "CliTestUtil.hpp"
+#include "SumoToolsNets.hpp"
 
 namespace slamroute {
 namespace {
 
-const std::string kShared = SLAMROUTE_SHARED_DIR;
-
 TEST(NetworkInfoCli, BolognaJson) {
-  if (!std::filesystem::exists(kShared + "/networks/bologna_acosta/acosta_buslanes.net.xml"))
-    GTEST_SKIP() << "../shared/networks missing";
-  const auto r = test::runCli("network-info --json " + kShared +
-                              "/networks/bologna_acosta/acosta_buslanes.net.xml");
+  const auto r = test::runCli("network-info --json " + test::bolognaNet().string());
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["junctions"], 112);
-  EXPECT_EQ(j["passenger_edges"], 164);
-  EXPECT_EQ(j["lscc_junctions"], 80);
-  EXPECT_EQ(j["lscc_edges"], 133);
+  EXPECT_EQ(j["passenger_edges"], 166);
+  EXPECT_EQ(j["lscc_junctions"], 81);
+  EXPECT_EQ(j["lscc_edges"], 135);
 }
 
 TEST(NetworkInfoCli, ExportsWrittenWhenAsked) {

@@ -48,20 +48,14 @@ bool processMentions(const std::string& text) {
   return false;
 }
 
-TEST(RunCli, WholePipelineOnThePlusNet) {
-  const auto dir = test::cliTempDir("run_plus");
-  // A gyro twice as noisy as the default: evaluate must take its figures from odometry.yaml.
-  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
-  const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
-                          std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
-                          (dir / "out").string() + " --status-every 0.2 --planners qlearning,random,postman";
-  const auto r = test::runCli(cmd);
-  ASSERT_EQ(r.code, 0) << r.out;
-  // While steps run, their progress is quoted from their logs now and then (here every 0.2 s):
-  // "  running  evaluate postman [3 s]: evaluate: SLAM  40.0% ...".
-  EXPECT_NE(r.out.find("  running  "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("s]: "), std::string::npos) << r.out;
-  const auto out = dir / "out";
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+/// Each planner's route, drive, SLAM estimate, metrics and map.pcd.
+void expectEveryPlannersOutputs(const std::filesystem::path& out) {
   for (const std::string p : {"qlearning", "random", "postman"}) {
     EXPECT_TRUE(std::filesystem::exists(out / "routes" / (p + ".rou.xml"))) << p;
     EXPECT_TRUE(std::filesystem::exists(out / "drives" / p / "groundtruth.tum")) << p;
@@ -84,6 +78,10 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
     EXPECT_EQ(pcd.size(), pcd.find("DATA binary\n") + 12 + 12 * n) << p;
     EXPECT_TRUE(m["map_median_dist_m"].is_number()) << p;
   }
+}
+
+/// The random walk's budget and the directed coverage of the postman route.
+void expectBudgetAndDirectedCoverage(const std::filesystem::path& out) {
   // The random walk is given the Q-learning route's length as its budget.
   const auto q = nlohmann::json::parse(readFile(out / "routes" / "qlearning.json"));
   const auto rnd = nlohmann::json::parse(readFile(out / "routes" / "random.json"));
@@ -96,6 +94,10 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   EXPECT_DOUBLE_EQ(pm["directed_coverage"]["edges_pct"].get<double>(), 100.0);
   EXPECT_DOUBLE_EQ(pd["directed_coverage"]["edges_pct"].get<double>(), 100.0);
   EXPECT_GT(pm["sumo_length"]["in_junctions_m"].get<double>(), 0.0);
+}
+
+/// report.md: the tables of every planner and step, and the map accuracy cell.
+void expectReportTables(const std::filesystem::path& out) {
   const std::string report = readFile(out / "report.md");
   for (const char* s : {"| qlearning |", "| random |", "| postman |", "Spearman", "report/graph_weights.png",
                         "| node recall | ", "| survey | value | meaning |", "| streets driven | ",
@@ -121,7 +123,10 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   EXPECT_NE(report.find(cell), std::string::npos) << cell << "\n" << report;
   EXPECT_TRUE(std::filesystem::exists(out / "eval" / "qlearning" / "map_error_top.png"));
   EXPECT_NE(report.find("eval/qlearning/map_error_top.png"), std::string::npos);
+}
 
+/// A second run with --resume keeps all steps and writes only the report again.
+void expectResumeKeepsEveryStep(const std::string& cmd, const std::filesystem::path& out) {
   // --resume: every step left its stamp, so a second run keeps all eleven (survey, graph, three
   // plans, drives and SLAM runs) and only writes the report again.
   for (const std::string step : {"survey", "build-graph", "plan-random", "drive-postman", "evaluate-qlearning"})
@@ -129,11 +134,6 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   const std::string metrics_q = readFile(out / "eval" / "qlearning" / "metrics.json");
   const auto again = test::runCli(cmd + " --resume");
   ASSERT_EQ(again.code, 0) << again.out;
-  auto count = [](const std::string& text, const std::string& what) {
-    int n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-  };
   EXPECT_EQ(count(again.out, "  kept     "), 11) << again.out;
   EXPECT_EQ(count(again.out, "  started  "), 0) << again.out;
   EXPECT_EQ(readFile(out / "eval" / "qlearning" / "metrics.json"), metrics_q);
@@ -141,6 +141,12 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   EXPECT_NE(report2.find("| evaluate postman | kept from an earlier run |"), std::string::npos) << report2;
   EXPECT_NE(report2.find("--resume"), std::string::npos);
   EXPECT_NE(report2.find("s (this run; 11 of 11 steps kept from an earlier one)"), std::string::npos) << report2;
+}
+
+/// A resumed run that must redo the SLAM, stopped by SIGTERM, then resumed to the end.
+void expectSigtermStopsTheSlamAndResumeFinishes(const std::string& cmd,
+                                                const std::filesystem::path& dir,
+                                                const std::filesystem::path& out) {
   // Without the SLAM outputs, a resumed run does only the SLAM. Stopped by SIGTERM (a job
   // scheduler) while the SLAM runs, it stops them too, exits with 128 + 15 and leaves no
   // process behind; the next --resume does the SLAM runs that did not finish.
@@ -171,6 +177,27 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
   for (const std::string p : {"qlearning", "random", "postman"})
     EXPECT_TRUE(std::filesystem::exists(out / "eval" / p / "metrics.json")) << p;
   EXPECT_EQ(readFile(out / "eval" / "qlearning" / "estimate.tum"), estimate_q);  // same seed, same output
+}
+
+TEST(RunCli, WholePipelineOnThePlusNet) {
+  const auto dir = test::cliTempDir("run_plus");
+  // A gyro twice as noisy as the default: evaluate must take its figures from odometry.yaml.
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
+  const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
+                          std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
+                          (dir / "out").string() + " --status-every 0.2 --planners qlearning,random,postman";
+  const auto r = test::runCli(cmd);
+  ASSERT_EQ(r.code, 0) << r.out;
+  // While steps run, their progress is quoted from their logs now and then (here every 0.2 s):
+  // "  running  evaluate postman [3 s]: evaluate: SLAM  40.0% ...".
+  EXPECT_NE(r.out.find("  running  "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("s]: "), std::string::npos) << r.out;
+  const auto out = dir / "out";
+  expectEveryPlannersOutputs(out);
+  expectBudgetAndDirectedCoverage(out);
+  expectReportTables(out);
+  expectResumeKeepsEveryStep(cmd, out);
+  expectSigtermStopsTheSlamAndResumeFinishes(cmd, dir, out);
 }
 
 TEST(RunCli, BadNetIsAOneLineErrorAndWritesNothing) {

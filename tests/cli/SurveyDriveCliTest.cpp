@@ -73,7 +73,7 @@ TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
   // The drive need not exist: the config is checked before anything is read.
   test::expectCleanFailure("--config " + cfg.string() + " evaluate --drive " + (dir / "drive").string() + " --out " +
                          (dir / "eval").string(),
-                     cfg.string() + ": evaluate.output.map_tile_m: 0 must be >= 10", dir, 1);
+                     cfg.string() + ": evaluate.output.map_tile_m must be >= 10 (got 0)", dir, 1);
 }
 
 TEST(SurveyDriveCli, AFailedEvaluateLeavesNoHalfOutput) {

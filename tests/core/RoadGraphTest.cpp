@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "SumoToolsNets.hpp"
 #include "TestUtil.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/RoadGraph.hpp"
@@ -46,11 +47,10 @@ TEST(RoadGraph, JsonRoundTrip) {
 }
 
 TEST(RoadGraph, FromSumoNetKeepsTurnPermissions) {
-  if (!std::filesystem::exists(test::sharedNet("bologna"))) GTEST_SKIP() << "../shared/networks missing";
-  const SumoNet net = SumoNet::read(test::sharedNet("bologna"));
+  const SumoNet net = SumoNet::read(test::bolognaNet());
   const RoadGraph g = RoadGraph::fromSumoNet(net, true);
-  EXPECT_EQ(g.nodes.size(), 80u);
-  EXPECT_EQ(g.edges.size(), 133u);
+  EXPECT_EQ(g.nodes.size(), 81u);
+  EXPECT_EQ(g.edges.size(), 135u);
   ASSERT_TRUE(g.restricted_turns);
   g.validate("bologna");
   // allowed_next is exactly the set of SUMO connections between edges of the kept part.

@@ -5,6 +5,7 @@
 #include <tuple>
 #include <vector>
 
+#include "SumoToolsNets.hpp"
 #include "TestUtil.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveGraph.hpp"
@@ -182,19 +183,17 @@ TEST(SumoNet, RejectsNonFiniteAndAbsurdNumbers) {
   }
 }
 
-TEST(SumoNet, SharedNetworksHaveTheKnownCounts) {
-  if (!std::filesystem::exists(test::sharedNet("bologna")) || !std::filesystem::exists(test::sharedNet("ingolstadt")))
-    GTEST_SKIP() << "../shared/networks missing";
-  const NetworkInfo bo = networkInfo(SumoNet::read(test::sharedNet("bologna")));
+TEST(SumoNet, SumoToolsNetworksHaveTheKnownCounts) {
+  const NetworkInfo bo = networkInfo(SumoNet::read(test::bolognaNet()));
   EXPECT_EQ(bo.junctions, 112u);
-  EXPECT_EQ(bo.passenger_edges, 164u);
-  EXPECT_EQ(bo.lscc_junctions, 80u);
-  EXPECT_EQ(bo.lscc_edges, 133u);
-  const NetworkInfo in = networkInfo(SumoNet::read(test::sharedNet("ingolstadt")));
-  EXPECT_EQ(in.junctions, 381u);
-  EXPECT_EQ(in.passenger_edges, 853u);
-  EXPECT_EQ(in.lscc_junctions, 377u);
-  EXPECT_EQ(in.lscc_edges, 847u);
+  EXPECT_EQ(bo.passenger_edges, 166u);
+  EXPECT_EQ(bo.lscc_junctions, 81u);
+  EXPECT_EQ(bo.lscc_edges, 135u);
+  const NetworkInfo ad = networkInfo(SumoNet::read(test::adlershofNet()));
+  EXPECT_EQ(ad.junctions, 1033u);
+  EXPECT_EQ(ad.passenger_edges, 740u);
+  EXPECT_EQ(ad.lscc_junctions, 365u);
+  EXPECT_EQ(ad.lscc_edges, 702u);
 }
 
 }  // namespace

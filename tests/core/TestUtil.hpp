@@ -18,10 +18,4 @@ inline void writeText(const std::filesystem::path& p, const std::string& s) {
   std::ofstream(p, std::ios::binary) << s;
 }
 
-inline std::string sharedNet(const std::string& which) {
-  if (which == "bologna")
-    return std::string(SLAMROUTE_SHARED_DIR) + "/networks/bologna_acosta/acosta_buslanes.net.xml";
-  return std::string(SLAMROUTE_SHARED_DIR) + "/networks/ingolstadt21/ingolstadt21.net.xml";
-}
-
 }  // namespace slamroute::test

@@ -48,12 +48,25 @@ TEST(EvaluateConfig, EveryFlatKeyOfEarlierFilesIsMapped) {
 }
 
 TEST(EvaluateConfig, ValuesThatCannotWorkAreRefusedByName) {
-  EXPECT_EQ(loadError("input: {scan_stride: 0}\n"), "f.yaml: input.scan_stride: 0 must be in 1..100");
+  EXPECT_EQ(loadError("input: {scan_stride: 0}\n"), "f.yaml: input.scan_stride must be in [1, 100] (got 0)");
   EXPECT_NE(loadError("metrics: {plot_size_px: 200000}\n").find("metrics.plot_size_px"), std::string::npos);
   EXPECT_NE(loadError("metrics: {assoc_max_dt_s: -1}\n").find("assoc_max_dt_s"), std::string::npos);
   EXPECT_NE(loadError("metrics: {map_accuracy_max_m: 0}\n").find("map_accuracy_max_m"), std::string::npos);
   EXPECT_NE(loadError("mapping: {huber_m: .nan}\n").find("mapping.huber_m"), std::string::npos);
   EXPECT_NE(loadError("loop: {ambiguity_along_m: [3, -1]}\n").find("ambiguity_along_m"), std::string::npos);
+}
+
+TEST(EvaluateConfig, AConfigBuiltInCodeNamesTheSectionOfTheBadValue) {
+  EXPECT_EQ(loadError("loop: {place: {sectors: 2}}\n"),
+            "f.yaml: loop.place.sectors must be in [4, 3600] (got 2)");
+  Config c;
+  c.loop.place.sectors = 2;
+  try {
+    c.validate();
+    FAIL() << "sectors 2 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "loop.place.sectors must be in [4, 3600] (got 2)");
+  }
 }
 
 }  // namespace

@@ -156,7 +156,7 @@ TEST(PlaceDatabase, RejectsABadConfigAndForeignDescriptors) {
     PlaceDatabase db(bad);
     FAIL() << "rings 0 accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "place.rings: 0 must be in 1..1000");
+    EXPECT_EQ(std::string(e.what()), "place.rings must be in [1, 1000] (got 0)");
   }
   PlaceDatabase db(PlaceRecognitionConfig{});
   PlaceRecognitionConfig small;

@@ -5,14 +5,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "SumoToolsNets.hpp"
 #include "TestNets.hpp"
 #include "TestTmp.hpp"
 #include "slamroute/export/GeoProjection.hpp"
 
 namespace slamroute::exports {
 namespace {
-
-const char* kAdlershof = "/usr/share/sumo/tools/game/DRT/osm.net.xml";
 
 double metresBetween(const LonLat& a, const LonLat& b) {
   const double lat = 0.5 * (a.lat_deg + b.lat_deg) * M_PI / 180.0;
@@ -40,8 +39,7 @@ TEST(GeoProjection, JunctionsOfANetBuiltFromLonLatMapBackToTheirLonLat) {
 }
 
 TEST(GeoProjection, OsmNetRoundTripsWithinACentimetreAndStaysInItsOrigBoundary) {
-  if (!std::filesystem::exists(kAdlershof)) GTEST_SKIP() << kAdlershof << " missing (sumo-tools)";
-  const SumoNet net = SumoNet::read(kAdlershof);
+  const SumoNet net = SumoNet::read(test::adlershofNet());
   const auto proj = GeoProjection::forNet(net, std::nullopt);
   ASSERT_TRUE(proj);
   double lon0, lat0, lon1, lat1;
@@ -63,8 +61,7 @@ TEST(GeoProjection, OsmNetRoundTripsWithinACentimetreAndStaysInItsOrigBoundary) 
 }
 
 TEST(GeoProjection, OsmNetStreetsLieWhereTheyAreInBerlinAdlershof) {
-  if (!std::filesystem::exists(kAdlershof)) GTEST_SKIP() << kAdlershof << " missing (sumo-tools)";
-  const SumoNet net = SumoNet::read(kAdlershof);
+  const SumoNet net = SumoNet::read(test::adlershofNet());
   const auto proj = GeoProjection::forNet(net, std::nullopt);
   ASSERT_TRUE(proj);
   // Rudower Chaussee is Adlershof's main street; it starts at S-Bahnhof Adlershof

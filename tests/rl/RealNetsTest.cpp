@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 fs::path netNamed(const std::string& name) {
   if (name == "bologna") return test::bolognaNet();
-  if (name == "ingolstadt") return test::ingolstadtNet();
+  if (name == "adlershof") return test::adlershofNet();
   return test::defaultCityNet();
 }
 
@@ -41,9 +41,7 @@ class PlannerOnNet : public ::testing::TestWithParam<PlannerNet> {};
 
 TEST_P(PlannerOnNet, CoversEveryNodeWithLegalTurns) {
   const auto& [planner, name] = GetParam();
-  const fs::path net = netNamed(name);
-  if (!fs::exists(net)) GTEST_SKIP() << net << " missing";
-  const Route r = planOn(net, planner, 42);
+  const Route r = planOn(netNamed(name), planner, 42);
   EXPECT_EQ(r.planner, planner);
   EXPECT_DOUBLE_EQ(r.node_coverage_pct, 100.0);
   EXPECT_EQ(test::extra(r)["illegal_turns"].get<int>(), 0);
@@ -52,7 +50,7 @@ TEST_P(PlannerOnNet, CoversEveryNodeWithLegalTurns) {
 
 INSTANTIATE_TEST_SUITE_P(RealNets, PlannerOnNet,
                          ::testing::Combine(::testing::Values("qlearning", "postman"),
-                                            ::testing::Values("bologna", "ingolstadt",
+                                            ::testing::Values("bologna", "adlershof",
                                                               "default_city")),
                          caseName);
 
@@ -65,11 +63,10 @@ struct PostmanBound {
 class PostmanOnNet : public ::testing::TestWithParam<PostmanBound> {};
 
 TEST_P(PostmanOnNet, DrivesEveryEdgeNearTheLegalLowerBound) {
-  const fs::path net = netNamed(GetParam().net);
-  if (!fs::exists(net)) GTEST_SKIP() << net << " missing";
-  const Route r = planOn(net, "postman", 1);
+  const Route r = planOn(netNamed(GetParam().net), "postman", 1);
   const auto x = test::extra(r);
-  EXPECT_DOUBLE_EQ(r.edge_coverage_pct, 100.0);
+  // A share of summed lengths: on Adlershof's 696 edges it lands 1e-13 below 100.
+  EXPECT_NEAR(r.edge_coverage_pct, 100.0, 1e-9);
   // Every directed edge of the planning graph at least once.
   std::set<int> driven(r.edges.begin(), r.edges.end());
   EXPECT_EQ(static_cast<int>(driven.size()), x["plan_graph"]["edges"].get<int>());
@@ -84,10 +81,10 @@ TEST_P(PostmanOnNet, DrivesEveryEdgeNearTheLegalLowerBound) {
 }
 
 // Bologna forbids so many U-turns that no legal closed route can come within 3 % of the
-// turn-free optimum: the turn-legal circulation (a proven lower bound) is 9.97 % above it.
-// The route must reach that legal bound.
+// turn-free optimum: the turn-legal circulation (a proven lower bound) is 9.85 % above it.
+// The route must reach that legal bound. On Adlershof the two coincide.
 INSTANTIATE_TEST_SUITE_P(RealNets, PostmanOnNet,
-                         ::testing::Values(PostmanBound{"ingolstadt", 3.0},
+                         ::testing::Values(PostmanBound{"adlershof", 3.0},
                                            PostmanBound{"bologna", 10.0}),
                          [](const ::testing::TestParamInfo<PostmanBound>& info) {
                            return info.param.net;
@@ -105,8 +102,7 @@ class SumoDrivesRoute : public ::testing::TestWithParam<PlannerNet> {};
 TEST_P(SumoDrivesRoute, ToItsEndWithoutTeleports) {
   const auto& [planner, name] = GetParam();
   const fs::path net = netNamed(name);
-  if (!fs::exists("/usr/bin/sumo")) GTEST_SKIP() << "/usr/bin/sumo absent";
-  if (!fs::exists(net)) GTEST_SKIP() << net << " missing";
+  ASSERT_TRUE(fs::exists("/usr/bin/sumo")) << "scripts/setup.sh installs sumo";
   const Route r = planOn(net, planner, 1);
   const fs::path dir = slamroute::test::testTmp() / ("rl_sumo_" + planner + "_" + name);
   fs::create_directories(dir);
@@ -127,7 +123,7 @@ TEST_P(SumoDrivesRoute, ToItsEndWithoutTeleports) {
 
 INSTANTIATE_TEST_SUITE_P(RealNets, SumoDrivesRoute,
                          ::testing::Values(PlannerNet{"postman", "bologna"},
-                                           PlannerNet{"postman", "ingolstadt"},
+                                           PlannerNet{"postman", "adlershof"},
                                            PlannerNet{"qlearning", "bologna"}),
                          caseName);
 

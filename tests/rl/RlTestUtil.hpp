@@ -1,9 +1,10 @@
 #pragma once
-// Helpers shared by the rl tests: shared/shipped networks, small graphs.
+// Helpers shared by the rl tests: the shipped and the sumo-tools networks, small graphs.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "SumoToolsNets.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/rl/Planners.hpp"
@@ -11,11 +12,8 @@
 
 namespace slamroute::rl::test {
 
-inline std::filesystem::path sharedNet(const std::string& rel) {
-  return std::filesystem::path(SLAMROUTE_SHARED_DIR) / "networks" / rel;
-}
-inline std::filesystem::path bolognaNet() { return sharedNet("bologna_acosta/acosta_buslanes.net.xml"); }
-inline std::filesystem::path ingolstadtNet() { return sharedNet("ingolstadt21/ingolstadt21.net.xml"); }
+using slamroute::test::adlershofNet;
+using slamroute::test::bolognaNet;
 inline std::filesystem::path defaultCityNet() {
   return std::filesystem::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
 }

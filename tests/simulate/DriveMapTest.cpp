@@ -1,6 +1,7 @@
 // Drive under the default city's overpass with --save-scans: the scans stacked with the ground
 // truth form a crisp map (every point on a world surface), the overpass is a deck above the
 // street, saved scans equal regenerated ones. Writes build/test_tmp/<this test>/drive_map_overpass.png.
+#include "DriveTestUtil.hpp"
 #include "TestTmp.hpp"
 #include <gtest/gtest.h>
 
@@ -21,15 +22,9 @@ TEST(DriveMap, StackedScansUnderTheOverpassAreCrispAndShowTheDeck) {
   const fs::path route = slamroute::test::testTmp() / "drive_map_route.json";
   // Avenue C2 northwards from R1 to R3, under the R2 overpass (networks/README.md).
   std::ofstream(route) << R"({"sumo_edges":["R1C2_R3C2"]})";
-  simulate::Config cfg;
-  cfg.lidar.preset = "vlp16";
-  simulate::DriveOptions o;
-  o.net = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
-  o.route_file = route;
-  o.out_dir = dir;
-  o.seed = 11;
+  const simulate::Config cfg = test::vlp16Config();
+  simulate::DriveOptions o = test::testDrive("default_city/default_city.net.xml", route, dir, 11);
   o.save_scans = true;
-  o.write_world_mesh = false;
   const simulate::DriveResult r = simulate::runDrive(o, cfg);
   ASSERT_GT(r.groundtruth.size(), 50u);
 

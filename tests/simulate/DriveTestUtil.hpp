@@ -1,6 +1,8 @@
 #pragma once
-// Checks shared by the drive tests: distances to lane shapes, the edges of pose_edges.csv.
+// Shared by the drive tests: the drive set-up, distances to lane shapes, the edges of
+// pose_edges.csv.
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,8 +11,29 @@
 
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Types.hpp"
+#include "slamroute/simulate/Config.hpp"
+#include "slamroute/simulate/Drive.hpp"
 
 namespace slamroute::test {
+
+/// The simulate config of the drive tests: the default one with the VLP-16 preset.
+inline simulate::Config vlp16Config() {
+  simulate::Config cfg;
+  cfg.lidar.preset = "vlp16";
+  return cfg;
+}
+
+/// A drive of `route` on the shipped net `net` (below networks/) into `out`; no world.ply.
+inline simulate::DriveOptions testDrive(const std::string& net, const std::filesystem::path& route,
+                                        const std::filesystem::path& out, std::uint64_t seed) {
+  simulate::DriveOptions o;
+  o.net = std::filesystem::path(SLAMROUTE_SOURCE_DIR) / "networks" / net;
+  o.route_file = route;
+  o.out_dir = out;
+  o.seed = seed;
+  o.write_world_mesh = false;
+  return o;
+}
 
 /// Horizontal distance from p to a polyline.
 inline double distToPolyline(const Point3& p, const Polyline& pl) {

@@ -50,15 +50,9 @@ TEST(FleetDrive, TwoVehiclesInOneSessionEachFollowItsOwnRoute) {
     fleet.vehicles.push_back(v);
   }
   fleet.writeJson(route);
-  simulate::Config cfg;
-  cfg.lidar.preset = "vlp16";
+  simulate::Config cfg = test::vlp16Config();
   cfg.drive.traffic_per_km = 5.0;
-  simulate::DriveOptions o;
-  o.net = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/test/grid3x3.net.xml";
-  o.route_file = route;
-  o.out_dir = dir;
-  o.seed = 7;
-  o.write_world_mesh = false;
+  const simulate::DriveOptions o = test::testDrive("test/grid3x3.net.xml", route, dir, 7);
   const simulate::FleetDriveResult r = simulate::runFleetDrive(o, cfg);
   ASSERT_EQ(r.vehicles.size(), 2u);
 

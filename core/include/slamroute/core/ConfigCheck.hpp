@@ -41,4 +41,15 @@ inline void requireNonNegative(const char* key, double value, double hi = 1e9) {
   requireRange(key, value, 0.0, hi);
 }
 
+/// Runs `sub.validate()` and puts `prefix` ("section." or "FILE: section.") before the key its
+/// error names.
+template <class S>
+void validateSubsection(const std::string& prefix, const S& sub) {
+  try {
+    sub.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(prefix + e.what());
+  }
+}
+
 }  // namespace slamroute::config

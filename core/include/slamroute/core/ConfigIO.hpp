@@ -22,6 +22,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "slamroute/core/ConfigCheck.hpp"
+
 namespace slamroute::config {
 
 class Dumper {
@@ -71,13 +73,7 @@ class Dumper {
 /// that cannot work fails before any work with "FILE: section.sub.key ..." instead of after a run.
 template <class S>
 void validateSection(const S& sub, const std::string& file, const std::string& path) {
-  if constexpr (requires { sub.validate(); }) {
-    try {
-      sub.validate();
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(file + ": " + path + e.what());
-    }
-  }
+  if constexpr (requires { sub.validate(); }) validateSubsection(file + ": " + path, sub);
 }
 
 class Loader {

@@ -12,6 +12,7 @@ namespace slamroute::evaluate {
 
 /// Which scans of the drive are used.
 struct InputConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   /// Use every n-th scan of the drive (1 = all, 10 Hz); 2 halves the SLAM time and the
   /// prediction bridges the ~2.5 m between scans at city speed.
   int scan_stride = 2;
@@ -26,6 +27,7 @@ struct InputConfig {
 /// Range image, ground segmentation, clustering and features (LeGO-LOAM "imageProjection" and
 /// "featureAssociation"), and motion compensation of the sweep.
 struct FeaturesConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   /// Move every point to the sweep's start with the predicted motion over the sweep, when the
   /// scan carries point times (a spinning LiDAR fires its columns over 0.1 s while driving).
   bool deskew = true;
@@ -55,6 +57,7 @@ struct FeaturesConfig {
 /// The motion model: prediction between scans (wheel odometry + gyro, or constant velocity),
 /// scan-to-scan registration and the bounds a registration is checked against.
 struct OdometryConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   bool use_wheel_odometry = true;  ///< predict with the drive's odometry.csv when it has one
   /// Gyro bias from the drive's stops (core removeStandstillGyroBias): wheel speed below this
   /// is standstill (3 sigma of the simulated wheel-speed noise); 0 = keep the gyro as recorded.
@@ -109,6 +112,7 @@ struct OdometryConfig {
 
 /// Scan-to-map registration against the local map of recent keyframes, and keyframe selection.
 struct MappingConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   int iterations = 10;           ///< scan-to-map Gauss-Newton iterations
   int reassociate_every = 2;     ///< new neighbours / line and plane fits every n-th iteration
   double max_nn_m = 1.0;         ///< scan-to-map correspondence radius [m]
@@ -140,6 +144,7 @@ struct MappingConfig {
 /// a junction's internal lane with heading jumps of up to ~100 deg within one scan; local
 /// registration cannot converge from there, so yaw hypotheses around the prediction are tried.
 struct RelocaliseConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   bool enabled = true;          ///< yaw search when scan-to-map fails (without wheel odometry)
   double inlier_drop = 0.5;     ///< ... or when the inliers fall below this share of the recent level
   double ref_decay = 0.8;       ///< the recent level decays by this per scan
@@ -150,6 +155,7 @@ struct RelocaliseConfig {
 
 /// Loop closure (candidates, ICP verification, consistency checks) and the pose graph.
 struct LoopConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   bool enabled = true;            ///< enable loop closure
   double radius_m = 7.0;          ///< search radius around the new keyframe's estimate [m]
   double min_time_gap_s = 30.0;   ///< candidate must be older than this [s]
@@ -211,6 +217,7 @@ struct LoopConfig {
 
 /// The map the SLAM writes.
 struct OutputConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   double map_voxel_m = 0.2;  ///< voxel of the keyframe clouds and of map.pcd [m]
   /// The map is merged and written in square tiles of this size (MapTiles.hpp), so the merge
   /// holds one tile's voxels, not the whole map's. Same map points for any size [m].
@@ -222,6 +229,7 @@ struct OutputConfig {
 
 /// Trajectory and map metrics and plots.
 struct MetricsConfig {
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
   double map_accuracy_max_m = 2.0;   ///< distances are clamped here (points off the world) [m]
   double assoc_max_dt_s = 0.02;      ///< timestamp association tolerance [s]
   std::vector<double> rpe_lengths_m = {100, 200, 300, 400, 500, 600, 700, 800};  ///< KITTI [m]
@@ -239,8 +247,8 @@ struct Config {
   LoopConfig loop;
   OutputConfig output;
   MetricsConfig metrics;
-  /// Throws std::invalid_argument naming the first field ("mapping.iterations: ...") whose value
-  /// cannot work. The config loader runs it once when the evaluate section is loaded.
+  /// Throws std::invalid_argument naming the first field ("mapping.iterations must be ...") whose
+  /// value cannot work. The config loader checks each section when it is loaded.
   void validate() const;
 };
 

@@ -12,8 +12,7 @@ struct PlaceRecognitionConfig {
   double ring_spread = 1.0;       ///< Gaussian width of the spread over rings [rings], 0 = none
   double max_distance = 0.3;      ///< a candidate matches below this descriptor distance (0..1)
   int ring_key_candidates = 10;   ///< nearest ring keys that get the full rotation search
-  /// Throws std::invalid_argument naming the first bad field ("WHERE.rings: 0 must be ...").
-  void validate(const std::string& where) const;
+  void validate() const;  ///< values that cannot work: std::invalid_argument (PlaceDescriptor.cpp)
 };
 template <class V>
 void visitFields(V& v, PlaceRecognitionConfig& c) {
