@@ -1,12 +1,12 @@
 // The `partition` fleet strategy (seed paper: K-means segments, Hungarian assignment of
 // segments to groups), on streets: parts by K-means on street midpoints, parts to vehicles by
-// the Hungarian algorithm, a rural postman route per part, then moves of boundary edges from
+// the Hungarian algorithm, a rural postman route per part, then moves of boundary streets from
 // the longest route to a neighbouring part while each move shortens the longest route. A
 // second start, the postman circuit's legs (routes and the edges each drives first), is
 // balanced the same way and kept when its makespan is shorter (K-means parts ignore how far
 // the depot is; the legs do not), so partition is never longer than the postman strategy.
 // Parts hold directed edges: a street starts with both directions in one part, a move takes
-// one direction.
+// the directions of the street that the longest route's part holds.
 #include <algorithm>
 #include <limits>
 #include <set>
