@@ -15,12 +15,6 @@ namespace slamroute {
 namespace {
 namespace fs = std::filesystem;
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 /// Pixels of exactly vehicle k's colour in the picture.
 int pixelsOfVehicle(const cv::Mat& img, std::size_t k) {
   const auto c = cli::vehicleColour(k);
@@ -85,8 +79,8 @@ TEST(RunFleetCli, AFleetOfTwoBesideThePostmanOnThePlusNetThenResume) {
   const std::string metrics = readFile(out / "eval" / "fleet" / "fleet_metrics.json");
   const auto again = test::runCli(cmd + " --resume");
   ASSERT_EQ(again.code, 0) << again.out;
-  EXPECT_EQ(count(again.out, "  kept     "), 8) << again.out;
-  EXPECT_EQ(count(again.out, "  started  "), 0) << again.out;
+  EXPECT_EQ(test::countOf(again.out, "  kept     "), 8) << again.out;
+  EXPECT_EQ(test::countOf(again.out, "  started  "), 0) << again.out;
   EXPECT_EQ(readFile(out / "eval" / "fleet" / "fleet_metrics.json"), metrics);
   EXPECT_NE(readFile(out / "report.md").find("| evaluate fleet | kept from an earlier run |"),
             std::string::npos);
