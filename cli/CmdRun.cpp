@@ -15,6 +15,7 @@
 #include "Report.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/pipeline/FleetSteps.hpp"
 #include "slamroute/pipeline/Stages.hpp"
 
 namespace slamroute::cli {
@@ -33,6 +34,8 @@ std::vector<std::string> splitList(const std::string& s) {
 
 struct RunOpts {
   std::string net, out, planners = "qlearning,random,postman", geo_origin;
+  int vehicles = 1;                           ///< > 1: a fleet too (kFleetId)
+  std::string fleet_planner = "partition";
   int jobs = 2;
   int slam_jobs = 0;
   bool save_scans = false, resume = false;
@@ -55,15 +58,65 @@ std::vector<pipeline::PlanRequest> planRequests(const std::vector<std::string>& 
   return out;
 }
 
-/// Legal repair of every route and its crew files (.gpx, .kml, ...).
+/// The fleet's route, drive and evaluation are named by this id in the run folder.
+constexpr const char* kFleetId = "fleet";
+
+/// The single routes' plan requests and, with a fleet, the fleet's.
+std::vector<pipeline::PlanRequest> allPlanRequests(const std::vector<std::string>& planners,
+                                                   const RunOpts& o) {
+  std::vector<pipeline::PlanRequest> out = planRequests(planners);
+  if (o.vehicles > 1) {
+    pipeline::PlanRequest r;
+    r.id = kFleetId;
+    r.planner = o.fleet_planner;
+    r.vehicles = o.vehicles;
+    out.push_back(r);
+  }
+  return out;
+}
+
+/// Legal repair of every route and its crew files (.gpx, .kml, ...); the fleet's routes are
+/// repaired too (a fleet has no crew files: one .gpx per vehicle is not written yet).
 void repairRoutes(const Context& ctx, const SumoNet& net, const pipeline::RunLayout& run,
-                  const std::vector<std::string>& planners, const std::string& geo_origin) {
+                  const std::vector<std::string>& planners, const RunOpts& o) {
   std::string geo_note;
   for (const auto& p : planners) {
     pipeline::makeRouteDrivable(net, run.route(p));
-    geo_note = writeCrewFiles(ctx, net, run.route(p), geo_origin);
+    geo_note = writeCrewFiles(ctx, net, run.route(p), o.geo_origin);
   }
+  if (o.vehicles > 1) pipeline::makeFleetRouteDrivable(net, run.route(kFleetId));
   if (!geo_note.empty()) logInfo("  note: " + geo_note);
+}
+
+/// Every route's drive, the fleet's (one SUMO session) among them, `jobs` at once.
+void driveAll(pipeline::StageRunner& stages, const pipeline::ChildOptions& child,
+              const pipeline::RunLayout& run, const std::string& net,
+              const std::vector<std::string>& planners, const RunOpts& o) {
+  std::vector<Step> steps;
+  for (const auto& p : planners) steps.push_back(pipeline::driveStep(child, run, net, p, o.save_scans));
+  if (o.vehicles > 1) steps.push_back(pipeline::fleetDriveStep(child, run, net, kFleetId, o.save_scans));
+  stages.run(steps, o.jobs);
+}
+
+/// Every single drive's SLAM, then the fleet's: its vehicles one after another and the merge.
+void evaluateAll(const Context& ctx, pipeline::StageRunner& stages,
+                 const pipeline::ChildOptions& child, const pipeline::RunLayout& run,
+                 const std::vector<std::string>& planners, const RunOpts& o) {
+  if (!planners.empty())
+    pipeline::evaluateDrives(stages, child, run, planners, {}, o.slam_jobs,
+                             static_cast<int>(planners.size()),
+                             ctx.cfg.evaluate.output.keyframe_clouds_on_disk);
+  if (o.vehicles > 1) stages.run({pipeline::fleetEvaluateStep(child, run, kFleetId)}, 1);
+}
+
+std::string fleetNote(const RunOpts& o) {
+  if (o.vehicles < 2) return "";
+  return " and a fleet of " + std::to_string(o.vehicles) + " (" + o.fleet_planner + ")";
+}
+
+std::string fleetArgs(const RunOpts& o) {
+  if (o.vehicles < 2) return "";
+  return " --vehicles " + std::to_string(o.vehicles) + " --fleet-planner " + o.fleet_planner;
 }
 
 void writeReports(const ReportInputs& in, const std::string& geo_origin) {
@@ -88,7 +141,8 @@ void runPipeline(Context& ctx, const RunOpts& o) {
   const pipeline::RunLayout run{
       fs::weakly_canonical(fs::absolute(o.out.empty() ? fs::path("out") / stem : fs::path(o.out)))};
   const auto planners = splitList(o.planners);
-  if (planners.empty()) throw std::invalid_argument("run: --planners is empty");
+  if (planners.empty() && o.vehicles < 2)
+    throw std::invalid_argument("run: --planners is empty (and no fleet: --vehicles 1)");
   fs::create_directories(run.logs());
   const std::string net_abs = fs::weakly_canonical(fs::absolute(net_path)).string();  // one spelling per file, for --resume
   const pipeline::ChildOptions child = childOptions(ctx);
@@ -98,14 +152,13 @@ void runPipeline(Context& ctx, const RunOpts& o) {
   stages.run({pipeline::surveyStep(child, run, net_abs)}, 1);
   logInfo("[2/6] road graph from the survey");
   stages.run({pipeline::buildGraphStep(child, run, net_abs)}, 1);
-  logInfo("[3/6] planning: " + o.planners);
-  pipeline::planRoutes(stages, child, run, planRequests(planners), o.jobs);
-  repairRoutes(ctx, net, run, planners, o.geo_origin);
+  logInfo("[3/6] planning: " + o.planners + fleetNote(o));
+  pipeline::planRoutes(stages, child, run, allPlanRequests(planners, o), o.jobs);
+  repairRoutes(ctx, net, run, planners, o);
   logInfo("[4/6] driving each route in SUMO with traffic");
-  pipeline::driveRoutes(stages, child, run, net_abs, planners, {}, o.save_scans, o.jobs);
+  driveAll(stages, child, run, net_abs, planners, o);
   logInfo("[5/6] LiDAR SLAM on each drive");
-  pipeline::evaluateDrives(stages, child, run, planners, {}, o.slam_jobs, static_cast<int>(planners.size()),
-                           ctx.cfg.evaluate.output.keyframe_clouds_on_disk);
+  evaluateAll(ctx, stages, child, run, planners, o);
 
   logInfo("[6/6] report");
   ReportInputs in;
@@ -114,8 +167,9 @@ void runPipeline(Context& ctx, const RunOpts& o) {
   in.survey_dir = run.survey();
   in.graph_json = run.graph();
   in.planners = planners;
-  in.command = "slamroute run --net " + net_abs + " --out " + run.out.string() + " --planners " + o.planners +
-               " --seed " + std::to_string(ctx.cfg.seed) + (o.resume ? " --resume" : "");
+  if (o.vehicles > 1) in.fleet = kFleetId;
+  in.command = "slamroute run --net " + net_abs + " --out " + run.out.string() + " --planners '" + o.planners +
+               "'" + fleetArgs(o) + " --seed " + std::to_string(ctx.cfg.seed) + (o.resume ? " --resume" : "");
   in.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   in.step_seconds = stages.times();
   writeReports(in, o.geo_origin);
@@ -129,6 +183,13 @@ void registerRun(CLI::App& app, Context& ctx) {
   sub->add_option("--net", o->net, "SUMO network (default: networks/default_city/default_city.net.xml)");
   sub->add_option("--out", o->out, "output folder (default: out/<net name>)");
   sub->add_option("--planners", o->planners, "comma-separated planners to compare")->capture_default_str();
+  sub->add_option("--vehicles", o->vehicles,
+                  "K > 1: also a fleet of K vehicles sharing the streets, driven in one SUMO "
+                  "session, evaluated with its merged map (routes/fleet.json, drives/fleet/, "
+                  "eval/fleet/); --planners '' runs the fleet alone")
+      ->capture_default_str()->check(CLI::Range(1, 64));
+  sub->add_option("--fleet-planner", o->fleet_planner, "the fleet's planner: partition | postman")
+      ->capture_default_str()->check(CLI::IsMember({"partition", "postman"}));
   sub->add_option("--jobs", o->jobs, "steps run at once (each SUMO step is its own process)")
       ->capture_default_str()->check(CLI::Range(1, 64));
   sub->add_option("--slam-jobs", o->slam_jobs,

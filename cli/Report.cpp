@@ -1,7 +1,9 @@
 #include "Report.hpp"
 
+#include "ReportFleet.hpp"
 #include "ReportSections.hpp"
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/FleetDrive.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/pipeline/JsonFile.hpp"
 #include "slamroute/simulate/Drive.hpp"
@@ -12,15 +14,21 @@ using nlohmann::json;
 
 namespace {
 
-/// The world of the first drive of `in.planners` that wrote a world.yaml.
+/// The world `drive` was driven in, when it wrote a world.yaml.
+bool loadDriveWorld(const fs::path& drive, std::optional<simulate::World>& world) {
+  if (!fs::exists(drive / "world.yaml")) return false;
+  const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
+  world.emplace(simulate::World::build(SumoNet::read(wf.net), wf.world, wf.seed));
+  return true;
+}
+
+/// The world of the first drive of `in.planners` that wrote a world.yaml, else the fleet's
+/// first vehicle's (all drives of a run share the net, world config and seed).
 void loadFirstDriveWorld(const ReportInputs& in, std::optional<simulate::World>& world) {
-  for (const auto& p : in.planners) {
-    const fs::path drive = in.out / "drives" / p;
-    if (!fs::exists(drive / "world.yaml")) continue;
-    const simulate::DriveWorldFile wf = simulate::readDriveWorldFile(drive);
-    world.emplace(simulate::World::build(SumoNet::read(wf.net), wf.world, wf.seed));
-    return;
-  }
+  for (const auto& p : in.planners)
+    if (loadDriveWorld(in.out / "drives" / p, world)) return;
+  if (!in.fleet.empty())
+    loadDriveWorld(in.out / "drives" / in.fleet / FleetDriveInfo::folderName(0), world);
 }
 
 }  // namespace
@@ -39,8 +47,8 @@ void writeReport(const ReportInputs& in) {
   std::ostringstream md;
   for (const SectionWriter section :
        {writeHeaderSection, writeRoadGraphSection, writeResultsSection, writeUncertaintySection,
-        writePlannerPicturesSection, writeWeightVsDriftSection, writeDriftByStreetKindSection,
-        writeStepTimesSection})
+        writePlannerPicturesSection, writeFleetPlanSection, writeFleetResultsSection,
+        writeWeightVsDriftSection, writeDriftByStreetKindSection, writeStepTimesSection})
     section(md, data);
   writeFileAtomic(in.out / "report.md", md.str());
 }

@@ -51,9 +51,7 @@ std::optional<MapAccuracy> MapOutput::alignedAccuracy() const {
 void MapOutput::writeImage(const std::filesystem::path& png) const {
   if (!image_) return;
   const MapAccuracy aligned = *alignedAccuracy();
-  // Colours up to twice the aligned p95 in 0.25 m steps (at most the clamp): a good map's
-  // centimetres and a broken one's metres both show.
-  const double top = std::min(max_m_, std::max(0.25, std::ceil(2.0 * aligned.p95_m / 0.25) * 0.25));
+  const double top = mapErrorImageTop(aligned.p95_m, max_m_);
   char title[200];
   std::snprintf(title, sizeof title,
                 "SLAM map from above, aligned like the ATE: distance to the world surface (median %.2f m)",

@@ -187,6 +187,12 @@ double MapErrorImage::meanAt(double x, double y) const {
   return sum_[at(r, c)] / count_[at(r, c)];
 }
 
+double mapErrorImageTop(double aligned_p95_m, double max_m) {
+  // Twice the p95 in 0.25 m steps (at most the clamp): a good map's centimetres and a broken
+  // one's metres both show.
+  return std::min(max_m, std::max(0.25, std::ceil(2.0 * aligned_p95_m / 0.25) * 0.25));
+}
+
 void MapErrorImage::write(const std::filesystem::path& path, const std::string& title, double top_m) const {
   if (!(top_m > 0)) throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
   // Mean distance per pixel on the colour map (0 .. top_m), white where the map has no point.

@@ -46,6 +46,7 @@ Step planStep(const ChildOptions& opts, const RunLayout& run, const PlanRequest&
   if (!req.reward.empty()) a.insert(a.end(), {"--reward", req.reward});
   a.insert(a.end(), {"--out", run.route(req.id).string()});
   if (max_length_m) a.insert(a.end(), {"--max-length", std::to_string(*max_length_m)});
+  if (req.vehicles > 1) a.insert(a.end(), {"--vehicles", std::to_string(req.vehicles)});
   Step s = childStep(opts, "plan " + req.id, a, run.logs() / ("plan-" + req.id + ".log"), req.seed);
   s.output = run.route(req.id);
   return s;
@@ -79,8 +80,16 @@ double routeLength(const fs::path& route_json) { return Route::readJson(route_js
 
 void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {
   Route r = Route::readJson(route_json);
+  repairSumoTurns(net, r, route_json.string());
+  r.writeJson(route_json);
+  fs::path rou = route_json;
+  rou.replace_extension(".rou.xml");
+  r.writeRouXml(rou);
+}
+
+void repairSumoTurns(const SumoNet& net, Route& r, const std::string& where) {
   if (r.sumo_edges.empty())
-    throw std::runtime_error(route_json.string() + ": route has no SUMO edges (graph not matched to the net?)");
+    throw std::runtime_error(where + ": route has no SUMO edges (graph not matched to the net?)");
   const LegalRoute legal = legalizeSumoRoute(net, r.sumo_edges);
   if (legal.repaired_transitions > 0 || legal.dropped_edges > 0) {
     std::ostringstream note;
@@ -91,10 +100,6 @@ void makeRouteDrivable(const SumoNet& net, const fs::path& route_json) {
     r.sumo_edges = legal.edges;
   }
   r.sumo_coverage = sumoCoverage(net, r.sumo_edges);  // of the route SUMO drives
-  r.writeJson(route_json);
-  fs::path rou = route_json;
-  rou.replace_extension(".rou.xml");
-  r.writeRouXml(rou);
 }
 
 std::vector<std::string> longestRouteFirst(const RunLayout& run, const std::vector<std::string>& ids) {

@@ -44,6 +44,13 @@ inline std::filesystem::path cliTempDir(const std::string& name) {
   return dir;
 }
 
+/// How often `what` occurs in `text` (overlaps counted).
+inline int countOf(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 inline int countLines(const std::string& s) {
   int n = 0;
   for (char c : s) n += c == '\n';

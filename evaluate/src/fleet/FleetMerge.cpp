@@ -14,6 +14,22 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("fleet merge: " + what);
 }
 
+/// The merged map's accuracy as built and under the fleet's one alignment (as a single drive's
+/// map is measured, MapOutput.hpp).
+void measureMergedMap(const Mesh& mesh, const Config& cfg, FleetResult& r) {
+  const double max_m = cfg.metrics.map_accuracy_max_m;
+  Eigen::AlignedBox3f bounds;
+  for (const auto& p : r.map) bounds.extend(p);
+  MapAccuracyMeter built(mesh, max_m, bounds);
+  built.add(r.map);
+  const Cloud aligned = transformed(r.map, r.T_gt_est);
+  MapAccuracyMeter meter(mesh, max_m, transformedBox(bounds, r.T_gt_est));
+  meter.add(aligned, &r.map_aligned_dist_m);
+  r.map_accuracy = built.result();
+  r.map_aligned_accuracy = meter.result();
+  r.map_accuracy_max_m = max_m;
+}
+
 /// Completeness per vehicle and merged, map accuracy of the merged map.
 void measureMaps(const std::vector<FleetVehicleInput>& vehicles, const Config& cfg,
                  const FleetMergeOptions& opt, FleetResult& r) {
@@ -36,12 +52,7 @@ void measureMaps(const std::vector<FleetVehicleInput>& vehicles, const Config& c
   r.map = voxelFilter(r.map, cfg.output.map_voxel_m);
   r.map_points = r.map.size();
   r.completeness_pct = coveredPct(facades, r.map, opt.covered_m);
-  Eigen::AlignedBox3f bounds;
-  for (const auto& p : r.map) bounds.extend(p);
-  MapAccuracyMeter meter(mesh, cfg.metrics.map_accuracy_max_m, bounds);
-  meter.add(r.map);
-  r.map_accuracy_mean_m = meter.result().mean_m;
-  r.map_accuracy_p95_m = meter.result().p95_m;
+  measureMergedMap(mesh, cfg, r);
 }
 
 void measureTrajectories(const std::vector<FleetVehicleInput>& vehicles, const Config& cfg,

@@ -36,6 +36,21 @@ std::string closuresCsv(const FleetResult& r) {
   return os.str();
 }
 
+/// The aligned merged map from above, coloured like a single drive's map_error_top.png.
+void writeMergedMapImage(const fs::path& png, const FleetResult& r) {
+  const Cloud aligned = transformed(r.map, r.T_gt_est);
+  Eigen::AlignedBox3f bounds;
+  for (const auto& p : aligned) bounds.extend(p);
+  MapErrorImage image(bounds, 1000);
+  image.add(aligned, r.map_aligned_dist_m.data());
+  char title[200];
+  std::snprintf(title, sizeof title,
+                "Merged map from above, one alignment for all vehicles: distance to the world "
+                "surface (median %.2f m)",
+                r.map_aligned_accuracy.median_m);
+  image.write(png, title, mapErrorImageTop(r.map_aligned_accuracy.p95_m, r.map_accuracy_max_m));
+}
+
 }  // namespace
 
 void writeFleetOutputs(const fs::path& out, const FleetResult& r,
@@ -54,11 +69,19 @@ void writeFleetOutputs(const fs::path& out, const FleetResult& r,
                             {"common_ate_after_m", r.common_ate_after_m},
                             {"completeness_pct", r.completeness_pct},
                             {"facade_samples", r.facade_samples},
-                            {"map_accuracy_mean_m", r.map_accuracy_mean_m},
-                            {"map_accuracy_p95_m", r.map_accuracy_p95_m},
+                            {"map_mean_dist_m", r.map_accuracy.mean_m},
+                            {"map_median_dist_m", r.map_accuracy.median_m},
+                            {"map_p95_dist_m", r.map_accuracy.p95_m},
+                            {"map_far_share", r.map_accuracy.clamped_share},
+                            {"map_aligned_mean_dist_m", r.map_aligned_accuracy.mean_m},
+                            {"map_aligned_median_dist_m", r.map_aligned_accuracy.median_m},
+                            {"map_aligned_p95_dist_m", r.map_aligned_accuracy.p95_m},
+                            {"map_aligned_far_share", r.map_aligned_accuracy.clamped_share},
+                            {"map_accuracy_max_m", r.map_accuracy_max_m},
                             {"map_points", r.map_points}};
   writeFileAtomic(out / "fleet_closures.csv", closuresCsv(r));
   if (!r.map.empty()) writePcd(out / "merged_map.pcd", r.map);
+  if (!r.map_aligned_dist_m.empty()) writeMergedMapImage(out / "merged_map_error_top.png", r);
   writeFileAtomic(out / "fleet_metrics.json", j.dump(2) + "\n");
 }
 

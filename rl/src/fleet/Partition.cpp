@@ -1,12 +1,12 @@
 // The `partition` fleet strategy (seed paper: K-means segments, Hungarian assignment of
 // segments to groups), on streets: parts by K-means on street midpoints, parts to vehicles by
-// the Hungarian algorithm, a rural postman route per part, then moves of boundary edges from
+// the Hungarian algorithm, a rural postman route per part, then moves of boundary streets from
 // the longest route to a neighbouring part while each move shortens the longest route. A
 // second start, the postman circuit's legs (routes and the edges each drives first), is
 // balanced the same way and kept when its makespan is shorter (K-means parts ignore how far
 // the depot is; the legs do not), so partition is never longer than the postman strategy.
 // Parts hold directed edges: a street starts with both directions in one part, a move takes
-// one direction.
+// the directions of the street that the longest route's part holds.
 #include <algorithm>
 #include <limits>
 #include <set>
@@ -30,12 +30,14 @@ struct Partition {
 struct Layout {
   std::vector<Point2> street_midpoint, edge_midpoint;
   std::vector<std::vector<int>> edges_at_node;
+  std::vector<std::vector<int>> edges_of_street;  ///< its one or two directed edges
 };
 
 Layout layoutOf(const FleetContext& ctx) {
   const PlanGraph& pg = ctx.pg;
   Layout s{std::vector<Point2>(sz(pg.num_streets), Point2::Zero()),
-           std::vector<Point2>(sz(pg.m)), std::vector<std::vector<int>>(sz(pg.n))};
+           std::vector<Point2>(sz(pg.m)), std::vector<std::vector<int>>(sz(pg.n)),
+           std::vector<std::vector<int>>(sz(pg.num_streets))};
   std::vector<int> count(sz(pg.num_streets), 0);
   for (int e = 0; e < pg.m; ++e) {
     const auto pos = [&](int node) { return ctx.g.nodes[sz(pg.node_orig[sz(node)])].pos.head<2>(); };
@@ -44,6 +46,7 @@ Layout layoutOf(const FleetContext& ctx) {
     ++count[sz(pg.street[sz(e)])];
     s.edges_at_node[sz(pg.u[sz(e)])].push_back(e);
     s.edges_at_node[sz(pg.v[sz(e)])].push_back(e);
+    s.edges_of_street[sz(pg.street[sz(e)])].push_back(e);
   }
   for (int st = 0; st < pg.num_streets; ++st) s.street_midpoint[sz(st)] /= count[sz(st)];
   return s;
@@ -142,7 +145,18 @@ std::vector<std::pair<int, int>> boundaryMoves(const Layout& layout, const PlanG
   return moves;
 }
 
-/// One improving move of a boundary edge off the longest route; false when none is found.
+/// The parts with edge e's street moved from e's part to q: both directions when e's part
+/// holds both. Moving one direction alone seldom shortens a route: it still drives the street
+/// the other way, and mostly the moved direction too, as the leg back.
+std::vector<int> movedStreet(const Layout& layout, const PlanGraph& pg,
+                             const std::vector<int>& part_of_edge, int e, int q) {
+  std::vector<int> trial = part_of_edge;
+  for (int d : layout.edges_of_street[sz(pg.street[sz(e)])])
+    if (trial[sz(d)] == part_of_edge[sz(e)]) trial[sz(d)] = q;
+  return trial;
+}
+
+/// One improving move of a boundary street off the longest route; false when none is found.
 bool improveOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
                  Partition& part) {
   const int p = static_cast<int>(std::max_element(part.length.begin(), part.length.end()) -
@@ -151,8 +165,8 @@ bool improveOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& 
   const auto moves = boundaryMoves(layout, ctx.pg, part, p);
   for (std::size_t i = 0; i < moves.size() && static_cast<int>(i) < cfg.candidates_per_move; ++i) {
     const auto [e, q] = moves[i];
-    std::vector<int> trial = part.part_of_edge;
-    trial[sz(e)] = q;
+    std::vector<int> trial = movedStreet(layout, ctx.pg, part.part_of_edge, e, q);
+    if (std::find(trial.begin(), trial.end(), p) == trial.end()) continue;  // p keeps an edge
     std::vector<int> route_p = solvePart(ctx, trial, p), route_q = solvePart(ctx, trial, q);
     const double lp = routeLength(ctx.pg, route_p), lq = routeLength(ctx.pg, route_q);
     if (std::max(lp, lq) >= part.length[sz(p)] - 1e-6) continue;

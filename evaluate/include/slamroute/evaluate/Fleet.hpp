@@ -13,6 +13,7 @@
 #include "slamroute/core/Trajectory.hpp"
 #include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/Features.hpp"
+#include "slamroute/evaluate/MapAccuracy.hpp"
 
 namespace slamroute::evaluate {
 
@@ -78,8 +79,12 @@ struct FleetResult {
   Pose3 T_gt_est = Pose3::Identity(); ///< the one alignment (after the merge)
   double completeness_pct = 0.0;      ///< facades the merged map covers [%]
   int facade_samples = 0;
-  double map_accuracy_mean_m = 0.0;   ///< merged map points to the world mesh
-  double map_accuracy_p95_m = 0.0;
+  /// Merged map points to the world mesh, clamped at map_accuracy_max_m: the single drive's
+  /// map-accuracy figures (MapAccuracy.hpp), so the two read alike; as built (the frame of
+  /// vehicle 0's start) and under the fleet's one alignment T_gt_est.
+  MapAccuracy map_accuracy, map_aligned_accuracy;
+  double map_accuracy_max_m = 0.0;
+  std::vector<float> map_aligned_dist_m;  ///< per point of `map`, aligned (its top view)
   std::size_t map_points = 0;
   Cloud map;                          ///< the merged map (world frame, voxel cfg.output.map_voxel_m)
 };
@@ -121,7 +126,8 @@ FleetResult mergeFleet(const std::vector<FleetVehicleInput>& vehicles, const Con
 namespace slamroute::evaluate {
 
 /// Writes OUT/fleet_metrics.json (per vehicle and merged), OUT/merged_<folder>.tum (each
-/// vehicle's estimate after the merge), OUT/fleet_closures.csv and OUT/merged_map.pcd.
+/// vehicle's estimate after the merge), OUT/fleet_closures.csv, OUT/merged_map.pcd and
+/// OUT/merged_map_error_top.png (the aligned merged map from above, by distance to the world).
 /// `folders`: each vehicle's folder name (vehicle_K).
 void writeFleetOutputs(const std::filesystem::path& out, const FleetResult& r,
                        const std::vector<std::string>& folders);

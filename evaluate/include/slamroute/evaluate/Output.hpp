@@ -66,6 +66,10 @@ class MapErrorImage {
   std::vector<std::uint32_t> count_;
 };
 
+/// The top of a map-error image's colour scale for an aligned map with this p95 distance and
+/// the accuracy's clamp [m].
+double mapErrorImageTop(double aligned_p95_m, double max_m);
+
 /// Top view: ground truth (green) and aligned estimate (red), same scale on both axes.
 void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, int size_px);
 /// Line plot of y against x (x ascending, both axes from 0) with labelled ticks and a grid;

@@ -12,6 +12,7 @@
 
 namespace slamroute {
 struct SumoNet;
+struct Route;
 }
 
 namespace slamroute::pipeline {
@@ -55,6 +56,7 @@ struct PlanRequest {
   /// same seed's Q-learning route: paper Table 1 compares routes for the same crew time). Empty:
   /// no budget.
   std::string budget_from;
+  int vehicles = 1;  ///< > 1: a fleet sharing the streets (plan --vehicles; FleetSteps.hpp)
 };
 
 /// The plan step of `req`; `max_length_m` is the budget when the request has one.
@@ -75,6 +77,8 @@ Step budgetedPlanStep(const ChildOptions& opts, const RunLayout& run, const Plan
 /// edges with the shortest legal detour where SUMO forbids the turn (noted in the route), and
 /// writes ROUTE.rou.xml beside it. Throws when the route has no SUMO edges.
 void makeRouteDrivable(const SumoNet& net, const std::filesystem::path& route_json);
+/// makeRouteDrivable's repair of one route in memory (`where` names it in the error).
+void repairSumoTurns(const SumoNet& net, Route& route, const std::string& where);
 
 /// `ids` ordered by their planned route length, longest first (ties keep their order): with
 /// several SLAM runs at a time the last one to start is the shortest, and the stage ends soonest.

@@ -1,0 +1,91 @@
+// End to end: `slamroute run --vehicles 2` on the plus-shaped test net (survey -> graph -> plan
+// postman and a fleet of two -> drive both, the fleet in one SUMO session -> SLAM of the postman
+// drive, of each vehicle and the fleet merge -> report), then --resume keeps every step.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include "CliTestUtil.hpp"
+#include "ReportFleet.hpp"
+#include "slamroute/core/AtomicFile.hpp"
+
+namespace slamroute {
+namespace {
+namespace fs = std::filesystem;
+
+/// Pixels of exactly vehicle k's colour in the picture.
+int pixelsOfVehicle(const cv::Mat& img, std::size_t k) {
+  const auto c = cli::vehicleColour(k);
+  int n = 0;
+  for (int r = 0; r < img.rows; ++r)
+    for (int col = 0; col < img.cols; ++col) {
+      const auto& px = img.at<cv::Vec3b>(r, col);
+      n += px[0] == c[0] && px[1] == c[1] && px[2] == c[2];
+    }
+  return n;
+}
+
+void expectFleetFiles(const fs::path& out) {
+  const auto route = nlohmann::json::parse(readFile(out / "routes" / "fleet.json"));
+  ASSERT_EQ(route["vehicles"].size(), 2u);
+  EXPECT_DOUBLE_EQ(route["fleet"]["edge_coverage_pct"].get<double>(), 100.0);
+  EXPECT_NE(readFile(out / "routes" / "fleet.rou.xml").find("mapper_1"), std::string::npos);
+  for (const char* v : {"vehicle_0", "vehicle_1"}) {
+    EXPECT_TRUE(fs::exists(out / "drives" / "fleet" / v / "groundtruth.tum")) << v;
+    EXPECT_TRUE(fs::exists(out / "eval" / "fleet" / v / "metrics.json")) << v;
+    EXPECT_TRUE(fs::exists(out / "eval" / "fleet" / ("merged_" + std::string(v) + ".tum"))) << v;
+  }
+  EXPECT_TRUE(fs::exists(out / "drives" / "fleet" / "fleet.json"));
+  EXPECT_TRUE(fs::exists(out / "eval" / "fleet" / "merged_map_error_top.png"));
+  const auto m = nlohmann::json::parse(readFile(out / "eval" / "fleet" / "fleet_metrics.json"));
+  ASSERT_EQ(m["vehicles"].size(), 2u);
+  for (const char* k : {"common_ate_after_m", "completeness_pct", "map_median_dist_m",
+                        "map_aligned_median_dist_m", "map_far_share", "map_accuracy_max_m"})
+    EXPECT_TRUE(m[k].is_number()) << k;
+}
+
+void expectFleetReport(const fs::path& out) {
+  const std::string report = readFile(out / "report.md");
+  for (const char* s :
+       {"## Fleet: 2 vehicles share the streets", "report/route_fleet.png", "| makespan / bound |",
+        "| single postman route from the depot, L1 [km] |",
+        "| this run's postman route (after the legal repair) [km] |", "| mapper_0 |", "| mapper_1 |",
+        "| merged map |", "### Fleet: SLAM per vehicle and the merged map",
+        "s for the single postman route", "| street facades covered by the merged map [%] |",
+        "eval/fleet/merged_map_error_top.png", "| postman |"})
+    EXPECT_NE(report.find(s), std::string::npos) << s << "\n" << report;
+  // The route map draws each vehicle in its own colour, and no third.
+  const cv::Mat img = cv::imread((out / "report" / "route_fleet.png").string(), cv::IMREAD_COLOR);
+  ASSERT_FALSE(img.empty());
+  EXPECT_GT(pixelsOfVehicle(img, 0), 200);
+  EXPECT_GT(pixelsOfVehicle(img, 1), 200);
+  EXPECT_EQ(pixelsOfVehicle(img, 2), 0);
+}
+
+TEST(RunFleetCli, AFleetOfTwoBesideThePostmanOnThePlusNetThenResume) {
+  const auto dir = test::cliTempDir("run_fleet");
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\n";
+  const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
+                          std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
+                          (dir / "out").string() + " --planners postman --vehicles 2";
+  const auto r = test::runCli(cmd);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const fs::path out = dir / "out";
+  expectFleetFiles(out);
+  expectFleetReport(out);
+  // survey, graph, two plans, two drives, two evaluations: all kept, the report written again.
+  const std::string metrics = readFile(out / "eval" / "fleet" / "fleet_metrics.json");
+  const auto again = test::runCli(cmd + " --resume");
+  ASSERT_EQ(again.code, 0) << again.out;
+  EXPECT_EQ(test::countOf(again.out, "  kept     "), 8) << again.out;
+  EXPECT_EQ(test::countOf(again.out, "  started  "), 0) << again.out;
+  EXPECT_EQ(readFile(out / "eval" / "fleet" / "fleet_metrics.json"), metrics);
+  EXPECT_NE(readFile(out / "report.md").find("| evaluate fleet | kept from an earlier run |"),
+            std::string::npos);
+  expectFleetReport(out);
+}
+
+}  // namespace
+}  // namespace slamroute
