@@ -38,7 +38,7 @@ void registerExplore(CLI::App& app, Context& ctx) {
     for (const explore::Milestone& m : r.milestones) {
       char line[200];
       if (m.reached)
-        std::snprintf(line, sizeof line, "%3.0f %%: %.0f s, %.0f m (%.2f x the offline bound)",
+        std::snprintf(line, sizeof line, "%3.0f %%: %.0f s, %.0f m (%.2f x the offline fleet bound)",
                       100 * m.share, m.time_s, m.fleet_distance_m,
                       m.fleet_distance_m / r.offline_bound_m);
       else

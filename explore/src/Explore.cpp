@@ -48,6 +48,7 @@ nlohmann::json summaryJson(const ExploreOptions& o, const ExploreResult& r) {
                       {"directed_streets", r.total_edges}, {"streets_driven", r.edges_driven},
                       {"end_time_s", r.end_time_s}, {"time_limit_hit", r.time_limit_hit},
                       {"decisions", r.decisions}, {"offline_bound_m", r.offline_bound_m},
+                      {"offline_makespan_m", r.offline_makespan_m},
                       {"streets_known", r.streets_known}, {"grid_cells_known", r.grid_cells_known}};
   for (const Milestone& m : r.milestones)
     j["milestones"].push_back(milestoneJson(m, r.offline_bound_m));
@@ -88,7 +89,9 @@ ExploreResult runExplore(const ExploreOptions& opts, const Config& cfg,
   ExploreRun run(opts, cfg, world);
   ExploreResult r = run.run();
   for (double share : {0.90, 0.95, 1.0}) r.milestones.push_back(milestoneAt(r.curve, r.total_edges, share));
-  r.offline_bound_m = run.offlineBound();
+  const OfflineBound bound = run.offlineBound();
+  r.offline_bound_m = bound.total_m;
+  r.offline_makespan_m = bound.makespan_m;
   const auto& dir = staging.path();
   writeFileAtomic(dir / "driven.rou.xml", routesXml(r));
   writeFileAtomic(dir / kSummary, summaryJson(opts, r).dump(2) + "\n");

@@ -130,7 +130,9 @@ ExploreResult ExploreRun::run() {
   return result_;
 }
 
-double ExploreRun::offlineBound() const { return offlineBoundLength(pg_, startEdges().front()); }
+OfflineBound ExploreRun::offlineBound() const {
+  return offlineFleetBound(graph_, pg_, startEdges(), opts_.seed);
+}
 
 void ExploreRun::follow(simulate::OnlineVehicles& vehicles, int k) {
   Explorer& x = explorers_[static_cast<std::size_t>(k)];

@@ -8,6 +8,7 @@
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/explore/Explore.hpp"
+#include "slamroute/explore/Measures.hpp"
 #include "slamroute/explore/OccupancyGrid.hpp"
 #include "slamroute/explore/Strategies.hpp"
 #include "slamroute/explore/StreetMap.hpp"
@@ -23,8 +24,8 @@ class ExploreRun {
   ExploreRun(const ExploreOptions& opts, const Config& cfg, const simulate::WorldConfig& world);
   /// Drives until every directed street is driven, nothing known is left, or the time limit.
   ExploreResult run();
-  /// The offline bound from the first vehicle's start (Measures.hpp).
-  double offlineBound() const;
+  /// The offline fleet plan from the vehicles' starts (Measures.hpp).
+  OfflineBound offlineBound() const;
 
  private:
   struct Explorer {

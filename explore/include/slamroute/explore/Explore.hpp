@@ -9,7 +9,7 @@
 // DIR receives
 //   driven.rou.xml  one vehicle per explorer with the route it actually drove (SUMO format)
 //   explore.json    per vehicle and for the fleet: distance and simulated time until 90 / 95 /
-//                   100 % of the directed streets were driven; the offline bound; the coverage
+//                   100 % of the directed streets were driven; the offline fleet bound; the coverage
 //                   curve; decisions made (same seed, same bytes)
 //   coverage.png    the exploration curve: share of directed streets driven against time
 //   timing.json     compute time per decision (wall clock, so not reproducible)
@@ -68,7 +68,8 @@ struct ExploreResult {
   std::vector<VehicleResult> vehicles;
   std::vector<Milestone> milestones;      ///< 0.90, 0.95, 1.00
   std::vector<CoverageSample> curve;
-  double offline_bound_m = 0.0;           ///< postman length over all directed streets [m]
+  double offline_bound_m = 0.0;           ///< offline fleet plan, summed route length [m]
+  double offline_makespan_m = 0.0;        ///< offline fleet plan, longest route [m]
   int decisions = 0;
   std::vector<double> decision_ms;        ///< compute time per decision [ms]
   int grid_cells_known = 0, streets_known = 0;
