@@ -34,7 +34,8 @@ void registerExplore(CLI::App& app, Context& ctx) {
     e.out_dir = o->out;
     e.start_edges = o->start;
     e.seed = ctx.cfg.seed;
-    const explore::ExploreResult r = explore::runExplore(e, ctx.cfg.explore, ctx.cfg.simulate.world);
+    const explore::ExploreResult r = explore::runExplore(e, ctx.cfg.explore, ctx.cfg.simulate.world,
+                                                         ctx.cfg.simulate.drive);
     for (const explore::Milestone& m : r.milestones) {
       char line[200];
       if (m.reached)

@@ -40,7 +40,7 @@ void writeReport(const ReportInputs& in) {
   for (const SectionWriter section :
        {writeHeaderSection, writeRoadGraphSection, writeResultsSection, writeUncertaintySection,
         writePlannerPicturesSection, writeWeightVsDriftSection, writeDriftByStreetKindSection,
-        writeStepTimesSection})
+        writeMapCompletenessSection, writeStepTimesSection})
     section(md, data);
   writeFileAtomic(in.out / "report.md", md.str());
 }

@@ -1,7 +1,8 @@
 #pragma once
 // `slamroute explore`: K vehicles enter a city they know nothing of and drive in one SUMO
 // session, each choosing its next turn online when it enters a street (Strategies.hpp). They see
-// the world (the procedural 3D city) with a sparse simulated LiDAR at their true poses and share
+// the world (the procedural 3D city) with a sparse simulated LiDAR, at their true poses or their
+// own dead-reckoned estimates (Config::map_poses), and share
 // one occupancy grid (OccupancyGrid.hpp); the streets they know are the ones seen there
 // (StreetMap.hpp) and they plan only over those. The goal is to drive every directed street of
 // the net's largest legally drivable part (the PlanGraph edges).
@@ -20,6 +21,8 @@
 #include <vector>
 
 #include "slamroute/explore/Config.hpp"
+#include "slamroute/explore/OccupancyGrid.hpp"
+#include "slamroute/simulate/DriveConfig.hpp"
 #include "slamroute/simulate/WorldConfig.hpp"
 
 namespace slamroute::explore {
@@ -73,11 +76,13 @@ struct ExploreResult {
   int decisions = 0;
   std::vector<double> decision_ms;        ///< compute time per decision [ms]
   int grid_cells_known = 0, streets_known = 0;
+  std::vector<Cell> grid;                 ///< the shared grid at the end (OccupancyGrid's order)
 };
 
 /// Runs the exploration and writes DIR. Throws std::invalid_argument on bad options (unknown
 /// strategy, K < 1, a start edge outside the drivable part), std::runtime_error when SUMO fails.
+/// drive: the odometry errors of the dead reckoning when cfg.map_poses is `slam`.
 ExploreResult runExplore(const ExploreOptions& opts, const Config& cfg,
-                         const simulate::WorldConfig& world);
+                         const simulate::WorldConfig& world, const simulate::DriveConfig& drive);
 
 }  // namespace slamroute::explore
