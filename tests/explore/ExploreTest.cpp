@@ -20,13 +20,19 @@ std::filesystem::path testNet(const std::string& name) {
 }
 
 ExploreResult explore(const std::string& net, int k, const std::string& strategy,
-                      const std::filesystem::path& out, const Config& cfg = {}) {
+                      const std::filesystem::path& out, const Config& cfg) {
   ExploreOptions o;
   o.net = testNet(net);
   o.vehicles = k;
   o.strategy = strategy;
   o.out_dir = out;
   return runExplore(o, cfg, simulate::WorldConfig{}, simulate::DriveConfig{});
+}
+
+ExploreResult explore(const std::string& net, int k, const std::string& strategy,
+                      const std::filesystem::path& out) {
+  const Config defaults;
+  return explore(net, k, strategy, out, defaults);
 }
 
 std::string slurp(const std::filesystem::path& p) {
