@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "Commands.hpp"
+#include "EvaluateCompleteness.hpp"
 #include "EvaluateFleet.hpp"
 #include "slamroute/core/FleetDrive.hpp"
 #include "slamroute/core/DriveFolder.hpp"
@@ -44,7 +45,7 @@ std::map<std::string, std::string> streetKinds(const fs::path& drive) {
 }
 
 evaluate::EvaluationResult evaluateDriveFolder(const std::string& drive_dir, const std::string& out,
-                                   const evaluate::Config& cfg) {
+                                   const evaluate::Config& cfg, const explore::Config& explore) {
   const fs::path drive(drive_dir);
   if (!fs::is_directory(drive)) throw std::invalid_argument(drive_dir + ": not a drive folder");
   if (!fs::exists(drive / drive_files::kGroundTruth))
@@ -60,7 +61,9 @@ evaluate::EvaluationResult evaluateDriveFolder(const std::string& drive_dir, con
   }
   evaluate::checkDriveFiles(drive, *source);
   logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + drive_dir);
-  return evaluate::evaluateDrive(drive, *source, out, cfg, streetKinds(drive));
+  evaluate::EvaluationResult r = evaluate::evaluateDrive(drive, *source, out, cfg, streetKinds(drive));
+  addMapCompleteness(drive, *source, out, explore, r);
+  return r;
 }
 
 /// A KITTI sequence has no wheel odometry; without poses.txt there is nothing to measure against.
@@ -92,10 +95,10 @@ void printSummary(const evaluate::EvaluationResult& r, const std::string& out) {
 
 /// A fleet's folder: each vehicle as a drive folder, then the merge; prints the fleet's figures.
 void evaluateFleet(const std::string& drive, const std::string& out, const evaluate::Config& cfg,
-                   bool keep_vehicles) {
+                   const explore::Config& explore, bool keep_vehicles) {
   const evaluate::FleetResult r = evaluateFleetFolder(
-      drive, out, cfg, keep_vehicles, [&cfg](const fs::path& d, const fs::path& o) {
-        evaluateDriveFolder(d.string(), o.string(), cfg);
+      drive, out, cfg, keep_vehicles, [&cfg, &explore](const fs::path& d, const fs::path& o) {
+        evaluateDriveFolder(d.string(), o.string(), cfg, explore);
       });
   for (const auto& v : r.vehicles)
     std::cout << v.id << ": ATE rmse " << v.own_ate_rmse_m << " m alone, "
@@ -152,12 +155,12 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
     if (o->drive.empty() == o->kitti.empty())
       throw std::invalid_argument("evaluate needs --drive DIR or --kitti SEQ_DIR");
     if (!o->drive.empty() && FleetDriveInfo::isFleetFolder(o->drive)) {
-      evaluateFleet(o->drive, o->out, cfg, o->keep_vehicles);
+      evaluateFleet(o->drive, o->out, cfg, ctx.cfg.explore, o->keep_vehicles);
       return;
     }
     const evaluate::EvaluationResult r =
         o->drive.empty() ? evaluateKittiSequence(o->kitti, o->sensor, o->out, cfg)
-                         : evaluateDriveFolder(o->drive, o->out, cfg);
+                         : evaluateDriveFolder(o->drive, o->out, cfg, ctx.cfg.explore);
     printSummary(r, o->out);
   });
 }

@@ -48,7 +48,8 @@ void writeReport(const ReportInputs& in) {
   for (const SectionWriter section :
        {writeHeaderSection, writeRoadGraphSection, writeResultsSection, writeUncertaintySection,
         writePlannerPicturesSection, writeFleetPlanSection, writeFleetResultsSection,
-        writeWeightVsDriftSection, writeDriftByStreetKindSection, writeStepTimesSection})
+        writeWeightVsDriftSection, writeDriftByStreetKindSection, writeMapCompletenessSection,
+        writeStepTimesSection})
     section(md, data);
   writeFileAtomic(in.out / "report.md", md.str());
 }

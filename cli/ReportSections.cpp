@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <limits>
 
+#include "EvaluateCompleteness.hpp"
 #include "ReportFigures.hpp"
 #include "slamroute/core/Route.hpp"
 #include "slamroute/pipeline/JsonFile.hpp"
@@ -197,7 +198,7 @@ void writePlannerPicturesSection(std::ostringstream& md, const ReportData& data)
     const fs::path ev = data.in.out / "eval" / p;
     if (!fs::exists(ev)) continue;
     for (const auto& f : fs::directory_iterator(ev))
-      if (f.path().extension() == ".png")
+      if (f.path().extension() == ".png" && f.path().filename() != kFrontierPng)  // own section
         md << "![" << p << " " << f.path().stem().string() << "](eval/" << p << "/"
            << f.path().filename().string() << ")\n\n";
   }

@@ -141,6 +141,18 @@ void addMapAccuracyJson(const EvaluationResult& r, json& j) {
   addMapJson(*r.map_aligned, "map_aligned_", j);
 }
 
+json completenessJson(const MapCompletenessFigures& m) {
+  return {{"street_radius_m", m.street_radius_m}, {"cells", m.cells},
+          {"unknown_share", m.unknown_share}, {"frontier_share", m.frontier_share},
+          {"mean_frontier_probability", m.mean_frontier_probability}};
+}
+
+MapCompletenessFigures completenessFromJson(const json& j) {
+  return {figure(j, "street_radius_m"), j.at("cells").get<long long>(),
+          figure(j, "unknown_share"), figure(j, "frontier_share"),
+          figure(j, "mean_frontier_probability")};
+}
+
 void addSlamJson(const EvaluationResult& r, json& j) {
   j["scans"] = r.scans;
   j["scan_stride"] = r.scan_stride;
@@ -213,6 +225,7 @@ json toJson(const EvaluationResult& r) {
   }
   addCoverageJson(r.coverage, j);
   addMapAccuracyJson(r, j);
+  if (r.map_completeness) j["map_completeness"] = completenessJson(*r.map_completeness);
   j["timing_ms_per_scan"] = timingJson(r.timing_ms_per_scan);
   j["scans_per_s"] = r.scans_per_s;
   j["reliability"] = toJson(r.reliability);
@@ -246,6 +259,8 @@ EvaluationResult evaluationFromJson(const json& j) {
     r.map_aligned = mapFromJson(j, "map_aligned_");
     r.map_accuracy_max_m = figure(j, "map_accuracy_max_m");
   }
+  if (j.contains("map_completeness"))
+    r.map_completeness = completenessFromJson(j["map_completeness"]);
   r.timing_ms_per_scan = timingFromJson(j.at("timing_ms_per_scan"));
   r.scans_per_s = figure(j, "scans_per_s");
   r.reliability = reliabilityFromJson(j.at("reliability"));

@@ -64,6 +64,11 @@ void addCoverageAndMapFigures(const EvaluationResult& r, std::map<std::string, d
   if (r.coverage.edges_total) put(f, "edges_total", static_cast<double>(*r.coverage.edges_total));
   if (r.coverage.coverage_edge_pct) put(f, "coverage_edge_pct", *r.coverage.coverage_edge_pct);
   put(f, "map_points", static_cast<double>(r.map_points));
+  if (const auto& c = r.map_completeness) {
+    put(f, "map_completeness.unknown_share", c->unknown_share);
+    put(f, "map_completeness.frontier_share", c->frontier_share);
+    put(f, "map_completeness.mean_frontier_probability", c->mean_frontier_probability);
+  }
   if (!r.map || !r.map_aligned) return;
   addMapFigures(*r.map, "map_", f);
   addMapFigures(*r.map_aligned, "map_aligned_", f);

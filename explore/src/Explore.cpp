@@ -42,12 +42,15 @@ nlohmann::json milestoneJson(const Milestone& m, double bound_m) {
   return j;
 }
 
-nlohmann::json summaryJson(const ExploreOptions& o, const ExploreResult& r) {
+nlohmann::json summaryJson(const ExploreOptions& o, const ExploreResult& r,
+                           const std::string& map_poses) {
   nlohmann::json j = {{"net", o.net.string()},   {"strategy", r.strategy},
                       {"vehicles", o.vehicles},   {"seed", o.seed},
+                      {"map_poses", map_poses},
                       {"directed_streets", r.total_edges}, {"streets_driven", r.edges_driven},
                       {"end_time_s", r.end_time_s}, {"time_limit_hit", r.time_limit_hit},
                       {"decisions", r.decisions}, {"offline_bound_m", r.offline_bound_m},
+                      {"offline_makespan_m", r.offline_makespan_m},
                       {"streets_known", r.streets_known}, {"grid_cells_known", r.grid_cells_known}};
   for (const Milestone& m : r.milestones)
     j["milestones"].push_back(milestoneJson(m, r.offline_bound_m));
@@ -82,16 +85,18 @@ void writeCoveragePlot(const std::filesystem::path& path, const ExploreResult& r
 }  // namespace
 
 ExploreResult runExplore(const ExploreOptions& opts, const Config& cfg,
-                         const simulate::WorldConfig& world) {
+                         const simulate::WorldConfig& world, const simulate::DriveConfig& drive) {
   cfg.validate();
   StagingDir staging(opts.out_dir, kSummary);
-  ExploreRun run(opts, cfg, world);
+  ExploreRun run(opts, cfg, world, drive);
   ExploreResult r = run.run();
   for (double share : {0.90, 0.95, 1.0}) r.milestones.push_back(milestoneAt(r.curve, r.total_edges, share));
-  r.offline_bound_m = run.offlineBound();
+  const OfflineBound bound = run.offlineBound();
+  r.offline_bound_m = bound.total_m;
+  r.offline_makespan_m = bound.makespan_m;
   const auto& dir = staging.path();
   writeFileAtomic(dir / "driven.rou.xml", routesXml(r));
-  writeFileAtomic(dir / kSummary, summaryJson(opts, r).dump(2) + "\n");
+  writeFileAtomic(dir / kSummary, summaryJson(opts, r, cfg.map_poses).dump(2) + "\n");
   writeFileAtomic(dir / "timing.json", timingJson(r).dump(2) + "\n");
   writeCoveragePlot(dir / "coverage.png", r);
   staging.commit();

@@ -43,9 +43,10 @@ std::pair<Point2, Point2> streetBounds(const RoadGraph& g, double margin_m) {
 }
 
 ExploreRun::ExploreRun(const ExploreOptions& opts, const Config& cfg,
-                       const simulate::WorldConfig& world)
+                       const simulate::WorldConfig& world, const simulate::DriveConfig& drive)
     : opts_(opts),
       cfg_(cfg),
+      drive_(drive),
       net_(SumoNet::read(opts.net)),
       graph_(RoadGraph::fromSumoNet(net_)),
       pg_(rl::PlanGraph::build(graph_, opts.net.string())),
@@ -92,6 +93,8 @@ void ExploreRun::depart(simulate::OnlineVehicles& vehicles) {
     const int e = starts[static_cast<std::size_t>(k)];
     x.result.depart_s = cfg_.depart_gap_s * on_edge[e]++;
     x.pos = streets_.midpoint(e);
+    if (cfg_.map_poses == "slam")  // each vehicle's own odometry errors
+      x.dead_reckoning.emplace(drive_, opts_.seed + 0x9e3779b97f4a7c15ULL * (k + 1));
     vehicles.add(x.id, sumoEdge(e), x.result.depart_s);
     explorers_.push_back(std::move(x));
   }
@@ -127,10 +130,13 @@ ExploreResult ExploreRun::run() {
   }
   result_.grid_cells_known = static_cast<int>(grid_.size() - grid_.countOf(Cell::Unknown));
   result_.streets_known = streets_.numKnown();
+  for (int i = 0; i < static_cast<int>(grid_.size()); ++i) result_.grid.push_back(grid_.at(i));
   return result_;
 }
 
-double ExploreRun::offlineBound() const { return offlineBoundLength(pg_, startEdges().front()); }
+OfflineBound ExploreRun::offlineBound() const {
+  return offlineFleetBound(graph_, pg_, startEdges(), opts_.seed);
+}
 
 void ExploreRun::follow(simulate::OnlineVehicles& vehicles, int k) {
   Explorer& x = explorers_[static_cast<std::size_t>(k)];
@@ -139,7 +145,10 @@ void ExploreRun::follow(simulate::OnlineVehicles& vehicles, int k) {
   if (t0_ < 0) t0_ = result_.end_time_s - cfg_.step_length_s;
   x.odometer_m = std::max(x.odometer_m, s.odometer_m);
   x.pos = s.pos.head<2>();
-  if (x.odometer_m - x.last_scan_m >= cfg_.sensor.scan_spacing_m) scan(k, s);
+  const Pose3 sensor = simulate::vehicleBodyPose(s.pos.x(), s.pos.y(), s.pos.z(), s.angle_deg,
+                                                 s.slope_deg, lidar_.spec().mount_height_m);
+  if (x.dead_reckoning) x.dead_reckoning->step(result_.end_time_s, sensor);
+  if (x.odometer_m - x.last_scan_m >= cfg_.sensor.scan_spacing_m) scan(k, s, sensor);
   if (s.edge.empty()) return;
   const auto it = edge_of_.find(s.edge);
   if (it == edge_of_.end())
@@ -147,14 +156,15 @@ void ExploreRun::follow(simulate::OnlineVehicles& vehicles, int k) {
   if (it->second != x.edge) enterEdge(vehicles, k, it->second, result_.end_time_s);
 }
 
-void ExploreRun::scan(int k, const simulate::OnlineVehicleState& s) {
+// The sweep is taken at the true sensor pose and enters the grid at the pose the vehicle
+// believes (the same with map_poses: truth); ground is judged against the road it stands on
+// (height is not what dead reckoning loses).
+void ExploreRun::scan(int k, const simulate::OnlineVehicleState& s, const Pose3& sensor) {
   Explorer& x = explorers_[static_cast<std::size_t>(k)];
   x.last_scan_m = x.odometer_m;
-  const double mount = lidar_.spec().mount_height_m;
-  const Pose3 T = simulate::vehicleBodyPose(s.pos.x(), s.pos.y(), s.pos.z(), s.angle_deg,
-                                            s.slope_deg, mount);
+  const Pose3 T = x.dead_reckoning ? x.dead_reckoning->estimate(sensor) : sensor;
   const double road_z = world_.surfaceZ(s.pos.x(), s.pos.y(), s.pos.z() + 1.0).value_or(s.pos.z());
-  const Scan sweep = lidar_.scan(world_, T, {}, scans_++);
+  const Scan sweep = lidar_.scan(world_, sensor, {}, scans_++);
   std::vector<Point3> pts;
   pts.reserve(sweep.points.size());
   for (const ScanPoint& p : sweep.points) pts.push_back(T * Point3(p.x, p.y, p.z));

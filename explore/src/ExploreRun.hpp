@@ -5,9 +5,11 @@
 #include <memory>
 #include <optional>
 
+#include "DeadReckoning.hpp"
 #include "slamroute/core/RoadGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/explore/Explore.hpp"
+#include "slamroute/explore/Measures.hpp"
 #include "slamroute/explore/OccupancyGrid.hpp"
 #include "slamroute/explore/Strategies.hpp"
 #include "slamroute/explore/StreetMap.hpp"
@@ -20,11 +22,12 @@ namespace slamroute::explore {
 
 class ExploreRun {
  public:
-  ExploreRun(const ExploreOptions& opts, const Config& cfg, const simulate::WorldConfig& world);
+  ExploreRun(const ExploreOptions& opts, const Config& cfg, const simulate::WorldConfig& world,
+             const simulate::DriveConfig& drive);
   /// Drives until every directed street is driven, nothing known is left, or the time limit.
   ExploreResult run();
-  /// The offline bound from the first vehicle's start (Measures.hpp).
-  double offlineBound() const;
+  /// The offline fleet plan from the vehicles' starts (Measures.hpp).
+  OfflineBound offlineBound() const;
 
  private:
   struct Explorer {
@@ -36,13 +39,14 @@ class ExploreRun {
     Point2 pos = Point2::Zero();  ///< where it is (its start before it departs)
     bool idle = false;          ///< the last decision found nothing to do
     bool settled = false;       ///< idle through a whole street
+    std::optional<DeadReckoning> dead_reckoning;  ///< its pose estimate (map_poses: slam)
     VehicleResult result;
   };
 
   std::vector<int> startEdges() const;
   void depart(simulate::OnlineVehicles& vehicles);
   void follow(simulate::OnlineVehicles& vehicles, int k);
-  void scan(int k, const simulate::OnlineVehicleState& s);
+  void scan(int k, const simulate::OnlineVehicleState& s, const Pose3& sensor);
   void enterEdge(simulate::OnlineVehicles& vehicles, int k, int edge, double t);
   int chooseNext(int k);
   int wander(int e) const;
@@ -55,6 +59,7 @@ class ExploreRun {
 
   ExploreOptions opts_;
   Config cfg_;
+  simulate::DriveConfig drive_;
   SumoNet net_;
   RoadGraph graph_;
   rl::PlanGraph pg_;

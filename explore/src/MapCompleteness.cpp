@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "ExploreRun.hpp"
@@ -14,22 +15,40 @@
 
 namespace slamroute::explore {
 
+namespace {
+
+/// The scan taken at time t (scan times ascend), if one is within 1 ms of it.
+std::optional<std::size_t> scanAt(const ScanSource& scans, double t, std::size_t from) {
+  while (from < scans.size() && scans.time(from) < t - 1e-3) ++from;
+  if (from < scans.size() && std::abs(scans.time(from) - t) <= 1e-3) return from;
+  return std::nullopt;
+}
+
+}  // namespace
+
 OccupancyGrid occupancyFromScans(const ScanSource& scans, const Trajectory& poses,
-                                 const RoadGraph& g, const GridConfig& cfg, std::size_t stride) {
-  if (scans.size() != poses.size())
-    throw std::invalid_argument("map completeness: " + std::to_string(scans.size()) +
-                                " scans but " + std::to_string(poses.size()) + " poses");
-  if (stride == 0) throw std::invalid_argument("map completeness: stride must be >= 1");
+                                 const RoadGraph& g, const GridConfig& cfg, double spacing_m) {
   const auto [lo, hi] = streetBounds(g, cfg.margin_m);
   OccupancyGrid grid(lo, hi, cfg.cell_m);
   const double mount = scans.spec().mount_height_m;
-  for (std::size_t i = 0; i < scans.size(); i += stride) {
-    const Pose3& T = poses[i].T_world_body;
+  std::optional<Vec3> last;
+  std::size_t next_scan = 0, used = 0;
+  for (const StampedPose& p : poses) {
+    const Pose3& T = p.T_world_body;
+    if (last && (T.translation() - *last).norm() < spacing_m) continue;
+    const std::optional<std::size_t> i = scanAt(scans, p.t, next_scan);
+    if (!i) continue;
+    next_scan = *i;
+    last = T.translation();
+    ++used;
     std::vector<Point3> pts;
-    for (const ScanPoint& p : scans.scan(i).points) pts.push_back(T * Point3(p.x, p.y, p.z));
+    for (const ScanPoint& q : scans.scan(*i).points) pts.push_back(T * Point3(q.x, q.y, q.z));
     grid.addScan(pts, T.translation(), T.translation().z() - mount, cfg.max_range_m,
                  cfg.ground_tol_m, cfg.ground_grade);
   }
+  if (used == 0)
+    throw std::invalid_argument("map completeness: none of the " + std::to_string(poses.size()) +
+                                " poses has a scan at its time");
   return grid;
 }
 

@@ -1,10 +1,11 @@
-// Milestones of the coverage curve and the offline postman bound.
+// Milestones of the coverage curve and the offline fleet bound.
 #include "slamroute/explore/Measures.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "slamroute/rl/Config.hpp"
-#include "slamroute/rl/Planners.hpp"
+#include "slamroute/rl/Fleet.hpp"
 
 namespace slamroute::explore {
 
@@ -23,13 +24,18 @@ Milestone milestoneAt(const std::vector<CoverageSample>& curve, int total_edges,
   return m;
 }
 
-double offlineBoundLength(const rl::PlanGraph& pg, int start_edge) {
-  const rl::TurnPaths paths(pg);
-  const rl::Config cfg;
-  const rl::PlanOutput out = rl::planPostman(pg, paths, cfg, pg.u[static_cast<std::size_t>(start_edge)]);
-  double len = 0.0;
-  for (int e : out.edges) len += pg.len[static_cast<std::size_t>(e)];
-  return len;
+OfflineBound offlineFleetBound(const RoadGraph& g, const rl::PlanGraph& pg,
+                               const std::vector<int>& start_edges, std::uint64_t seed) {
+  // more vehicles than streets: the extra ones would have nothing to drive in the plan
+  const std::size_t k = std::min(start_edges.size(), static_cast<std::size_t>(pg.num_streets));
+  rl::Config cfg;
+  cfg.fleet.vehicles = static_cast<int>(k);
+  cfg.fleet.strategy = "partition";
+  std::vector<int> depots;
+  for (int e : std::vector<int>(start_edges.begin(), start_edges.begin() + static_cast<long>(k)))
+    depots.push_back(pg.node_orig[static_cast<std::size_t>(pg.u[static_cast<std::size_t>(e)])]);
+  const FleetRoute plan = rl::planFleet(g, cfg, depots, seed, "explore offline bound");
+  return {plan.total_length_m, plan.makespan_m};
 }
 
 }  // namespace slamroute::explore

@@ -20,13 +20,19 @@ std::filesystem::path testNet(const std::string& name) {
 }
 
 ExploreResult explore(const std::string& net, int k, const std::string& strategy,
-                      const std::filesystem::path& out) {
+                      const std::filesystem::path& out, const Config& cfg) {
   ExploreOptions o;
   o.net = testNet(net);
   o.vehicles = k;
   o.strategy = strategy;
   o.out_dir = out;
-  return runExplore(o, Config{}, simulate::WorldConfig{});
+  return runExplore(o, cfg, simulate::WorldConfig{}, simulate::DriveConfig{});
+}
+
+ExploreResult explore(const std::string& net, int k, const std::string& strategy,
+                      const std::filesystem::path& out) {
+  const Config defaults;
+  return explore(net, k, strategy, out, defaults);
 }
 
 std::string slurp(const std::filesystem::path& p) {
@@ -71,6 +77,22 @@ TEST(Explore, GridNetIsExploredToTheEndByEveryStrategy) {
   }
 }
 
+TEST(Explore, PlusNetIsExploredToTheEndWithDeadReckonedMapPoses) {
+  const ExploreResult truth = explore("plus.net.xml", 1, "nearest", test::testTmp() / "truth");
+  Config cfg;
+  cfg.map_poses = "slam";
+  const ExploreResult slam = explore("plus.net.xml", 1, "nearest", test::testTmp() / "slam", cfg);
+  EXPECT_EQ(slam.edges_driven, 8);
+  EXPECT_TRUE(slam.milestones[2].reached);
+  // the drift moves what the scans mark: the grids differ, though the same streets were seen
+  ASSERT_EQ(slam.grid.size(), truth.grid.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < truth.grid.size(); ++i) differ += truth.grid[i] != slam.grid[i];
+  EXPECT_GT(differ, 20u);
+  EXPECT_GT(slam.streets_known, 0);
+  EXPECT_EQ(nlohmann::json::parse(slurp(test::testTmp() / "slam/explore.json"))["map_poses"], "slam");
+}
+
 TEST(Explore, SameSeedSameSummaryBytes) {
   const auto a = test::testTmp() / "a", b = test::testTmp() / "b";
   explore("plus.net.xml", 2, "central", a);
@@ -86,7 +108,8 @@ TEST(Explore, BadOptionsAreRejectedAndLeaveNothing) {
   o.net = testNet("plus.net.xml");
   o.out_dir = out;
   o.start_edges = {"no_such_edge"};
-  EXPECT_THROW(runExplore(o, Config{}, simulate::WorldConfig{}), std::invalid_argument);
+  EXPECT_THROW(runExplore(o, Config{}, simulate::WorldConfig{}, simulate::DriveConfig{}),
+               std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

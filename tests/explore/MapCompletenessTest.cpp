@@ -47,7 +47,7 @@ TEST(MapCompleteness, UnknownAndFrontierShareNearTheStreets) {
   GridConfig gc;
   gc.max_range_m = 1e4;
   // seen: a 20 m disc around the junction
-  const OccupancyGrid part = occupancyFromScans(GroundDiscScans(3, 20.0), atCentre(3), g, gc, 1);
+  const OccupancyGrid part = occupancyFromScans(GroundDiscScans(3, 20.0), atCentre(3), g, gc, 0.0);
   const std::vector<bool> mask = streetMask(part, g, 30.0);
   const MapCompleteness m = mapCompleteness(part, mask, GpConfig{});
   ASSERT_GT(m.cells, 0u);
@@ -56,13 +56,16 @@ TEST(MapCompleteness, UnknownAndFrontierShareNearTheStreets) {
   EXPECT_GT(m.frontier_share, 0.0);
   EXPECT_GT(m.mean_frontier_probability, 0.0);
   // seen everywhere: nothing unknown, no frontier
-  const OccupancyGrid all = occupancyFromScans(GroundDiscScans(1, 400.0), atCentre(1), g, gc, 1);
+  const OccupancyGrid all = occupancyFromScans(GroundDiscScans(1, 400.0), atCentre(1), g, gc, 0.0);
   const MapCompleteness full = mapCompleteness(all, streetMask(all, g, 30.0), GpConfig{});
   EXPECT_EQ(full.unknown_share, 0.0);
   EXPECT_EQ(full.frontier_share, 0.0);
   writeFrontierProbabilityPng(test::testTmp() / "frontier.png", part, mask, GpConfig{});
   EXPECT_GT(std::filesystem::file_size(test::testTmp() / "frontier.png"), 100u);
-  EXPECT_THROW(occupancyFromScans(GroundDiscScans(2, 5.0), atCentre(3), g, gc, 1), std::invalid_argument);
+  // poses at times no scan has: nothing to map
+  Trajectory late = atCentre(2);
+  for (auto& p : late) p.t += 100.0;
+  EXPECT_THROW(occupancyFromScans(GroundDiscScans(2, 5.0), late, g, gc, 0.0), std::invalid_argument);
 }
 
 }  // namespace

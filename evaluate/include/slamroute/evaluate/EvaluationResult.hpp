@@ -46,6 +46,17 @@ struct MapFigures {
   double mean_m = 0, median_m = 0, p95_m = 0, far_share = 0;
 };
 
+/// How much of the streets' surroundings the map has seen: the occupancy grid of the scans at
+/// the estimated poses, over the cells within street_radius_m of a street (GP frontier map,
+/// computed by the caller: `slamroute evaluate` through explore/MapCompleteness.hpp).
+struct MapCompletenessFigures {
+  double street_radius_m = 0;
+  long long cells = 0;                 ///< grid cells near the streets
+  double unknown_share = 0;            ///< of those, never seen
+  double frontier_share = 0;           ///< of those, seen ground next to unknown
+  double mean_frontier_probability = 0;  ///< GP frontier probability averaged there
+};
+
 struct EdgeCoverage {
   long long edges_visited = 0;
   std::optional<long long> edges_total;     ///< passenger edges of the net (when it is known)
@@ -88,6 +99,7 @@ struct EvaluationResult {
   long long map_points = 0;
   std::optional<MapFigures> map, map_aligned;  ///< with the world mesh (both or neither)
   double map_accuracy_max_m = 0;               ///< the clamp, with `map`
+  std::optional<MapCompletenessFigures> map_completeness;  ///< with the net
   TimingMsPerScan timing_ms_per_scan;
   double scans_per_s = 0;
   Reliability reliability;

@@ -6,7 +6,7 @@
 
 namespace slamroute::explore {
 
-/// Occupancy grid of the drivable area, fed by the simulated LiDAR at the vehicles' true poses.
+/// Occupancy grid of the drivable area, fed by the simulated LiDAR at the poses `map_poses` picks.
 struct GridConfig {
   double cell_m = 2.0;          ///< cell edge [m]
   double max_range_m = 40.0;    ///< returns farther than this are ignored [m]
@@ -85,6 +85,11 @@ struct Config {
   double depart_gap_s = 4.0;       ///< vehicles sharing a start edge leave this far apart [s]
   double speed_factor = 1.0;       ///< vehicles drive at this share of the speed limit
   double max_time_s = 36000.0;     ///< simulated time limit [s]
+  /// Poses the scans enter the grid at: `truth` (the simulator's) or `slam` (each vehicle's own
+  /// online estimate, wheel odometry + gyro dead reckoning with simulate.drive's errors).
+  std::string map_poses = "truth";
+  /// `evaluate`'s map completeness: grid cells this near a street are measured [m]
+  double completeness_radius_m = 30.0;
   void validate() const;
 };
 template <class V>
@@ -97,6 +102,10 @@ void visitFields(V& v, Config& c) {
   v.field("depart_gap_s", c.depart_gap_s, "departure gap of vehicles on one start edge [s]");
   v.field("speed_factor", c.speed_factor, "share of the speed limit driven");
   v.field("max_time_s", c.max_time_s, "simulated time limit [s]");
+  v.field("map_poses", c.map_poses,
+          "scans enter the grid at the true poses (truth) or the vehicles' dead reckoning (slam)");
+  v.field("completeness_radius_m", c.completeness_radius_m,
+          "evaluate's map completeness: cells this near a street are measured [m]");
 }
 
 }  // namespace slamroute::explore

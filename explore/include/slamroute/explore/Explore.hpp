@@ -1,7 +1,8 @@
 #pragma once
 // `slamroute explore`: K vehicles enter a city they know nothing of and drive in one SUMO
 // session, each choosing its next turn online when it enters a street (Strategies.hpp). They see
-// the world (the procedural 3D city) with a sparse simulated LiDAR at their true poses and share
+// the world (the procedural 3D city) with a sparse simulated LiDAR, at their true poses or their
+// own dead-reckoned estimates (Config::map_poses), and share
 // one occupancy grid (OccupancyGrid.hpp); the streets they know are the ones seen there
 // (StreetMap.hpp) and they plan only over those. The goal is to drive every directed street of
 // the net's largest legally drivable part (the PlanGraph edges).
@@ -9,7 +10,7 @@
 // DIR receives
 //   driven.rou.xml  one vehicle per explorer with the route it actually drove (SUMO format)
 //   explore.json    per vehicle and for the fleet: distance and simulated time until 90 / 95 /
-//                   100 % of the directed streets were driven; the offline bound; the coverage
+//                   100 % of the directed streets were driven; the offline fleet bound; the coverage
 //                   curve; decisions made (same seed, same bytes)
 //   coverage.png    the exploration curve: share of directed streets driven against time
 //   timing.json     compute time per decision (wall clock, so not reproducible)
@@ -20,6 +21,8 @@
 #include <vector>
 
 #include "slamroute/explore/Config.hpp"
+#include "slamroute/explore/OccupancyGrid.hpp"
+#include "slamroute/simulate/DriveConfig.hpp"
 #include "slamroute/simulate/WorldConfig.hpp"
 
 namespace slamroute::explore {
@@ -68,15 +71,18 @@ struct ExploreResult {
   std::vector<VehicleResult> vehicles;
   std::vector<Milestone> milestones;      ///< 0.90, 0.95, 1.00
   std::vector<CoverageSample> curve;
-  double offline_bound_m = 0.0;           ///< postman length over all directed streets [m]
+  double offline_bound_m = 0.0;           ///< offline fleet plan, summed route length [m]
+  double offline_makespan_m = 0.0;        ///< offline fleet plan, longest route [m]
   int decisions = 0;
   std::vector<double> decision_ms;        ///< compute time per decision [ms]
   int grid_cells_known = 0, streets_known = 0;
+  std::vector<Cell> grid;                 ///< the shared grid at the end (OccupancyGrid's order)
 };
 
 /// Runs the exploration and writes DIR. Throws std::invalid_argument on bad options (unknown
 /// strategy, K < 1, a start edge outside the drivable part), std::runtime_error when SUMO fails.
+/// drive: the odometry errors of the dead reckoning when cfg.map_poses is `slam`.
 ExploreResult runExplore(const ExploreOptions& opts, const Config& cfg,
-                         const simulate::WorldConfig& world);
+                         const simulate::WorldConfig& world, const simulate::DriveConfig& drive);
 
 }  // namespace slamroute::explore

@@ -23,11 +23,12 @@ struct MapCompleteness {
   double mean_frontier_probability = 0.0;  ///< GP frontier probability (eq. 11) averaged there
 };
 
-/// The occupancy grid of every `stride`-th scan of a drive at its poses (pose i is the sensor
-/// pose of scan i; the road is mount_height_m below the sensor). Throws std::invalid_argument
-/// when scans and poses differ in number or stride is 0.
+/// The occupancy grid of a drive's scans at its sensor poses (the road mount_height_m below the
+/// sensor): a pose enters when it lies at least spacing_m from the last one used (0: all) and a
+/// scan has its time (within 1 ms; an estimate of a strided evaluation has fewer poses than
+/// the drive has scans). Throws std::invalid_argument when no pose has a scan.
 OccupancyGrid occupancyFromScans(const ScanSource& scans, const Trajectory& poses,
-                                 const RoadGraph& g, const GridConfig& cfg, std::size_t stride);
+                                 const RoadGraph& g, const GridConfig& cfg, double spacing_m);
 
 /// Cells within `street_radius_m` of any street of g, as a mask over the grid.
 std::vector<bool> streetMask(const OccupancyGrid& grid, const RoadGraph& g, double street_radius_m);
