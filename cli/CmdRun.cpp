@@ -32,7 +32,7 @@ std::vector<std::string> splitList(const std::string& s) {
 }
 
 struct RunOpts {
-  std::string net, out, planners = "qlearning,random,postman", geo_origin;
+  std::string net, out, planners = "qlearning,random,postman,aco-ga", geo_origin;
   int jobs = 2;
   int slam_jobs = 0;
   bool save_scans = false, resume = false;
