@@ -39,7 +39,7 @@ void writeReport(const ReportInputs& in) {
   std::ostringstream md;
   for (const SectionWriter section :
        {writeHeaderSection, writeRoadGraphSection, writeResultsSection, writeUncertaintySection,
-        writePlannerPicturesSection, writeWeightVsDriftSection, writeDriftByStreetKindSection,
+        writeCoverageVsPostmanSection, writePlannerPicturesSection, writeWeightVsDriftSection, writeDriftByStreetKindSection,
         writeStepTimesSection})
     section(md, data);
   writeFileAtomic(in.out / "report.md", md.str());
