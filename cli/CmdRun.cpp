@@ -33,7 +33,7 @@ std::vector<std::string> splitList(const std::string& s) {
 }
 
 struct RunOpts {
-  std::string net, out, planners = "qlearning,random,postman", geo_origin;
+  std::string net, out, planners = "qlearning,random,postman,aco-ga", geo_origin;
   int vehicles = 1;                           ///< > 1: a fleet too (kFleetId)
   std::string fleet_planner = "partition";
   int jobs = 2;

@@ -47,8 +47,9 @@ void writeReport(const ReportInputs& in) {
   std::ostringstream md;
   for (const SectionWriter section :
        {writeHeaderSection, writeRoadGraphSection, writeResultsSection, writeUncertaintySection,
-        writePlannerPicturesSection, writeFleetPlanSection, writeFleetResultsSection,
-        writeWeightVsDriftSection, writeDriftByStreetKindSection, writeMapCompletenessSection,
+        writeCoverageVsPostmanSection, writePlannerPicturesSection, writeFleetPlanSection,
+        writeFleetResultsSection, writeWeightVsDriftSection, writeDriftByStreetKindSection,
+        writeMapCompletenessSection,
         writeStepTimesSection})
     section(md, data);
   writeFileAtomic(in.out / "report.md", md.str());

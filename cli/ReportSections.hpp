@@ -40,6 +40,8 @@ void writeHeaderSection(std::ostringstream& md, const ReportData& data);
 void writeRoadGraphSection(std::ostringstream& md, const ReportData& data);
 void writeResultsSection(std::ostringstream& md, const ReportData& data);
 void writeUncertaintySection(std::ostringstream& md, const ReportData& data);
+/// aco-ga against postman (cli/ReportCoverage.cpp); nothing unless both were planned.
+void writeCoverageVsPostmanSection(std::ostringstream& md, const ReportData& data);
 void writePlannerPicturesSection(std::ostringstream& md, const ReportData& data);
 void writeWeightVsDriftSection(std::ostringstream& md, const ReportData& data);
 void writeDriftByStreetKindSection(std::ostringstream& md, const ReportData& data);

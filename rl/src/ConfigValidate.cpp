@@ -37,6 +37,7 @@ void QLearningConfig::validate() const {
   requireNonNegative("step_length_cost", step_length_cost, 1e6);
   requireNonNegative("uncertainty_clip", uncertainty_clip, 1e6);
   requireRange("stall_steps", stall_steps, 0, 1000000);
+  requireNonNegative("guide_reward", guide_reward, 1e6);
 }
 
 void RandomConfig::validate() const {

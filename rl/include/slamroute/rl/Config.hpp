@@ -60,11 +60,14 @@ struct QLearningConfig {
   double weight_uncertainty = 20.0; ///< eq. 7 weight of R_U (paper: 20)
   double step_length_cost = 0.1;    ///< R_C: cost per mean edge length driven (eq. 6 l_path)
   double uncertainty_clip = 1.0;    ///< |w_U * R_U| is clipped to this (one closure != many new nodes)
-  int stall_steps = 2;              ///< roll-out: also a stall after this many steps without progress (0 = off)
+  int stall_steps = 0;              ///< roll-out: also a stall after this many steps without progress (0 = off)
   bool complete_with_shortest_paths = true;  ///< finish a stalled greedy roll-out by shortest paths
   bool explore_new_first = true;  ///< exploration prefers actions reaching new coverage (paper: false)
   bool spread_starts = true;      ///< every other episode starts at a random node (paper: false)
   bool cap_scales_with_log_edges = true;  ///< step cap also x ln(edges) (paper setting: false)
+  /// state: with nothing new at hand, which action leads to the nearest uncovered part (paper: false)
+  bool guide_to_uncovered = true;
+  double guide_reward = 2.0;       ///< reward for taking that action (shaping; 0 = none)
 };
 
 template <class V>
@@ -99,6 +102,11 @@ void visitFields(V& v, QLearningConfig& c) {
   v.field("cap_scales_with_log_edges", c.cap_scales_with_log_edges,
           "episode step cap = max_steps_per_edge * edges * ln(edges), a random walk's cover time "
           "(false: max_steps_per_edge * edges)");
+  v.field("guide_to_uncovered", c.guide_to_uncovered,
+          "where no action reaches anything new, the state's signature marks the action on the "
+          "shortest legal path to the nearest uncovered part (paper: false, position only)");
+  v.field("guide_reward", c.guide_reward,
+          "reward for taking the marked action (shaping toward the nearest uncovered part)");
 }
 
 struct RandomConfig {

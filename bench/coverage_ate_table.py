@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""The aco-ga vs postman table of bench/coverage_ate.sh from OUT_DIR/seed_S/{routes,eval}.
+
+Per seed and the mean +- sd over the seeds that finished: directed SUMO edges driven [%] (the
+drive as evaluated), route length in SUMO [km], aco-ga / postman length, ATE RMSE [m],
+aco-ga / postman ATE. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
+import json
+import statistics
+import sys
+from pathlib import Path
+
+
+def load(path):
+    return json.loads(path.read_text()) if path.exists() else None
+
+
+def figures(run, planner):
+    """(directed coverage as driven %, SUMO length km, ATE RMSE m) or None if not finished."""
+    route = load(run / "routes" / f"{planner}.json")
+    metrics = load(run / "eval" / planner / "metrics.json")
+    if route is None or metrics is None:
+        return None
+    cov = metrics.get("directed_coverage", route.get("directed_coverage", {}))
+    km = route["sumo_length"]["total_m"] / 1000.0
+    return cov["edges_pct"], km, metrics["ate_rmse_m"]
+
+
+def mean_sd(values, digits):
+    if not values:
+        return "–"
+    sd = statistics.stdev(values) if len(values) > 1 else 0.0
+    return f"{statistics.mean(values):.{digits}f} ± {sd:.{digits}f}"
+
+
+def main():
+    out, seeds = Path(sys.argv[1]), sys.argv[2:]
+    print("| seed | postman directed [%] | aco-ga directed [%] | postman km | aco-ga km | "
+          "length ratio | postman ATE [m] | aco-ga ATE [m] | ATE ratio |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    cols = {k: [] for k in ("pd", "ad", "pk", "ak", "lr", "pa", "aa", "ar")}
+    for s in seeds:
+        p, a = figures(out / f"seed_{s}", "postman"), figures(out / f"seed_{s}", "aco-ga")
+        if p is None or a is None:
+            print(f"| {s} | not finished |||||||| ")
+            continue
+        row = dict(pd=p[0], ad=a[0], pk=p[1], ak=a[1], lr=a[1] / p[1], pa=p[2], aa=a[2],
+                   ar=a[2] / p[2])
+        for k, v in row.items():
+            cols[k].append(v)
+        print(f"| {s} | {p[0]:.1f} | {a[0]:.1f} | {p[1]:.2f} | {a[1]:.2f} | {row['lr']:.3f} | "
+              f"{p[2]:.3f} | {a[2]:.3f} | {row['ar']:.2f} |")
+    digits = dict(pd=1, ad=1, pk=2, ak=2, lr=3, pa=3, aa=3, ar=2)
+    print(f"| mean ± sd ({len(cols['lr'])} seeds) | "
+          + " | ".join(mean_sd(cols[k], digits[k]) for k in cols) + " |")
+
+
+if __name__ == "__main__":
+    main()
