@@ -21,7 +21,8 @@ using namespace slamroute;
 namespace {
 
 struct Options {
-  std::string net = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/default_city/default_city.net.xml";
+  std::string net =
+      std::string(SLAMROUTE_SOURCE_DIR) + "/networks/default_city/default_city.net.xml";
   int seeds = 5;
   double threshold_m2 = rl::CoverageConfig{}.c_threshold_m2;
   std::vector<std::string> planners = {"postman", "aco-ga"};
@@ -31,9 +32,12 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
-    if (k == "--net") o.net = v;
-    else if (k == "--seeds") o.seeds = std::stoi(v);
-    else if (k == "--threshold") o.threshold_m2 = std::stod(v);
+    if (k == "--net")
+      o.net = v;
+    else if (k == "--seeds")
+      o.seeds = std::stoi(v);
+    else if (k == "--threshold")
+      o.threshold_m2 = std::stod(v);
     else if (k == "--planners") {
       o.planners.clear();
       std::stringstream ss(v);
@@ -61,11 +65,14 @@ int main(int argc, char** argv) {
   const RoadGraph g = RoadGraph::fromSumoNet(net, /*lscc_only=*/false);
   std::printf("net %s, bound C_threshold = %.1f m^2, %d seeds\n\n", o.net.c_str(), o.threshold_m2,
               o.seeds);
-  std::printf("| planner | directed SUMO edges [%%] | length in SUMO [km] | / postman | C_max [m^2] | "
-              "C_average [m^2] | bound kept | revisits | planning [s] |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| planner | directed SUMO edges [%%] | length in SUMO [km] | / postman | C_max [m^2] | "
+      "C_average [m^2] | bound kept | revisits | planning [s] "
+      "|\n|---|---|---|---|---|---|---|---|---|\n");
   rl::Config ref;
   ref.planner = "postman";
-  const double postman_km = sumoCoverage(net, rl::plan(g, ref, 1, o.net).sumo_edges).routeLengthM() / 1000.0;
+  const double postman_km =
+      sumoCoverage(net, rl::plan(g, ref, 1, o.net).sumo_edges).routeLengthM() / 1000.0;
   for (const auto& p : o.planners) {
     Row row;
     for (int seed = 1; seed <= o.seeds; ++seed) {

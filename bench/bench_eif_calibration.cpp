@@ -49,9 +49,13 @@ std::vector<DriveFiles> findDrives(const fs::path& run) {
   if (!fs::exists(run / "eval")) return out;
   for (const auto& e : fs::directory_iterator(run / "eval")) {
     const std::string id = e.path().filename().string();
-    DriveFiles d{run.filename().string() + "/" + id, run / "routes" / (id + ".json"),
-                 run / "drives" / id / "groundtruth.tum", run / "drives" / id / "pose_edges.csv",
-                 e.path() / "estimate.tum", e.path() / "per_edge.csv", run / "graph" / "graph.json"};
+    DriveFiles d{run.filename().string() + "/" + id,
+                 run / "routes" / (id + ".json"),
+                 run / "drives" / id / "groundtruth.tum",
+                 run / "drives" / id / "pose_edges.csv",
+                 e.path() / "estimate.tum",
+                 e.path() / "per_edge.csv",
+                 run / "graph" / "graph.json"};
     if (fs::exists(d.route) && fs::exists(d.gt) && fs::exists(d.estimate) && fs::exists(d.per_edge))
       out.push_back(d);
   }
@@ -62,17 +66,19 @@ std::vector<DriveFiles> findDrives(const fs::path& run) {
 std::map<std::string, double> sumoWeights(const RoadGraph& g, const rl::PlanGraph& pg) {
   std::map<std::string, double> w;
   for (int e = 0; e < pg.m; ++e)
-    for (const auto& s : g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges)
+    for (const auto& s :
+         g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges)
       w[s] = pg.weight[static_cast<std::size_t>(e)];
   return w;
 }
 
 struct Sample {
-  double x;        ///< 1 - normalised weight
+  double x;          ///< 1 - normalised weight
   double q_xy, q_h;  ///< per-metre variance estimates [m^2/m], [rad^2/m]
 };
 
-void addSamples(const DriveFiles& d, const std::map<std::string, double>& weight, std::vector<Sample>& out) {
+void addSamples(const DriveFiles& d, const std::map<std::string, double>& weight,
+                std::vector<Sample>& out) {
   std::ifstream in(d.per_edge);
   std::string line;
   std::getline(in, line);
@@ -116,11 +122,13 @@ rl::EifConfig fitNoise(const std::vector<Sample>& s) {
   c.long_var_per_m = a * 2.0 / 3.0;
   c.lat_var_per_m = a / 3.0;
   double h = 0;
-  for (const auto& p : s) h += p.q_h / (1.0 + c.poor_weight_gain * p.x) / static_cast<double>(s.size());
+  for (const auto& p : s)
+    h += p.q_h / (1.0 + c.poor_weight_gain * p.x) / static_cast<double>(s.size());
   c.heading_var_per_m = h;
-  std::printf("fit over %zu street pieces >= 20 m: q = %.3g m^2/m at weight 1 (line %.3g + %.3g (1-w)),"
-              " poor_weight_gain = %.2f, heading %.3g rad^2/m\n",
-              s.size(), a, a, b, c.poor_weight_gain, c.heading_var_per_m);
+  std::printf(
+      "fit over %zu street pieces >= 20 m: q = %.3g m^2/m at weight 1 (line %.3g + %.3g (1-w)),"
+      " poor_weight_gain = %.2f, heading %.3g rad^2/m\n",
+      s.size(), a, a, b, c.poor_weight_gain, c.heading_var_per_m);
   return c;
 }
 
@@ -153,13 +161,15 @@ struct Correlation {
 
 /// Spearman of C_k and the error when the drive leaves each planned edge.
 Correlation driveCorrelation(const DriveFiles& d, const RoadGraph& g, const rl::PlanGraph& pg,
-                        const std::vector<EdgeVisit>& along, const rl::EifConfig& eif) {
+                             const std::vector<EdgeVisit>& along, const rl::EifConfig& eif) {
   const Route r = Route::readJson(d.route);
   std::vector<int> local_of(g.edges.size(), -1);
-  for (int e = 0; e < pg.m; ++e) local_of[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])] = e;
+  for (int e = 0; e < pg.m; ++e)
+    local_of[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])] = e;
   std::vector<int> edges;
   for (int e : r.edges) {
-    if (e < 0 || static_cast<std::size_t>(e) >= local_of.size() || local_of[static_cast<std::size_t>(e)] < 0)
+    if (e < 0 || static_cast<std::size_t>(e) >= local_of.size() ||
+        local_of[static_cast<std::size_t>(e)] < 0)
       return {};  // planned on another graph
     edges.push_back(local_of[static_cast<std::size_t>(e)]);
   }
@@ -202,7 +212,9 @@ int main(int argc, char** argv) {
     addSamples(d, sumoWeights(g, pg), samples);
   }
   const rl::EifConfig fitted = fitNoise(samples), shipped;  // shipped: the config defaults
-  std::printf("\n| drive | planned edges matched | Spearman(C_k, error) rl.eif defaults | fitted here |\n|---|---|---|---|\n");
+  std::printf(
+      "\n| drive | planned edges matched | Spearman(C_k, error) rl.eif defaults | fitted here "
+      "|\n|---|---|---|---|\n");
   std::vector<double> rho_shipped, rho_fitted;
   for (const auto& d : drives) {
     const auto& [g, pg] = graphs.at(d.graph);
@@ -216,9 +228,10 @@ int main(int argc, char** argv) {
   const auto ms = pipeline::meanSd(rho_shipped), mf = pipeline::meanSd(rho_fitted);
   std::printf("| mean +- sd over %zu drives | | %.3f +- %.3f | %.3f +- %.3f |\n", drives.size(),
               ms.mean, ms.sd, mf.mean, mf.sd);
-  std::printf("\nrl.eif: long_var_per_m %.4g, lat_var_per_m %.4g, heading_var_per_m %.4g, "
-              "poor_weight_gain %.3g\n",
-              fitted.long_var_per_m, fitted.lat_var_per_m, fitted.heading_var_per_m,
-              fitted.poor_weight_gain);
+  std::printf(
+      "\nrl.eif: long_var_per_m %.4g, lat_var_per_m %.4g, heading_var_per_m %.4g, "
+      "poor_weight_gain %.3g\n",
+      fitted.long_var_per_m, fitted.lat_var_per_m, fitted.heading_var_per_m,
+      fitted.poor_weight_gain);
   return 0;
 }

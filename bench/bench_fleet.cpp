@@ -38,10 +38,14 @@ int main(int argc, char** argv) {
   rl::FleetConfig defaults;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--strategies") strategies = splitList(argv[i + 1]);
-    else if (a == "--k") ks = splitList(argv[i + 1]);
-    else if (a == "--candidates") defaults.candidates_per_move = std::stoi(argv[i + 1]);
-    else if (a == "--moves") defaults.balance_moves = std::stoi(argv[i + 1]);
+    if (a == "--strategies")
+      strategies = splitList(argv[i + 1]);
+    else if (a == "--k")
+      ks = splitList(argv[i + 1]);
+    else if (a == "--candidates")
+      defaults.candidates_per_move = std::stoi(argv[i + 1]);
+    else if (a == "--moves")
+      defaults.balance_moves = std::stoi(argv[i + 1]);
   }
   const std::string src = SLAMROUTE_SOURCE_DIR, shared = SLAMROUTE_SHARED_DIR;
   const std::vector<Net> nets{
@@ -49,9 +53,10 @@ int main(int argc, char** argv) {
       {"Bologna (Acosta)", shared + "/networks/bologna_acosta/acosta_buslanes.net.xml"},
       {"Ingolstadt", shared + "/networks/ingolstadt21/ingolstadt21.net.xml"},
       {"Berlin-Adlershof", "/usr/share/sumo/tools/game/DRT/osm.net.xml"}};
-  std::printf("| net | strategy | K | makespan [km] | bound [km] | makespan / bound | "
-              "total / L1 | balance | coverage [%%] | planning [s] |\n"
-              "|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| net | strategy | K | makespan [km] | bound [km] | makespan / bound | "
+      "total / L1 | balance | coverage [%%] | planning [s] |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Net& net : nets) {
     const RoadGraph g = RoadGraph::fromSumoNet(SumoNet::read(net.path), /*lscc_only=*/false);
     for (const std::string& strategy : strategies)

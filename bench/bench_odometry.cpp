@@ -11,9 +11,9 @@
 #include <string>
 
 #include "../tests/evaluate/SyntheticScene.hpp"
+#include "slamroute/core/ConfigIO.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
-#include "slamroute/core/ConfigIO.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
 #include "slamroute/simulate/SimulatedScanSource.hpp"
 
@@ -77,15 +77,17 @@ void report(const SlamResult& r, const Trajectory& gt, const Config& cfg) {
   const double n = static_cast<double>(r.trajectory.size());
   std::printf("scans %zu, keyframes %d, loop closures %zu (candidates %d)\n", r.trajectory.size(),
               r.keyframes, r.loops.size(), r.loop_candidates);
-  std::printf("route %.1f m, ATE rmse %.4f m mean %.4f max %.4f, RPE(%.0f m) %.3f %% %.5f deg/m, "
-              "KITTI RPE %.3f %%\n",
-              m.route_length_m, m.ate.rmse_m, m.ate.mean_m, m.ate.max_m, m.segment_m,
-              m.rpe_segment.trans_pct, m.rpe_segment.rot_deg_per_m, m.rpe_kitti.trans_pct);
-  std::printf("ms/scan: projection %.2f ground %.2f clustering %.2f features %.2f odometry %.2f "
-              "mapping %.2f local-map %.2f loop %.2f graph %.2f | total %.2f -> %.1f scans/s\n",
-              1e3 * t.projection / n, 1e3 * t.ground / n, 1e3 * t.clustering / n,
-              1e3 * t.features / n, 1e3 * t.odometry / n, 1e3 * t.mapping / n, 1e3 * t.local_map / n,
-              1e3 * t.loop_closure / n, 1e3 * t.pose_graph / n, 1e3 * t.total / n, n / t.total);
+  std::printf(
+      "route %.1f m, ATE rmse %.4f m mean %.4f max %.4f, RPE(%.0f m) %.3f %% %.5f deg/m, "
+      "KITTI RPE %.3f %%\n",
+      m.route_length_m, m.ate.rmse_m, m.ate.mean_m, m.ate.max_m, m.segment_m,
+      m.rpe_segment.trans_pct, m.rpe_segment.rot_deg_per_m, m.rpe_kitti.trans_pct);
+  std::printf(
+      "ms/scan: projection %.2f ground %.2f clustering %.2f features %.2f odometry %.2f "
+      "mapping %.2f local-map %.2f loop %.2f graph %.2f | total %.2f -> %.1f scans/s\n",
+      1e3 * t.projection / n, 1e3 * t.ground / n, 1e3 * t.clustering / n, 1e3 * t.features / n,
+      1e3 * t.odometry / n, 1e3 * t.mapping / n, 1e3 * t.local_map / n, 1e3 * t.loop_closure / n,
+      1e3 * t.pose_graph / n, 1e3 * t.total / n, n / t.total);
   std::cout << "reliability: " << reliabilityJson(r)["by_reason"].dump() << "\n";
 }
 
@@ -98,14 +100,21 @@ int main(int argc, char** argv) {
   std::string drive, config_file;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--frames" && i + 1 < argc) frames = std::stoi(argv[++i]);
-    else if (a == "--noise" && i + 1 < argc) noise = std::stod(argv[++i]);
-    else if (a == "--loop") loop = true;
-    else if (a == "--no-loop-closure") no_lc = true;
-    else if (a == "--drive" && i + 1 < argc) drive = argv[++i];
-    else if (a == "--config" && i + 1 < argc) config_file = argv[++i];
+    if (a == "--frames" && i + 1 < argc)
+      frames = std::stoi(argv[++i]);
+    else if (a == "--noise" && i + 1 < argc)
+      noise = std::stod(argv[++i]);
+    else if (a == "--loop")
+      loop = true;
+    else if (a == "--no-loop-closure")
+      no_lc = true;
+    else if (a == "--drive" && i + 1 < argc)
+      drive = argv[++i];
+    else if (a == "--config" && i + 1 < argc)
+      config_file = argv[++i];
     else {
-      std::cerr << "usage: bench_odometry [--frames N] [--noise M] [--loop] [--no-loop-closure] [--drive DIR] [--config FILE]\n";
+      std::cerr << "usage: bench_odometry [--frames N] [--noise M] [--loop] [--no-loop-closure] "
+                   "[--drive DIR] [--config FILE]\n";
       return 2;
     }
   }

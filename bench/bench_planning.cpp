@@ -23,7 +23,8 @@ using namespace slamroute;
 namespace {
 
 struct Run {
-  double seconds = 0, length = 0, node_cov = 0, edge_cov = 0, final_logdet = 0, max_logdet = 0, mean_logdet = 0, weight = 0;
+  double seconds = 0, length = 0, node_cov = 0, edge_cov = 0, final_logdet = 0, max_logdet = 0,
+         mean_logdet = 0, weight = 0;
   int closures = 0;
   int illegal = 0;
   bool heuristic = false, ok = false;
@@ -44,7 +45,8 @@ Run runPlanner(const RoadGraph& g, const std::string& planner, const std::string
     out.heuristic = r.heuristic;
     out.final_logdet = r.final_logdet_cov;
     out.max_logdet = r.max_logdet_cov;
-    for (double x : r.logdet_cov_along) out.mean_logdet += x / static_cast<double>(r.logdet_cov_along.size());
+    for (double x : r.logdet_cov_along)
+      out.mean_logdet += x / static_cast<double>(r.logdet_cov_along.size());
     out.closures = r.loop_closures;
     out.weight = r.mean_edge_weight;
     out.illegal = nlohmann::json::parse(r.extra_json).value("illegal_turns", -1);
@@ -69,10 +71,12 @@ void printGridTimes(bool quick, int tsp_limit) {
   };
   std::vector<Size> sizes = {{5, 10}, {10, 10}, {20, 25}, {40, 50}};
   if (quick) sizes.resize(2);
-  std::printf("## Planning time vs graph size (synthetic grid cities: 100 m blocks, 15 m jitter, "
-              "20 %% one-way streets, no U-turns except dead ends, weights in [0.2, 1])\n\n");
-  std::printf("| nodes | edges | qlearning s | tsp s (method) | postman s | qlearning / postman length | "
-              "qlearning node cov %% | illegal turns (q/t/p) |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "## Planning time vs graph size (synthetic grid cities: 100 m blocks, 15 m jitter, "
+      "20 %% one-way streets, no U-turns except dead ends, weights in [0.2, 1])\n\n");
+  std::printf(
+      "| nodes | edges | qlearning s | tsp s (method) | postman s | qlearning / postman length | "
+      "qlearning node cov %% | illegal turns (q/t/p) |\n|---|---|---|---|---|---|---|---|\n");
   for (const Size& s : sizes) {
     rl::GridCitySpec spec;
     spec.rows = s.rows;
@@ -87,13 +91,15 @@ void printGridTimes(bool quick, int tsp_limit) {
     const Run p = runPlanner(g, "postman", "grid");
     Run t;
     const int n = s.rows * s.cols;
-    if (n <= tsp_limit) t = runPlanner(g, "tsp", "grid");
-    else t.err = "skipped";
+    if (n <= tsp_limit)
+      t = runPlanner(g, "tsp", "grid");
+    else
+      t.err = "skipped";
     std::printf("| %d | %zu | %s | %s (%s) | %s | %.2f | %.1f | %d/%d/%d |\n", n, g.edges.size(),
                 cell(q).c_str(), t.ok ? cell(t).c_str() : t.err.c_str(),
                 t.ok ? (t.heuristic ? "heuristic" : "held-karp") : "-", cell(p).c_str(),
-                p.ok && q.ok ? q.length / p.length : 0.0, q.node_cov, q.illegal, t.ok ? t.illegal : -1,
-                p.illegal);
+                p.ok && q.ok ? q.length / p.length : 0.0, q.node_cov, q.illegal,
+                t.ok ? t.illegal : -1, p.illegal);
     std::fflush(stdout);
   }
 }
@@ -101,8 +107,10 @@ void printGridTimes(bool quick, int tsp_limit) {
 /// Every planner on the real nets' largest legally drivable part.
 void printRealNets() {
   std::printf("\n## Real networks (largest legally drivable part)\n\n");
-  std::printf("| net | plan nodes/edges | planner | seconds | length km | / postman | node cov %% | "
-              "edge cov %% | illegal turns | loop closures | mean / max log det cov |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| net | plan nodes/edges | planner | seconds | length km | / postman | node cov %% | "
+      "edge cov %% | illegal turns | loop closures | mean / max log det cov "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   const std::filesystem::path shared(SLAMROUTE_SHARED_DIR), src(SLAMROUTE_SOURCE_DIR);
   const std::vector<std::pair<std::string, std::filesystem::path>> nets = {
       {"default_city", src / "networks/default_city/default_city.net.xml"},
@@ -130,9 +138,12 @@ void printRealNets() {
 
 /// What the learning contributes: paper Table 2's rewards against an untrained table.
 void printQLearningVariants() {
-  std::printf("\n## Q-learning variants on a weighted 12x12 two-way grid (weights uniform in [0.1, 1])\n\n");
-  std::printf("| reward | episodes | length km | mean edge weight | edge cov %% | mean / max log det cov | "
-              "shortest-path share %% |\n|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\n## Q-learning variants on a weighted 12x12 two-way grid (weights uniform in [0.1, "
+      "1])\n\n");
+  std::printf(
+      "| reward | episodes | length km | mean edge weight | edge cov %% | mean / max log det cov | "
+      "shortest-path share %% |\n|---|---|---|---|---|---|---|\n");
   rl::GridCitySpec ws;
   ws.rows = ws.cols = 12;
   ws.weight_min = 0.1;
@@ -145,11 +156,12 @@ void printQLearningVariants() {
       cfg.qlearning.episodes = episodes;
       const Route r = rl::plan(wg, cfg, 42, "grid");
       double mean = 0.0;
-      for (double x : r.logdet_cov_along) mean += x / static_cast<double>(r.logdet_cov_along.size());
+      for (double x : r.logdet_cov_along)
+        mean += x / static_cast<double>(r.logdet_cov_along.size());
       const double sp = nlohmann::json::parse(r.extra_json).value("shortest_path_length_m", 0.0);
-      std::printf("| %s | %d | %.2f | %.3f | %.1f | %.2f / %.2f | %.0f |\n", reward.c_str(), episodes,
-                  r.length_m / 1000.0, r.mean_edge_weight, r.edge_coverage_pct, mean, r.max_logdet_cov,
-                  100.0 * sp / r.length_m);
+      std::printf("| %s | %d | %.2f | %.3f | %.1f | %.2f / %.2f | %.0f |\n", reward.c_str(),
+                  episodes, r.length_m / 1000.0, r.mean_edge_weight, r.edge_coverage_pct, mean,
+                  r.max_logdet_cov, 100.0 * sp / r.length_m);
     }
 }
 

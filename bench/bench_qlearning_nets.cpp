@@ -32,7 +32,8 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
-    if (k == "--seed") o.seed = std::stoull(v);
+    if (k == "--seed")
+      o.seed = std::stoull(v);
     else if (k == "--nets") {
       o.nets.clear();
       std::stringstream ss(v);
@@ -65,8 +66,9 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::printf("seed %llu, %d episodes\n\n", static_cast<unsigned long long>(o.seed),
               rl::QLearningConfig{}.episodes);
-  std::printf("| net | setting | episodes reaching goal | learned share [%%] | route km | "
-              "node cov [%%] | planning [s] |\n|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| net | setting | episodes reaching goal | learned share [%%] | route km | "
+      "node cov [%%] | planning [s] |\n|---|---|---|---|---|---|---|\n");
   for (const auto& net : o.nets) {
     if (!std::filesystem::exists(net)) {
       std::printf("| %s | missing |||||\n", net.c_str());

@@ -7,8 +7,8 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <string>
 
@@ -42,7 +42,8 @@ std::vector<Pose3> posesAlongStreets(const SumoNet& net, std::size_t n) {
     const auto& s = e.lanes.front().shape;
     const Vec3 a = s[0], b = s[1];
     Pose3 T = Pose3::Identity();
-    T.linear() = Eigen::AngleAxisd(std::atan2(b.y() - a.y(), b.x() - a.x()), Vec3::UnitZ()).toRotationMatrix();
+    T.linear() = Eigen::AngleAxisd(std::atan2(b.y() - a.y(), b.x() - a.x()), Vec3::UnitZ())
+                     .toRotationMatrix();
     T.translation() = 0.5 * (a + b) + Vec3(0, 0, 1.8);
     out.push_back(T);
   }
@@ -72,7 +73,8 @@ double castPlain(const World& w, const Lidar& lidar, const std::vector<Pose3>& p
       const double az = lidar.azimuthRad(c);
       for (int r = 0; r < spec.channels; ++r) {
         const double el = lidar.elevationRad(r);
-        const Eigen::Vector3f d = R * Eigen::Vector3f(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+        const Eigen::Vector3f d = R * Eigen::Vector3f(std::cos(el) * std::cos(az),
+                                                      std::cos(el) * std::sin(az), std::sin(el));
         RTCRayHit& h = rays[static_cast<std::size_t>(r)];
         h = RTCRayHit{};
         h.ray.org_x = o.x(), h.ray.org_y = o.y(), h.ray.org_z = o.z();
@@ -90,18 +92,22 @@ double castPlain(const World& w, const Lidar& lidar, const std::vector<Pose3>& p
             const bool ok = r0 + k < rays.size();
             valid[k] = ok ? -1 : 0;
             const RTCRayHit& h = rays[ok ? r0 + k : r0];
-            p.ray.org_x[k] = h.ray.org_x, p.ray.org_y[k] = h.ray.org_y, p.ray.org_z[k] = h.ray.org_z;
-            p.ray.dir_x[k] = h.ray.dir_x, p.ray.dir_y[k] = h.ray.dir_y, p.ray.dir_z[k] = h.ray.dir_z;
+            p.ray.org_x[k] = h.ray.org_x, p.ray.org_y[k] = h.ray.org_y,
+            p.ray.org_z[k] = h.ray.org_z;
+            p.ray.dir_x[k] = h.ray.dir_x, p.ray.dir_y[k] = h.ray.dir_y,
+            p.ray.dir_z[k] = h.ray.dir_z;
             p.ray.tnear[k] = 0, p.ray.tfar[k] = h.ray.tfar, p.ray.mask[k] = ~0u, p.ray.time[k] = 0;
             p.ray.flags[k] = 0, p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
           }
           ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
           rtcIntersect16(valid, scene, &ctx, &p);
-          for (std::size_t k = 0; k < 16 && r0 + k < rays.size(); ++k) rays[r0 + k].hit.geomID = p.hit.geomID[k];
+          for (std::size_t k = 0; k < 16 && r0 + k < rays.size(); ++k)
+            rays[r0 + k].hit.geomID = p.hit.geomID[k];
         }
       } else if (stream) {
         ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-        rtcIntersect1M(scene, &ctx, rays.data(), static_cast<unsigned>(rays.size()), sizeof(RTCRayHit));
+        rtcIntersect1M(scene, &ctx, rays.data(), static_cast<unsigned>(rays.size()),
+                       sizeof(RTCRayHit));
       } else {
         for (auto& h : rays) rtcIntersect1(scene, &ctx, &h);
       }
@@ -114,8 +120,9 @@ double castPlain(const World& w, const Lidar& lidar, const std::vector<Pose3>& p
 }  // namespace
 
 int main(int argc, char** argv) {
-  fs::path net_path = argc > 1 ? fs::path(argv[1])
-                               : fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  fs::path net_path =
+      argc > 1 ? fs::path(argv[1])
+               : fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
   if (argc <= 1 && !fs::exists(net_path))
     net_path = fs::path(SLAMROUTE_SHARED_DIR) / "networks/bologna_acosta/acosta_buslanes.net.xml";
   const std::size_t n_scans = argc > 2 ? std::stoul(argv[2]) : 40;
@@ -127,7 +134,8 @@ int main(int argc, char** argv) {
   if (argc > 3) cfg.preset = argv[3];
   const Lidar lidar(cfg, 42);
   const auto poses = posesAlongStreets(net, n_scans);
-  const double rays = static_cast<double>(poses.size()) * lidar.spec().channels * lidar.spec().horizontal_samples;
+  const double rays =
+      static_cast<double>(poses.size()) * lidar.spec().channels * lidar.spec().horizontal_samples;
   std::printf("net %s\nworld: %zu triangles, built in %.2f s\n%zu scans of %dx%d = %.0f rays\n",
               net_path.string().c_str(), world.mesh().triangles.size(), t_build, poses.size(),
               lidar.spec().channels, lidar.spec().horizontal_samples, rays);
@@ -148,10 +156,11 @@ int main(int argc, char** argv) {
           points += l->scan(world, poses[i], sweepEnd(poses[i]), {}, i).points.size();
       });
       const double dt = now() - t0, dc = cpuNow() - c0;
-      std::printf("Lidar::scan%s, %d thread(s): %.2f M rays/s wall, %.2f M rays per CPU-second, "
-                  "%.1f ms/scan wall, %.0f points/scan\n",
-                  l == &lidar ? "" : " (noise off)", threads, rays / dt / 1e6, rays / dc / 1e6,
-                  1e3 * dt / poses.size(), points / poses.size());
+      std::printf(
+          "Lidar::scan%s, %d thread(s): %.2f M rays/s wall, %.2f M rays per CPU-second, "
+          "%.1f ms/scan wall, %.0f points/scan\n",
+          l == &lidar ? "" : " (noise off)", threads, rays / dt / 1e6, rays / dc / 1e6,
+          1e3 * dt / poses.size(), points / poses.size());
     }
   for (int stream : {0, 1, 2}) {
     t0 = now();
@@ -159,7 +168,7 @@ int main(int argc, char** argv) {
     const double hits = castPlain(world, lidar, poses, stream);
     const double dt = now() - t0, dc = cpuNow() - c0;
     std::printf("%s, 1 thread: %.2f M rays/s wall, %.2f M rays per CPU-second (%.0f hits/scan)\n",
-                stream == 1 ? "rtcIntersect1M (coherent stream of a column)"
+                stream == 1   ? "rtcIntersect1M (coherent stream of a column)"
                 : stream == 2 ? "rtcIntersect16 (packets of 16 rings of a column)"
                               : "rtcIntersect1 (one ray at a time)",
                 rays / dt / 1e6, rays / dc / 1e6, hits / poses.size());

@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
       const Traces tr = cityTraces(n, g, 42);
       const auto t0 = std::chrono::steady_clock::now();
       const auto r = graphFromTraces(tr, Config{});
-      const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double sec =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::printf("%10zu %3dx%-3d %9zu %13zu %12d %9zu %10.2f\n", n, g, g, r.stats.voxels,
                   r.stats.intersections, g * g - 4, r.stats.streets, sec);
       std::fflush(stdout);
@@ -102,11 +103,14 @@ int main(int argc, char** argv) {
     }
   const int frames = 40;
   for (int threads : {1, 2}) {
-    tbb::global_control c(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism,
+                          static_cast<std::size_t>(threads));
     const auto t0 = std::chrono::steady_clock::now();
     double sum = 0;
     std::vector<double> s(frames);
-    tbb::parallel_for(0, frames, [&](int i) { s[static_cast<std::size_t>(i)] = scoreDepthImage(img, DepthConfig{}).score; });
+    tbb::parallel_for(0, frames, [&](int i) {
+      s[static_cast<std::size_t>(i)] = scoreDepthImage(img, DepthConfig{}).score;
+    });
     for (double v : s) sum += v;
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("depth score: %d frames on %d thread(s): %.1f frames/s (score %.3f)\n", frames,

@@ -17,8 +17,9 @@ void registerBuildGraph(CLI::App& app, Context& ctx) {
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand("build-graph", "Build the road graph from a survey (paper 3.1)");
-  auto* s = sub->add_option("--survey", o->survey,
-                            "survey folder (traces.csv + depth/index.csv, from `slamroute survey`)");
+  auto* s =
+      sub->add_option("--survey", o->survey,
+                      "survey folder (traces.csv + depth/index.csv, from `slamroute survey`)");
   auto* t = sub->add_option("--traces", o->traces, "bare traces.csv or SUMO FCD XML instead");
   s->excludes(t);
   sub->add_option("--depth", o->depth, "depth/index.csv (overrides the survey's)");
@@ -45,8 +46,8 @@ void registerBuildGraph(CLI::App& app, Context& ctx) {
     std::cout << "graph:          " << o->out << "\n"
               << "nodes:          " << res.built.graph.nodes.size() << " (" << st.intersections
               << " intersections, " << st.dead_ends << " dead ends)\n"
-              << "streets:        " << st.streets << " (" << st.one_way_streets
-              << " one-way), " << res.built.graph.edges.size() << " directed edges\n"
+              << "streets:        " << st.streets << " (" << st.one_way_streets << " one-way), "
+              << res.built.graph.edges.size() << " directed edges\n"
               << "depth frames:   " << res.weights.scored << " scored, " << res.weights.failed
               << " skipped, mean score " << std::fixed << std::setprecision(3)
               << res.weights.mean_score << "\n";

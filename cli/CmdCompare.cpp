@@ -18,7 +18,8 @@ void registerCompare(CLI::App& app, Context& ctx) {
     double max_dt_s = -1.0;
   };
   auto o = std::make_shared<Opts>();
-  auto* sub = app.add_subcommand("compare", "Trajectory metrics (ATE/RPE) between an estimate and ground truth");
+  auto* sub = app.add_subcommand(
+      "compare", "Trajectory metrics (ATE/RPE) between an estimate and ground truth");
   sub->add_option("est", o->est, "estimated trajectory (TUM or KITTI poses)")->required();
   sub->add_option("gt", o->gt, "ground-truth trajectory (TUM or KITTI poses)")->required();
   sub->add_flag("--json", o->json, "print JSON instead of text");
@@ -52,13 +53,15 @@ void registerCompare(CLI::App& app, Context& ctx) {
     };
     std::cout << "poses matched:   " << m.pairs.size() << " of " << est.size() << "\n"
               << "route length:    " << num(m.route_length_m, 1) << " m\n"
-              << "ATE (SE3-aligned): rmse " << num(m.ate.rmse_m, 4) << " m, mean " << num(m.ate.mean_m, 4)
-              << " m, median " << num(m.ate.median_m, 4) << " m, max " << num(m.ate.max_m, 4) << " m\n"
+              << "ATE (SE3-aligned): rmse " << num(m.ate.rmse_m, 4) << " m, mean "
+              << num(m.ate.mean_m, 4) << " m, median " << num(m.ate.median_m, 4) << " m, max "
+              << num(m.ate.max_m, 4) << " m\n"
               << "RPE KITTI 100..800 m: " << num(m.rpe_kitti.trans_pct, 3) << " %, "
-              << num(m.rpe_kitti.rot_deg_per_m, 5) << " deg/m (" << m.rpe_kitti.segments << " segments)\n"
-              << "RPE " << num(m.segment_m, 0) << " m: " << num(m.rpe_segment.trans_pct, 3) << " %, "
-              << num(m.rpe_segment.rot_deg_per_m, 5) << " deg/m (" << m.rpe_segment.segments
-              << " segments)\n";
+              << num(m.rpe_kitti.rot_deg_per_m, 5) << " deg/m (" << m.rpe_kitti.segments
+              << " segments)\n"
+              << "RPE " << num(m.segment_m, 0) << " m: " << num(m.rpe_segment.trans_pct, 3)
+              << " %, " << num(m.rpe_segment.rot_deg_per_m, 5) << " deg/m ("
+              << m.rpe_segment.segments << " segments)\n";
   });
 }
 

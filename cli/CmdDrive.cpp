@@ -78,10 +78,9 @@ void drawStackedScans(const DriveOpts& o, const simulate::Config& cfg,
 
 std::string driveLine(const simulate::DriveResult& r) {
   char line[256];
-  std::snprintf(line, sizeof line,
-                "%zu edges, %.0f m driven in %.1f s simulated (%zu poses, %d teleports)",
-                r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(),
-                r.teleports);
+  std::snprintf(
+      line, sizeof line, "%zu edges, %.0f m driven in %.1f s simulated (%zu poses, %d teleports)",
+      r.route.size(), r.driven_m, r.arrive_s - r.depart_s, r.groundtruth.size(), r.teleports);
   return line;
 }
 

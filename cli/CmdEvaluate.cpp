@@ -10,13 +10,13 @@
 #include "Commands.hpp"
 #include "EvaluateCompleteness.hpp"
 #include "EvaluateFleet.hpp"
-#include "slamroute/core/FleetDrive.hpp"
 #include "slamroute/core/DriveFolder.hpp"
+#include "slamroute/core/FleetDrive.hpp"
 #include "slamroute/core/KittiSequence.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/DriveChecks.hpp"
 #include "slamroute/evaluate/Evaluate.hpp"
-#include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/Drive.hpp"
 #include "slamroute/simulate/SimulatedScanSource.hpp"
 #include "slamroute/simulate/World.hpp"
@@ -45,7 +45,8 @@ std::map<std::string, std::string> streetKinds(const fs::path& drive) {
 }
 
 evaluate::EvaluationResult evaluateDriveFolder(const std::string& drive_dir, const std::string& out,
-                                   const evaluate::Config& cfg, const explore::Config& explore) {
+                                               const evaluate::Config& cfg,
+                                               const explore::Config& explore) {
   const fs::path drive(drive_dir);
   if (!fs::is_directory(drive)) throw std::invalid_argument(drive_dir + ": not a drive folder");
   if (!fs::exists(drive / drive_files::kGroundTruth))
@@ -61,14 +62,16 @@ evaluate::EvaluationResult evaluateDriveFolder(const std::string& drive_dir, con
   }
   evaluate::checkDriveFiles(drive, *source);
   logInfo("evaluate: " + std::to_string(source->size()) + " scans from " + drive_dir);
-  evaluate::EvaluationResult r = evaluate::evaluateDrive(drive, *source, out, cfg, streetKinds(drive));
+  evaluate::EvaluationResult r =
+      evaluate::evaluateDrive(drive, *source, out, cfg, streetKinds(drive));
   addMapCompleteness(drive, *source, out, explore, r);
   return r;
 }
 
 /// A KITTI sequence has no wheel odometry; without poses.txt there is nothing to measure against.
-evaluate::EvaluationResult evaluateKittiSequence(const std::string& seq_dir, const std::string& sensor,
-                                     const std::string& out, const evaluate::Config& cfg) {
+evaluate::EvaluationResult evaluateKittiSequence(const std::string& seq_dir,
+                                                 const std::string& sensor, const std::string& out,
+                                                 const evaluate::Config& cfg) {
   const KittiSequence seq = readKittiSequence(seq_dir, lidarPreset(sensor));
   logInfo("evaluate: " + std::to_string(seq.scans->size()) + " scans from " + seq_dir +
           " (sensor " + sensor + ")");
@@ -101,8 +104,8 @@ void evaluateFleet(const std::string& drive, const std::string& out, const evalu
         evaluateDriveFolder(d.string(), o.string(), cfg, explore);
       });
   for (const auto& v : r.vehicles)
-    std::cout << v.id << ": ATE rmse " << v.own_ate_rmse_m << " m alone, "
-              << v.common_ate_after_m << " m merged (one alignment)\n";
+    std::cout << v.id << ": ATE rmse " << v.own_ate_rmse_m << " m alone, " << v.common_ate_after_m
+              << " m merged (one alignment)\n";
   std::cout << "fleet: " << r.closures.size() << " inter-vehicle closures, ATE rmse "
             << r.common_ate_before_m << " m before the merge, " << r.common_ate_after_m
             << " m after; completeness " << r.completeness_pct << " % -> " << out << "\n";
@@ -121,7 +124,8 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
   };
   auto o = std::make_shared<Opts>();
   auto* sub = app.add_subcommand(
-      "evaluate", "Run LiDAR SLAM on a drive or a KITTI sequence and measure the error (paper 3.3)");
+      "evaluate",
+      "Run LiDAR SLAM on a drive or a KITTI sequence and measure the error (paper 3.3)");
   auto* drive = sub->add_option("--drive", o->drive, "drive folder written by `slamroute drive`");
   auto* kitti = sub->add_option("--kitti", o->kitti,
                                 "KITTI odometry sequence folder (velodyne/*.bin, times.txt; "
@@ -131,12 +135,14 @@ void registerEvaluate(CLI::App& app, Context& ctx) {
                   "LiDAR of a --kitti sequence (rings come from the points' elevation)")
       ->check(CLI::IsMember({"paper", "vlp16", "hdl32"}))
       ->needs(kitti);
-  sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")->required();
+  sub->add_option("--out", o->out, "output folder (estimate.tum, metrics.json, map.pcd, plots)")
+      ->required();
   sub->add_option("--segment", o->segment_m, "extra RPE segment length [m] (default: config)");
   sub->add_flag("--no-loop-closure", o->no_loop_closure, "disable loop closure");
   sub->add_flag("--keep-vehicles", o->keep_vehicles,
                 "fleet: keep the vehicles' evaluations already in OUT/vehicle_K (merge only)");
-  sub->add_option("--scan-stride", o->scan_stride, "use every n-th scan (default: evaluate.input.scan_stride)")
+  sub->add_option("--scan-stride", o->scan_stride,
+                  "use every n-th scan (default: evaluate.input.scan_stride)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--from", o->from_s, "evaluate only from this drive time on [s] (default: start)")
       ->check(CLI::NonNegativeNumber);

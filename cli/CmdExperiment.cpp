@@ -9,8 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
-#include <nlohmann/json.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <sstream>
 
@@ -35,22 +35,24 @@ namespace {
 struct Variant {
   std::string name, planner, reward;
 };
-const std::vector<Variant> kVariants = {
-    {"qlearning", "qlearning", "full"}, {"random", "random", "full"}, {"qlearning_accuracy", "qlearning", "accuracy"}};
+const std::vector<Variant> kVariants = {{"qlearning", "qlearning", "full"},
+                                        {"random", "random", "full"},
+                                        {"qlearning_accuracy", "qlearning", "accuracy"}};
 
 /// The route ids of the pipeline runs: variant name and seed.
 std::string runId(const Variant& v, int seed) { return v.name + "_s" + std::to_string(seed); }
 
 /// Plans, drives and evaluates every variant for seeds 1..`seeds` on one survey and graph.
-void runPaperPipeline(const Context& ctx, const std::string& net_path, const fs::path& out, int seeds,
-                      int jobs, bool resume, double status_every) {
+void runPaperPipeline(const Context& ctx, const std::string& net_path, const fs::path& out,
+                      int seeds, int jobs, bool resume, double status_every) {
   const SumoNet net = SumoNet::read(net_path);
   const pipeline::RunLayout run{out};
   const pipeline::ChildOptions child = childOptions(ctx);
   pipeline::StageRunner stages(resume, status_every);
   logInfo("[1/4] survey and road graph");
   pipeline::surveyAndGraph(stages, child, run, net_path);
-  logInfo("[2/4] planning " + std::to_string(seeds) + " seeds x " + std::to_string(kVariants.size()) + " variants");
+  logInfo("[2/4] planning " + std::to_string(seeds) + " seeds x " +
+          std::to_string(kVariants.size()) + " variants");
   std::vector<pipeline::PlanRequest> plans;
   std::vector<std::string> ids;
   std::vector<long long> id_seeds;
@@ -84,7 +86,8 @@ Samples collectSamples(const fs::path& out, int seeds) {
           fs::exists(metrics) ? evaluate::evaluationFigures(evaluate::readEvaluationJson(metrics))
                               : std::map<std::string, double>{};
       auto add = [&](const json& j, const char* k, const std::string& key, double scale = 1.0) {
-        if (j.contains(k) && j[k].is_number()) st[v.name][key].push_back(j[k].get<double>() * scale);
+        if (j.contains(k) && j[k].is_number())
+          st[v.name][key].push_back(j[k].get<double>() * scale);
       };
       auto addFigure = [&](const char* k, const std::string& key) {
         if (const auto it = m.find(k); it != m.end()) st[v.name][key].push_back(it->second);
@@ -106,28 +109,34 @@ std::string paperTables12(const fs::path& out, int seeds) {
   Samples st = collectSamples(out, seeds);
   auto row = [&](const std::string& v) {
     auto& x = st[v];
-    auto cell = [&](const char* k, int prec) { return pipeline::formatMeanSd(pipeline::meanSd(x[k]), prec); };
-    return "| " + v + " | " + cell("ate_mean", 3) + " | " + cell("ate_rmse", 3) + " | " + cell("rpe", 2) + " | " +
-           cell("lc", 1) + " | " + cell("len", 2) + " | " + cell("dcov", 1) + " | " + cell("cov", 1) + " | " + cell("ncov", 1) + " |\n";
+    auto cell = [&](const char* k, int prec) {
+      return pipeline::formatMeanSd(pipeline::meanSd(x[k]), prec);
+    };
+    return "| " + v + " | " + cell("ate_mean", 3) + " | " + cell("ate_rmse", 3) + " | " +
+           cell("rpe", 2) + " | " + cell("lc", 1) + " | " + cell("len", 2) + " | " +
+           cell("dcov", 1) + " | " + cell("cov", 1) + " | " + cell("ncov", 1) + " |\n";
   };
   const std::string head =
-      "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | directed SUMO edges [%] | two-way street coverage [%] | node coverage [%] |\n"
+      "| route | ATE mean [m] | ATE RMSE [m] | RPE [%] | loop closures | length [km] | directed "
+      "SUMO edges [%] | two-way street coverage [%] | node coverage [%] |\n"
       "|---|---|---|---|---|---|---|---|---|\n";
   std::ostringstream md;
-  md << "## Table 1: Q-learning vs random route (mean ± std over " << seeds << (seeds == 1 ? " seed" : " seeds")
-     << ")\n\n"
+  md << "## Table 1: Q-learning vs random route (mean ± std over " << seeds
+     << (seeds == 1 ? " seed" : " seeds") << ")\n\n"
      << "Paper: proposed 0.4006 m vs random 0.5745 m average trajectory error (−30 %). Here the "
         "random walk drives as far as the same seed's Q-learning route (equal budget).\n\n"
      << head << row("qlearning") << row("random") << "\n";
   md << "## Table 2: full reward vs accuracy-only reward\n\n"
-     << "Paper: accuracy-only had the lower error (0.1645 m vs 0.4006 m) but covered about half the area.\n\n"
+     << "Paper: accuracy-only had the lower error (0.1645 m vs 0.4006 m) but covered about half "
+        "the area.\n\n"
      << head << row("qlearning") << row("qlearning_accuracy") << "\n";
   return md.str();
 }
 
 std::string table3(const std::vector<int>& sizes, std::uint64_t seed, const rl::Config& base) {
   std::ostringstream md;
-  md << "| planner | nodes | edges | planning time [s] | route length [km] | node coverage [%] | note |\n"
+  md << "| planner | nodes | edges | planning time [s] | route length [km] | node coverage [%] | "
+        "note |\n"
      << "|---|---|---|---|---|---|---|\n";
   for (int n : sizes) {
     // Near-square grid city: 100 m blocks, 15 m jitter, 20 % one-way streets, no U-turns, edge
@@ -147,12 +156,13 @@ std::string table3(const std::vector<int>& sizes, std::uint64_t seed, const rl::
       logInfo("  table 3: " + std::string(p) + " on " + std::to_string(n) + " nodes");
       try {
         const Route r = rl::plan(g, cfg, seed, "synthetic city " + std::to_string(n));
-        md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | " << std::fixed << std::setprecision(3)
-           << r.planning_seconds << " | " << std::setprecision(2) << r.length_m / 1000.0 << " | "
-           << std::setprecision(1) << r.node_coverage_pct << " | "
+        md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | " << std::fixed
+           << std::setprecision(3) << r.planning_seconds << " | " << std::setprecision(2)
+           << r.length_m / 1000.0 << " | " << std::setprecision(1) << r.node_coverage_pct << " | "
            << (r.heuristic ? "heuristic" : "exact") << " |\n";
       } catch (const std::exception& e) {
-        md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | – | – | – | " << e.what() << " |\n";
+        md << "| " << p << " | " << g.nodes.size() << " | " << g.edges.size() << " | – | – | – | "
+           << e.what() << " |\n";
       }
     }
   }
@@ -170,17 +180,27 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     double status_every = 60.0;
   };
   auto o = std::make_shared<Opts>();
-  auto* sub = app.add_subcommand("experiment", "Reproduce the paper's tables (§4) over several seeds");
-  sub->add_option("which", o->which, "experiment name: paper")->required()->check(CLI::IsMember({"paper"}));
+  auto* sub =
+      app.add_subcommand("experiment", "Reproduce the paper's tables (§4) over several seeds");
+  sub->add_option("which", o->which, "experiment name: paper")
+      ->required()
+      ->check(CLI::IsMember({"paper"}));
   sub->add_option("--net", o->net, "SUMO network (default: the shipped city)");
   sub->add_option("--out", o->out, "output folder")->capture_default_str();
-  sub->add_option("--seeds", o->seeds, "seeds per comparison (1..N)")->capture_default_str()->check(CLI::Range(1, 100));
-  sub->add_option("--jobs", o->jobs, "steps run at once")->capture_default_str()->check(CLI::Range(1, 64));
-  sub->add_option("--sizes", o->sizes, "graph sizes for Table 3 (comma-separated)")->delimiter(',')->capture_default_str();
+  sub->add_option("--seeds", o->seeds, "seeds per comparison (1..N)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  sub->add_option("--jobs", o->jobs, "steps run at once")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--sizes", o->sizes, "graph sizes for Table 3 (comma-separated)")
+      ->delimiter(',')
+      ->capture_default_str();
   sub->add_flag("--table3-only", o->table3_only, "only the planning-time table (no SUMO, no SLAM)");
   sub->add_option("--status-every", o->status_every,
                   "seconds between progress lines of the running steps (0 = only start/finish)")
-      ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 86400.0));
   sub->add_flag("--resume", o->resume,
                 "keep the survey, graph, routes, drives and evaluations already in --out that "
                 "were made from the same seed, config, net and inputs (an interrupted run, or new "
@@ -195,21 +215,26 @@ void registerExperiment(CLI::App& app, Context& ctx) {
     std::string sizes;
     for (int n : o->sizes) sizes += (sizes.empty() ? "" : ",") + std::to_string(n);
     md << "# The paper's tables, reproduced\n\nCommand: `slamroute --seed " << ctx.cfg.seed
-       << (ctx.config_file.empty() ? std::string() : " --config " + ctx.config_file) << " experiment paper"
-       << (o->net.empty() || o->table3_only ? std::string() : " --net " + o->net) << " --out " << o->out
+       << (ctx.config_file.empty() ? std::string() : " --config " + ctx.config_file)
+       << " experiment paper"
+       << (o->net.empty() || o->table3_only ? std::string() : " --net " + o->net) << " --out "
+       << o->out
        << (o->table3_only ? std::string(" --table3-only") : " --seeds " + std::to_string(o->seeds))
        << " --sizes " << sizes << (o->resume ? " --resume" : "") << "`\n\n";
 
     if (!o->table3_only) {
-      const std::string net_path = fs::weakly_canonical(fs::absolute(o->net.empty() ? defaultNetPath() : o->net)).string();
+      const std::string net_path =
+          fs::weakly_canonical(fs::absolute(o->net.empty() ? defaultNetPath() : o->net)).string();
       md << "Net: `" << net_path << "`\n\n";
       runPaperPipeline(ctx, net_path, out, o->seeds, o->jobs, o->resume, o->status_every);
       md << paperTables12(out, o->seeds);
     }
 
     logInfo("[4/4] planning time vs graph size");
-    md << "## Table 3: planning time vs number of nodes (synthetic city graphs, seed " << ctx.cfg.seed << ")\n\n"
-       << "Paper (Q-learning / TSP): 50 nodes 19.28 s / 3.28 s, 100 nodes 31.25 s / 15.58 s, 500 nodes "
+    md << "## Table 3: planning time vs number of nodes (synthetic city graphs, seed "
+       << ctx.cfg.seed << ")\n\n"
+       << "Paper (Q-learning / TSP): 50 nodes 19.28 s / 3.28 s, 100 nodes 31.25 s / 15.58 s, 500 "
+          "nodes "
           "163.61 s / > 4000 s.\n\n"
        << table3(o->sizes, ctx.cfg.seed, ctx.cfg.rl);
     md << "\nTotal time: " << std::fixed << std::setprecision(0)

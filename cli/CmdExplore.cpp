@@ -34,14 +34,14 @@ void registerExplore(CLI::App& app, Context& ctx) {
     e.out_dir = o->out;
     e.start_edges = o->start;
     e.seed = ctx.cfg.seed;
-    const explore::ExploreResult r = explore::runExplore(e, ctx.cfg.explore, ctx.cfg.simulate.world,
-                                                         ctx.cfg.simulate.drive);
+    const explore::ExploreResult r =
+        explore::runExplore(e, ctx.cfg.explore, ctx.cfg.simulate.world, ctx.cfg.simulate.drive);
     for (const explore::Milestone& m : r.milestones) {
       char line[200];
       if (m.reached)
-        std::snprintf(line, sizeof line, "%3.0f %%: %.0f s, %.0f m (%.2f x the offline fleet bound)",
-                      100 * m.share, m.time_s, m.fleet_distance_m,
-                      m.fleet_distance_m / r.offline_bound_m);
+        std::snprintf(line, sizeof line,
+                      "%3.0f %%: %.0f s, %.0f m (%.2f x the offline fleet bound)", 100 * m.share,
+                      m.time_s, m.fleet_distance_m, m.fleet_distance_m / r.offline_bound_m);
       else
         std::snprintf(line, sizeof line, "%3.0f %%: not reached", 100 * m.share);
       std::cout << line << "\n";

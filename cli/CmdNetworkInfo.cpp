@@ -16,7 +16,8 @@ void registerNetworkInfo(CLI::App& app, Context& ctx) {
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* sub = app.add_subcommand("network-info", "Read a SUMO net and summarise its drivable graph");
+  auto* sub =
+      app.add_subcommand("network-info", "Read a SUMO net and summarise its drivable graph");
   sub->add_option("net", o->net, "SUMO network (.net.xml or .net.xml.gz)")->required();
   sub->add_flag("--json", o->json, "print JSON instead of text");
   sub->add_option("--geojson", o->geojson, "also export the drivable graph as GeoJSON");

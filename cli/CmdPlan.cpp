@@ -59,7 +59,8 @@ struct PlanOpts {
 
 void addPlanOptions(CLI::App* sub, PlanOpts& o) {
   auto* g_opt = sub->add_option("--graph", o.graph, "road graph (graph.json)");
-  auto* n_opt = sub->add_option("--net", o.net, "SUMO network (.net.xml[.gz]); also writes .rou.xml");
+  auto* n_opt =
+      sub->add_option("--net", o.net, "SUMO network (.net.xml[.gz]); also writes .rou.xml");
   g_opt->excludes(n_opt);
   sub->add_option("--planner", o.planner,
                   "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | "

@@ -34,7 +34,7 @@ std::vector<std::string> splitList(const std::string& s) {
 
 struct RunOpts {
   std::string net, out, planners = "qlearning,random,postman,aco-ga", geo_origin;
-  int vehicles = 1;                           ///< > 1: a fleet too (kFleetId)
+  int vehicles = 1;  ///< > 1: a fleet too (kFleetId)
   std::string fleet_planner = "partition";
   int jobs = 2;
   int slam_jobs = 0;
@@ -93,8 +93,10 @@ void driveAll(pipeline::StageRunner& stages, const pipeline::ChildOptions& child
               const pipeline::RunLayout& run, const std::string& net,
               const std::vector<std::string>& planners, const RunOpts& o) {
   std::vector<Step> steps;
-  for (const auto& p : planners) steps.push_back(pipeline::driveStep(child, run, net, p, o.save_scans));
-  if (o.vehicles > 1) steps.push_back(pipeline::fleetDriveStep(child, run, net, kFleetId, o.save_scans));
+  for (const auto& p : planners)
+    steps.push_back(pipeline::driveStep(child, run, net, p, o.save_scans));
+  if (o.vehicles > 1)
+    steps.push_back(pipeline::fleetDriveStep(child, run, net, kFleetId, o.save_scans));
   stages.run(steps, o.jobs);
 }
 
@@ -124,8 +126,10 @@ void writeReports(const ReportInputs& in, const std::string& geo_origin) {
   logInfo("report: " + (in.out / "report.md").string());
   try {  // the interactive page is an extra: a run whose page cannot be written still succeeds
     const std::string why = writeHtmlReport(in, geo_origin);
-    if (why.empty()) logInfo("report: " + (in.out / "report.html").string());
-    else logWarn(why);
+    if (why.empty())
+      logInfo("report: " + (in.out / "report.html").string());
+    else
+      logWarn(why);
   } catch (const std::exception& e) {
     logWarn("report.html not written: " + std::string(e.what()));
   }
@@ -144,7 +148,8 @@ void runPipeline(Context& ctx, const RunOpts& o) {
   if (planners.empty() && o.vehicles < 2)
     throw std::invalid_argument("run: --planners is empty (and no fleet: --vehicles 1)");
   fs::create_directories(run.logs());
-  const std::string net_abs = fs::weakly_canonical(fs::absolute(net_path)).string();  // one spelling per file, for --resume
+  const std::string net_abs =
+      fs::weakly_canonical(fs::absolute(net_path)).string();  // one spelling per file, for --resume
   const pipeline::ChildOptions child = childOptions(ctx);
   pipeline::StageRunner stages(o.resume, o.status_every);
 
@@ -168,8 +173,9 @@ void runPipeline(Context& ctx, const RunOpts& o) {
   in.graph_json = run.graph();
   in.planners = planners;
   if (o.vehicles > 1) in.fleet = kFleetId;
-  in.command = "slamroute run --net " + net_abs + " --out " + run.out.string() + " --planners '" + o.planners +
-               "'" + fleetArgs(o) + " --seed " + std::to_string(ctx.cfg.seed) + (o.resume ? " --resume" : "");
+  in.command = "slamroute run --net " + net_abs + " --out " + run.out.string() + " --planners '" +
+               o.planners + "'" + fleetArgs(o) + " --seed " + std::to_string(ctx.cfg.seed) +
+               (o.resume ? " --resume" : "");
   in.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   in.step_seconds = stages.times();
   writeReports(in, o.geo_origin);
@@ -179,24 +185,32 @@ void runPipeline(Context& ctx, const RunOpts& o) {
 
 void registerRun(CLI::App& app, Context& ctx) {
   auto o = std::make_shared<RunOpts>();
-  auto* sub = app.add_subcommand("run", "The whole pipeline on a net (default: the shipped city) + report.md");
-  sub->add_option("--net", o->net, "SUMO network (default: networks/default_city/default_city.net.xml)");
+  auto* sub = app.add_subcommand(
+      "run", "The whole pipeline on a net (default: the shipped city) + report.md");
+  sub->add_option("--net", o->net,
+                  "SUMO network (default: networks/default_city/default_city.net.xml)");
   sub->add_option("--out", o->out, "output folder (default: out/<net name>)");
-  sub->add_option("--planners", o->planners, "comma-separated planners to compare")->capture_default_str();
+  sub->add_option("--planners", o->planners, "comma-separated planners to compare")
+      ->capture_default_str();
   sub->add_option("--vehicles", o->vehicles,
                   "K > 1: also a fleet of K vehicles sharing the streets, driven in one SUMO "
                   "session, evaluated with its merged map (routes/fleet.json, drives/fleet/, "
                   "eval/fleet/); --planners '' runs the fleet alone")
-      ->capture_default_str()->check(CLI::Range(1, 64));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   sub->add_option("--fleet-planner", o->fleet_planner, "the fleet's planner: partition | postman")
-      ->capture_default_str()->check(CLI::IsMember({"partition", "postman"}));
+      ->capture_default_str()
+      ->check(CLI::IsMember({"partition", "postman"}));
   sub->add_option("--jobs", o->jobs, "steps run at once (each SUMO step is its own process)")
-      ->capture_default_str()->check(CLI::Range(1, 64));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   sub->add_option("--slam-jobs", o->slam_jobs,
                   "SLAM runs at once (0 = one per planner, sharing the cores: the stage ends when "
-                  "the total work is done, not when the longest route's queue is; a run peaks at ~0.7 GB for "
+                  "the total work is done, not when the longest route's queue is; a run peaks at "
+                  "~0.7 GB for "
                   "a 15 km drive, 2.8 GB for 75 km; fewer run at once when the memory is short)")
-      ->capture_default_str()->check(CLI::Range(0, 64));
+      ->capture_default_str()
+      ->check(CLI::Range(0, 64));
   sub->add_option("--geo-origin", o->geo_origin,
                   "LAT,LON: places a net without geo-reference (its centre there) for the routes' "
                   ".gpx / .kml")
@@ -204,7 +218,8 @@ void registerRun(CLI::App& app, Context& ctx) {
   sub->add_flag("--save-scans", o->save_scans, "keep every LiDAR scan on disk (KITTI .bin; large)");
   sub->add_option("--status-every", o->status_every,
                   "seconds between progress lines of the running steps (0 = only start/finish)")
-      ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 86400.0));
   sub->add_flag("--resume", o->resume,
                 "keep the steps already done in --out from the same seed, config, net and inputs "
                 "(an interrupted run; or delete eval/ to redo only the SLAM); the rest runs again");

@@ -22,20 +22,23 @@ struct SweepOpts {
 };
 
 std::string commandLine(const Context& ctx, const SweepOpts& o, int ranks) {
-  return (ranks > 1 ? "mpirun -n " + std::to_string(ranks) + " " : std::string()) + "slamroute --seed " +
-         std::to_string(ctx.cfg.seed) + (ctx.config_file.empty() ? "" : " --config " + ctx.config_file) + " sweep " +
-         o.spec + " --out " + o.out + " --jobs " + std::to_string(o.run.jobs_per_rank) +
+  return (ranks > 1 ? "mpirun -n " + std::to_string(ranks) + " " : std::string()) +
+         "slamroute --seed " + std::to_string(ctx.cfg.seed) +
+         (ctx.config_file.empty() ? "" : " --config " + ctx.config_file) + " sweep " + o.spec +
+         " --out " + o.out + " --jobs " + std::to_string(o.run.jobs_per_rank) +
          (o.run.resume ? " --resume" : "");
 }
 
 /// Rank 0: the study's tasks run to the end, then its results; throws when tasks failed.
-void scheduleStudy(Context& ctx, const SweepOpts& o, pipeline::Cluster& cluster, const fs::path& out) {
+void scheduleStudy(Context& ctx, const SweepOpts& o, pipeline::Cluster& cluster,
+                   const fs::path& out) {
   const pipeline::SweepSpec spec = pipeline::SweepSpec::readYaml(o.spec);  // before DIR exists
   const auto rows = spec.expand();
   fs::create_directories(out);
   auto tasks = pipeline::sweepTasks(spec, rows, out, childOptions(ctx));
-  logInfo("sweep: " + std::to_string(rows.size()) + " runs, " + std::to_string(tasks.size()) + " tasks on " +
-          std::to_string(cluster.size()) + " rank(s), " + std::to_string(o.run.jobs_per_rank) + " at once each");
+  logInfo("sweep: " + std::to_string(rows.size()) + " runs, " + std::to_string(tasks.size()) +
+          " tasks on " + std::to_string(cluster.size()) + " rank(s), " +
+          std::to_string(o.run.jobs_per_rank) + " at once each");
   const pipeline::SweepOutcome outcome = pipeline::scheduleSweep(cluster, std::move(tasks), o.run);
   pipeline::writeSweepResults(pipeline::collectResults(rows, outcome, out), outcome, out,
                               commandLine(ctx, o, cluster.size()));
@@ -44,8 +47,10 @@ void scheduleStudy(Context& ctx, const SweepOpts& o, pipeline::Cluster& cluster,
   for (const auto& s : outcome.status) failed += s.state != pipeline::TaskState::Done;
   if (outcome.interrupted_by != 0)
     throw pipeline::Interrupted(outcome.interrupted_by,
-                                std::string("sweep interrupted by ") + strsignal(outcome.interrupted_by) +
-                                    "; " + std::to_string(failed) + " task(s) not finished (--resume "
+                                std::string("sweep interrupted by ") +
+                                    strsignal(outcome.interrupted_by) + "; " +
+                                    std::to_string(failed) +
+                                    " task(s) not finished (--resume "
                                     "continues from the tasks that finished)");
   if (failed > 0)
     throw std::runtime_error("sweep: " + std::to_string(failed) + " task(s) failed or not run (" +
@@ -69,7 +74,8 @@ void runSweep(Context& ctx, const SweepOpts& o) {
 
 void registerSweep(CLI::App& app, Context& ctx) {
   auto o = std::make_shared<SweepOpts>();
-  auto* sub = app.add_subcommand("sweep", "A study (nets x planners x seeds x configs) over MPI ranks or --jobs");
+  auto* sub = app.add_subcommand(
+      "sweep", "A study (nets x planners x seeds x configs) over MPI ranks or --jobs");
   sub->add_option("spec", o->spec, "study spec (YAML: nets, planners, seeds, variants, rows)")
       ->required()
       ->check(CLI::ExistingFile);

@@ -13,9 +13,9 @@
 namespace slamroute::cli {
 
 struct Context {
-  std::string config_file;             ///< --config FILE.yaml
-  std::optional<std::uint64_t> seed;   ///< --seed N (overrides the config's seed)
-  std::string log_level = "info";      ///< --log-level
+  std::string config_file;            ///< --config FILE.yaml
+  std::optional<std::uint64_t> seed;  ///< --seed N (overrides the config's seed)
+  std::string log_level = "info";     ///< --log-level
   AppConfig cfg;
   /// Loads the config file (if any), applies --seed and --log-level. Call first in callbacks.
   void load();

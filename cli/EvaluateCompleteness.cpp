@@ -22,13 +22,13 @@ void addMapCompleteness(const fs::path& drive, const ScanSource& scans, const fs
   const std::vector<bool> mask = explore::streetMask(grid, g, cfg.completeness_radius_m);
   const explore::MapCompleteness m = explore::mapCompleteness(grid, mask, cfg.gp);
   r.map_completeness = evaluate::MapCompletenessFigures{
-      cfg.completeness_radius_m, static_cast<long long>(m.cells), m.unknown_share,
-      m.frontier_share, m.mean_frontier_probability};
+      cfg.completeness_radius_m, static_cast<long long>(m.cells), m.unknown_share, m.frontier_share,
+      m.mean_frontier_probability};
   explore::writeFrontierProbabilityPng(out / kFrontierPng, grid, mask, cfg.gp);
   evaluate::writeEvaluationJson(out / "metrics.json", r);
-  logInfo("evaluate: map completeness near the streets: " +
-          std::to_string(100.0 * m.unknown_share) + " % unknown, " +
-          std::to_string(100.0 * m.frontier_share) + " % frontier");
+  logInfo(
+      "evaluate: map completeness near the streets: " + std::to_string(100.0 * m.unknown_share) +
+      " % unknown, " + std::to_string(100.0 * m.frontier_share) + " % frontier");
 }
 
 }  // namespace slamroute::cli

@@ -9,8 +9,8 @@
 namespace slamroute::cli {
 
 /// Evaluates one drive folder into an output folder (the single-drive evaluation).
-using EvaluateOne = std::function<void(const std::filesystem::path& drive,
-                                       const std::filesystem::path& out)>;
+using EvaluateOne =
+    std::function<void(const std::filesystem::path& drive, const std::filesystem::path& out)>;
 
 /// OUT/vehicle_K: vehicle K's evaluation, made by `evaluate_one` (kept as it is when
 /// `keep_vehicles` and OUT/vehicle_K/metrics.json exists); then the fleet merge and its files in

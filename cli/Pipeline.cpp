@@ -7,7 +7,8 @@ pipeline::ChildOptions childOptions(const Context& ctx) {
   pipeline::ChildOptions o;
   o.seed = ctx.cfg.seed;
   o.debug_log = ctx.log_level == "debug";
-  if (!ctx.config_file.empty()) o.config_file = fs::weakly_canonical(fs::absolute(ctx.config_file)).string();
+  if (!ctx.config_file.empty())
+    o.config_file = fs::weakly_canonical(fs::absolute(ctx.config_file)).string();
   return o;
 }
 

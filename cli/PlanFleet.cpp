@@ -44,8 +44,10 @@ void writeFleetFiles(const FleetRoute& f, const std::filesystem::path& out, bool
   rou.replace_extension(".rou.xml");
   AtomicFileSet files;
   f.writeJson(files.staged(out));
-  if (with_rou) f.writeRouXml(files.staged(rou));
-  else files.dropAtCommit(rou);
+  if (with_rou)
+    f.writeRouXml(files.staged(rou));
+  else
+    files.dropAtCommit(rou);
   for (const auto& crew : exports::crewFilePaths(out)) files.dropAtCommit(crew);
   files.commit();
 }
@@ -53,13 +55,14 @@ void writeFleetFiles(const FleetRoute& f, const std::filesystem::path& out, bool
 void printSummary(const FleetRoute& f, const std::filesystem::path& out, bool with_rou) {
   std::cout << std::fixed << std::setprecision(2) << f.strategy << ": " << f.vehicles.size()
             << " vehicles, makespan " << f.makespan_m / 1000.0 << " km (lower bound "
-            << f.lower_bound_m / 1000.0 << " km, x" << f.makespan_m / f.lower_bound_m
-            << "), total " << f.total_length_m / 1000.0 << " km (single route "
-            << f.single_route_m / 1000.0 << " km), balance " << f.balance << ", coverage "
-            << std::setprecision(1) << f.edge_coverage_pct << " %, " << std::setprecision(2)
-            << f.planning_seconds << " s\nwrote " << out.string()
-            << (with_rou ? " and " + std::filesystem::path(out).replace_extension(".rou.xml").string()
-                         : "")
+            << f.lower_bound_m / 1000.0 << " km, x" << f.makespan_m / f.lower_bound_m << "), total "
+            << f.total_length_m / 1000.0 << " km (single route " << f.single_route_m / 1000.0
+            << " km), balance " << f.balance << ", coverage " << std::setprecision(1)
+            << f.edge_coverage_pct << " %, " << std::setprecision(2) << f.planning_seconds
+            << " s\nwrote " << out.string()
+            << (with_rou
+                    ? " and " + std::filesystem::path(out).replace_extension(".rou.xml").string()
+                    : "")
             << "\n";
 }
 
@@ -79,7 +82,8 @@ void planFleetCommand(const Context& ctx, const RoadGraph& g, rl::Config cfg,
   bool with_rou = true;
   for (const Route& r : f.vehicles) with_rou = with_rou && !r.sumo_edges.empty();
   if (from_net && !with_rou)
-    throw std::runtime_error("plan: a vehicle's route has no SUMO edges; cannot write the .rou.xml");
+    throw std::runtime_error(
+        "plan: a vehicle's route has no SUMO edges; cannot write the .rou.xml");
   writeFleetFiles(f, out, with_rou);
   printSummary(f, out, with_rou);
 }

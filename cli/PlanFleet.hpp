@@ -10,9 +10,9 @@
 namespace slamroute::cli {
 
 struct FleetPlanOptions {
-  int vehicles = 0;     ///< --vehicles (0: rl.fleet.vehicles)
-  std::string depot;    ///< --depot EDGE: one depot for all
-  std::string depots;   ///< --depots E1,E2,..: one per vehicle
+  int vehicles = 0;    ///< --vehicles (0: rl.fleet.vehicles)
+  std::string depot;   ///< --depot EDGE: one depot for all
+  std::string depots;  ///< --depots E1,E2,..: one per vehicle
 };
 
 /// True when the request is for a fleet: K > 1, a depot option, or the planner `partition`.

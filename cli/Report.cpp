@@ -49,8 +49,7 @@ void writeReport(const ReportInputs& in) {
        {writeHeaderSection, writeRoadGraphSection, writeResultsSection, writeUncertaintySection,
         writeCoverageVsPostmanSection, writePlannerPicturesSection, writeFleetPlanSection,
         writeFleetResultsSection, writeWeightVsDriftSection, writeDriftByStreetKindSection,
-        writeMapCompletenessSection,
-        writeStepTimesSection})
+        writeMapCompletenessSection, writeStepTimesSection})
     section(md, data);
   writeFileAtomic(in.out / "report.md", md.str());
 }

@@ -16,7 +16,8 @@ void writeMapCompletenessSection(std::ostringstream& md, const ReportData& data)
   double radius_m = 0.0;
   for (const auto& p : data.in.planners) {
     const fs::path ev = data.in.out / "eval" / p;
-    const json m = pipeline::readJsonIfPresent(ev / "metrics.json").value("map_completeness", json());
+    const json m =
+        pipeline::readJsonIfPresent(ev / "metrics.json").value("map_completeness", json());
     if (!m.is_object()) continue;
     radius_m = m.value("street_radius_m", 0.0);
     rows << "| " << p << " | " << reportNumber(m, "unknown_share", 1, 100.0) << " | "

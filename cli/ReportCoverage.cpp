@@ -13,8 +13,8 @@ namespace {
 
 /// a[field] / p[field] with 3 decimals; "–" when either is missing or p's is not positive.
 std::string ratio(const json& a, const json& p, const std::string& field) {
-  if (!a.contains(field) || !p.contains(field) || !a[field].is_number() ||
-      !p[field].is_number() || p[field].get<double>() <= 0)
+  if (!a.contains(field) || !p.contains(field) || !a[field].is_number() || !p[field].is_number() ||
+      p[field].get<double>() <= 0)
     return "–";
   return reportNumber(a[field].get<double>() / p[field].get<double>(), 3);
 }

@@ -73,16 +73,17 @@ void vehicleTable(std::ostringstream& md, const ReportData& data, const FleetRou
   const json vs = fm.value("vehicles", json::array());
   for (std::size_t k = 0; k < f.vehicles.size(); ++k) {
     const json v = k < vs.size() ? vs[k] : json::object();
-    md << "| " << FleetRoute::vehicleId(k) << " | " << reportNumber(f.vehicles[k].length_m / 1000.0, 2)
-       << " | " << driveCells(info, k) << " | " << reportNumber(v, "own_ate_rmse_m", 3) << " | "
-       << reportNumber(v, "common_ate_before_m", 3) << " | "
-       << reportNumber(v, "common_ate_after_m", 3) << " | " << reportNumber(v, "completeness_pct", 1)
-       << " |\n";
+    md << "| " << FleetRoute::vehicleId(k) << " | "
+       << reportNumber(f.vehicles[k].length_m / 1000.0, 2) << " | " << driveCells(info, k) << " | "
+       << reportNumber(v, "own_ate_rmse_m", 3) << " | " << reportNumber(v, "common_ate_before_m", 3)
+       << " | " << reportNumber(v, "common_ate_after_m", 3) << " | "
+       << reportNumber(v, "completeness_pct", 1) << " |\n";
   }
   md << "| merged map | " << reportNumber(f.total_length_m / 1000.0, 2) << " | – | "
      << (info ? reportNumber(info->makespanSeconds(), 0) : "–") << " | – | "
-     << reportNumber(fm, "common_ate_before_m", 3) << " | " << reportNumber(fm, "common_ate_after_m", 3)
-     << " | " << reportNumber(fm, "completeness_pct", 1) << " |\n\n";
+     << reportNumber(fm, "common_ate_before_m", 3) << " | "
+     << reportNumber(fm, "common_ate_after_m", 3) << " | "
+     << reportNumber(fm, "completeness_pct", 1) << " |\n\n";
 }
 
 /// The merged map's accuracy as built and aligned, the closures that joined it, its picture.
@@ -100,8 +101,9 @@ void mergedMapPart(std::ostringstream& md, const ReportData& data, const json& f
      << "| share farther than the clamp (" << clamp << " m) as built / aligned [%] | "
      << reportNumber(fm, "map_far_share", 1, 100.0) << " / "
      << reportNumber(fm, "map_aligned_far_share", 1, 100.0) << " |\n"
-     << "| street facades covered by the merged map [%] | " << reportNumber(fm, "completeness_pct", 1)
-     << " |\n| map points | " << reportNumber(fm, "map_points", 0) << " |\n\n";
+     << "| street facades covered by the merged map [%] | "
+     << reportNumber(fm, "completeness_pct", 1) << " |\n| map points | "
+     << reportNumber(fm, "map_points", 0) << " |\n\n";
   const fs::path png = data.in.out / "eval" / data.in.fleet / "merged_map_error_top.png";
   if (fs::exists(png))
     md << "![merged map from above](eval/" << data.in.fleet << "/merged_map_error_top.png)\n\n";
@@ -129,8 +131,8 @@ void writeFleetResultsSection(std::ostringstream& md, const ReportData& data) {
   const fs::path drive = data.in.out / "drives" / data.in.fleet;
   std::optional<FleetDriveInfo> info;
   if (FleetDriveInfo::isFleetFolder(drive)) info = FleetDriveInfo::read(drive);
-  const json fm = pipeline::readJsonIfPresent(data.in.out / "eval" / data.in.fleet /
-                                              pipeline::kFleetMetrics);
+  const json fm =
+      pipeline::readJsonIfPresent(data.in.out / "eval" / data.in.fleet / pipeline::kFleetMetrics);
   md << "### Fleet: SLAM per vehicle and the merged map\n\n"
      << "All vehicles drove at once in one SUMO session. ATE alone: each vehicle's SLAM aligned "
         "to its ground truth by itself; one alignment for all: the fleet's trajectories under "

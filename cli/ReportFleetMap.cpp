@@ -104,7 +104,8 @@ void renderFleetRoutesPng(const std::filesystem::path& path, const RoadGraph& gr
   }
   drawLegend(img, vehicle_edges.size());
   std::vector<uchar> png;
-  if (!cv::imencode(".png", img, png)) throw std::runtime_error(path.string() + ": PNG encoding failed");
+  if (!cv::imencode(".png", img, png))
+    throw std::runtime_error(path.string() + ": PNG encoding failed");
   writeFileAtomic(path, std::string(png.begin(), png.end()));
 }
 

@@ -100,8 +100,8 @@ void coverageTable(std::ostringstream& md, const ReportData& data) {
        << reportNumber(d, "length_pct", 1) << " | " << reportNumber(md_cov, "edges_pct", 1) << " | "
        << reportNumber(r, "edge_coverage_pct", 1) << " | " << reportNumber(r, "length_m", 2, 1e-3)
        << " | " << reportNumber(l, "total_m", 2, 1e-3) << " ("
-       << reportNumber(l, "in_junctions_m", 2, 1e-3) << ") | " << reportNumber(ml, "total_m", 2, 1e-3)
-       << " |\n";
+       << reportNumber(l, "in_junctions_m", 2, 1e-3) << ") | "
+       << reportNumber(ml, "total_m", 2, 1e-3) << " |\n";
   }
   md << "\n";
 }
@@ -142,7 +142,8 @@ void writeRoadGraphSection(std::ostringstream& md, const ReportData& data) {
 void writeResultsSection(std::ostringstream& md, const ReportData& data) {
   md << "## Routes and SLAM results (paper §3.2, §3.3)\n\n";
   coverageTable(md, data);
-  md << "| planner | route length [km] | two-way graph coverage [%] | node coverage [%] | predicted loop "
+  md << "| planner | route length [km] | two-way graph coverage [%] | node coverage [%] | "
+        "predicted loop "
         "closures | predicted final log-det cov | planning [s] | ATE RMSE [m] | ATE mean [m] | RPE "
         "[%] | loop closures found | map points: median distance to the world [m] / share farther "
         "than the clamp [%] | the same, map aligned like the ATE |\n"

@@ -45,7 +45,8 @@ void writeCoverageVsPostmanSection(std::ostringstream& md, const ReportData& dat
 void writePlannerPicturesSection(std::ostringstream& md, const ReportData& data);
 void writeWeightVsDriftSection(std::ostringstream& md, const ReportData& data);
 void writeDriftByStreetKindSection(std::ostringstream& md, const ReportData& data);
-void writeMapCompletenessSection(std::ostringstream& md, const ReportData& data);  // ReportCompleteness.cpp
+void writeMapCompletenessSection(std::ostringstream& md,
+                                 const ReportData& data);  // ReportCompleteness.cpp
 void writeStepTimesSection(std::ostringstream& md, const ReportData& data);
 
 /// `v` with `prec` decimals; "–" when not finite.

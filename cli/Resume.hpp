@@ -6,6 +6,6 @@
 namespace slamroute::cli {
 using pipeline::fileHash;
 using pipeline::folderHash;
-using pipeline::stepsToRun;
 using pipeline::stepStamp;
+using pipeline::stepsToRun;
 }  // namespace slamroute::cli

@@ -22,18 +22,29 @@
 namespace slamroute::test {
 
 inline std::string mutate(std::string s, std::mt19937_64& rng) {
-  static const char* const kNumbers[] = {"nan", "inf", "-inf", "-1", "0", "1e308", "-1e308",
-                                         "1e400", "18446744073709551616", "1e8", "", "-0"};
+  static const char* const kNumbers[] = {
+      "nan", "inf", "-inf", "-1", "0", "1e308", "-1e308", "1e400", "18446744073709551616",
+      "1e8", "",    "-0"};
   auto pick = [&](std::size_t n) { return n == 0 ? 0 : static_cast<std::size_t>(rng() % n); };
   const int edits = 1 + static_cast<int>(rng() % 3);
   for (int e = 0; e < edits && !s.empty(); ++e) {
     const std::size_t at = pick(s.size()), len = 1 + pick(std::min<std::size_t>(64, s.size() - at));
     switch (rng() % 7) {
-      case 0: s[at] = static_cast<char>(rng()); break;
-      case 1: s.insert(at, 1, static_cast<char>(rng())); break;
-      case 2: s.erase(at, len); break;
-      case 3: s.insert(at, s.substr(at, len)); break;
-      case 4: s.resize(at); break;
+      case 0:
+        s[at] = static_cast<char>(rng());
+        break;
+      case 1:
+        s.insert(at, 1, static_cast<char>(rng()));
+        break;
+      case 2:
+        s.erase(at, len);
+        break;
+      case 3:
+        s.insert(at, s.substr(at, len));
+        break;
+      case 4:
+        s.resize(at);
+        break;
       case 5: {  // swap two lines
         std::vector<std::string> lines;
         std::size_t from = 0;
@@ -98,19 +109,22 @@ inline void fuzzReader(const std::string& base, const std::filesystem::path& pat
   ::close(fds[1]);
   std::string outcomes;
   char buf[256];
-  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) outcomes.append(buf, static_cast<std::size_t>(n));
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;)
+    outcomes.append(buf, static_cast<std::size_t>(n));
   ::close(fds[0]);
   int status = 0;
   ::waitpid(pid, &status, 0);
   const std::string where = "seed " + std::to_string(seed) + ", mutant ";
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
-      << where << outcomes.size() << ": killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0)
+      << where << outcomes.size() << ": killed by signal "
+      << (WIFSIGNALED(status) ? WTERMSIG(status) : 0)
       << (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? " (hang)" : "");
   ASSERT_EQ(outcomes.size(), static_cast<std::size_t>(count));
   for (std::size_t i = 0; i < outcomes.size(); ++i)
     ASSERT_TRUE(outcomes[i] == kAccepted || outcomes[i] == kRejected)
-        << where << i << (outcomes[i] == kUnnamed ? ": error message is not one line naming the file"
-                                                  : ": not a std::exception");
+        << where << i
+        << (outcomes[i] == kUnnamed ? ": error message is not one line naming the file"
+                                    : ": not a std::exception");
   // Some mutants keep the file valid (a changed digit): the reader is really exercised both ways.
   const auto accepted = std::count(outcomes.begin(), outcomes.end(), kAccepted);
   EXPECT_GT(accepted, 0);

@@ -2,8 +2,8 @@
 // Scratch folders for tests. ctest runs every test in its own process, two at a time
 // (-j2), so two tests of one suite may run at once: each test writes only below its own
 // folder, build/test_tmp/<Suite>.<Test>/, which it clears when it first asks for it.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <filesystem>
 #include <string>

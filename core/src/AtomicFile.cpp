@@ -2,11 +2,11 @@
 
 #include <zlib.h>
 
+#include <unistd.h>
 #include <atomic>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace slamroute {
 namespace fs = std::filesystem;
@@ -23,7 +23,8 @@ void ensureParent(const fs::path& path) {
   if (path.has_parent_path() && !path.parent_path().empty()) {
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
-    if (ec) throw std::runtime_error(path.string() + ": cannot create folder (" + ec.message() + ")");
+    if (ec)
+      throw std::runtime_error(path.string() + ": cannot create folder (" + ec.message() + ")");
   }
 }
 
@@ -106,7 +107,8 @@ AtomicFileSet::~AtomicFileSet() {
 std::string readFile(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw std::runtime_error(path.string() + ": file not found");
-  if (fs::is_directory(path, ec)) throw std::runtime_error(path.string() + ": is a folder, not a file");
+  if (fs::is_directory(path, ec))
+    throw std::runtime_error(path.string() + ": is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path.string() + ": cannot open for reading");
   std::ostringstream ss;

@@ -35,7 +35,8 @@ DriveGraph DriveGraph::fromNet(const SumoNet& net) {
     dg.edges.push_back({u, v, e.id, de.length_m});
   }
   if (dg.edges.empty())
-    throw std::invalid_argument(net.source.string() + ": the net has no edge open to passenger cars");
+    throw std::invalid_argument(net.source.string() +
+                                ": the net has no edge open to passenger cars");
 
   dg.allowed_next.assign(dg.edges.size(), {});
   for (std::size_t i = 0; i < dg.edges.size(); ++i) {

@@ -65,10 +65,8 @@ void FleetDriveInfo::write(const fs::path& dir) const {
                   {"arrive_s", v.arrive_s},
                   {"duration_s", v.arrive_s - v.depart_s},
                   {"frames", v.frames}});
-  const json j = {{"net", net},
-                  {"seed", seed},
-                  {"vehicles", vs},
-                  {"makespan_s", makespanSeconds()}};
+  const json j = {
+      {"net", net}, {"seed", seed}, {"vehicles", vs}, {"makespan_s", makespanSeconds()}};
   writeFileAtomic(dir / kFleetDriveInfo, j.dump(2) + "\n");
 }
 

@@ -67,7 +67,8 @@ FleetRoute FleetRoute::readJson(const std::filesystem::path& path) {
     if (j.contains("fleet")) readSummary(j.at("fleet"), f);
     for (const json& v : j.at("vehicles")) f.vehicles.push_back(detail::routeFromJsonObject(v));
   } catch (const json::exception& e) {
-    throw std::invalid_argument(name + ": malformed fleet route (" + detail::jsonErrorText(e) + ")");
+    throw std::invalid_argument(name + ": malformed fleet route (" + detail::jsonErrorText(e) +
+                                ")");
   }
   if (f.vehicles.empty()) throw std::invalid_argument(name + ": the fleet has no vehicle");
   for (std::size_t i = 0; i < f.vehicles.size(); ++i)

@@ -51,8 +51,10 @@ std::vector<int> assignRows(const Matrix& a) {
         if (minv[j] < delta) delta = minv[j], j1 = j;
       }
       for (std::size_t j = 0; j <= m; ++j) {
-        if (used[j]) u[rowOfCol[j]] += delta, v[j] -= delta;
-        else minv[j] -= delta;
+        if (used[j])
+          u[rowOfCol[j]] += delta, v[j] -= delta;
+        else
+          minv[j] -= delta;
       }
       j0 = j1;
     } while (rowOfCol[j0] != 0);

@@ -39,7 +39,8 @@ inline void requireFiniteNumbers(const nlohmann::json& j, const std::string& whe
     throw std::invalid_argument(where + ": " + (key.empty() ? "a value" : key) +
                                 " is not a finite number; not written");
   if (j.is_object())
-    for (const auto& [k, v] : j.items()) requireFiniteNumbers(v, where, key.empty() ? k : key + "." + k);
+    for (const auto& [k, v] : j.items())
+      requireFiniteNumbers(v, where, key.empty() ? k : key + "." + k);
   if (j.is_array())
     for (std::size_t i = 0; i < j.size(); ++i)
       requireFiniteNumbers(j[i], where, key + "[" + std::to_string(i) + "]");

@@ -10,9 +10,7 @@ namespace slamroute {
 namespace {
 
 /// Uniform in [0, 1) from the generator's top 53 bits.
-double uniform01(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 std::vector<double> weightsOf(const std::vector<Point2>& points, const KMeansOptions& o) {
   if (o.weight.empty()) return std::vector<double>(points.size(), 1.0);
@@ -38,8 +36,8 @@ std::size_t drawProportional(const std::vector<double>& p, std::mt19937_64& rng)
   return 0;
 }
 
-std::vector<Point2> seedCentres(const std::vector<Point2>& pts, const std::vector<double>& w,
-                                int k, std::mt19937_64& rng) {
+std::vector<Point2> seedCentres(const std::vector<Point2>& pts, const std::vector<double>& w, int k,
+                                std::mt19937_64& rng) {
   std::vector<Point2> centres{pts[drawProportional(w, rng)]};
   std::vector<double> d2(pts.size(), std::numeric_limits<double>::infinity());
   while (static_cast<int>(centres.size()) < k) {
@@ -67,7 +65,8 @@ void updateCentres(const std::vector<Point2>& pts, const std::vector<double>& w,
   const std::size_t k = centres.size();
   std::vector<Point2> sum(k, Point2::Zero());
   std::vector<double> mass(k, 0.0);
-  for (std::size_t i = 0; i < pts.size(); ++i) sum[label[i]] += w[i] * pts[i], mass[label[i]] += w[i];
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    sum[label[i]] += w[i] * pts[i], mass[label[i]] += w[i];
   for (std::size_t c = 0; c < k; ++c) {
     if (mass[c] > 0.0) {
       centres[c] = sum[c] / mass[c];

@@ -1,5 +1,6 @@
 #include "slamroute/core/Log.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -7,7 +8,6 @@
 #include <iostream>
 #include <mutex>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace slamroute {
 namespace {
@@ -39,21 +39,26 @@ void logWarn(const std::string& msg) { emit(LogLevel::Warn, "warning: ", msg); }
 void logError(const std::string& msg) { emit(LogLevel::Error, "error: ", msg); }
 
 Progress::Progress(std::string label, std::size_t total)
-    : label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()),
+    : label_(std::move(label)),
+      total_(total),
+      start_(std::chrono::steady_clock::now()),
       last_(start_) {}
 
 std::string formatDuration(double secs) {
   char buf[32];
   if (!std::isfinite(secs) || secs < 0) return "?";
   const long s = std::lround(secs);
-  if (s < 60) std::snprintf(buf, sizeof(buf), "%lds", s);
-  else if (s < 3600) std::snprintf(buf, sizeof(buf), "%ldm%02lds", s / 60, s % 60);
-  else std::snprintf(buf, sizeof(buf), "%ldh%02ldm", s / 3600, (s % 3600) / 60);
+  if (s < 60)
+    std::snprintf(buf, sizeof(buf), "%lds", s);
+  else if (s < 3600)
+    std::snprintf(buf, sizeof(buf), "%ldm%02lds", s / 60, s % 60);
+  else
+    std::snprintf(buf, sizeof(buf), "%ldh%02ldm", s / 3600, (s % 3600) / 60);
   return buf;
 }
 
-std::string progressBar(const std::string& label, std::size_t done, std::size_t total,
-                        double secs, int width) {
+std::string progressBar(const std::string& label, std::size_t done, std::size_t total, double secs,
+                        int width) {
   const double frac =
       total ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 1.0;
   const int filled = static_cast<int>(frac * width);
@@ -61,9 +66,10 @@ std::string progressBar(const std::string& label, std::size_t done, std::size_t 
   const double left = rate > 0 ? static_cast<double>(total - std::min(done, total)) / rate : NAN;
   char buf[160];
   // Three significant digits, never an exponent: "0.25/s", "25/s", "15873/s".
-  std::snprintf(buf, sizeof(buf), rate >= 100 ? "] %5.1f%% %zu/%zu  %.0f/s  %s left"
-                                              : "] %5.1f%% %zu/%zu  %.3g/s  %s left",
-                100.0 * frac, done, total, rate, done ? formatDuration(left).c_str() : "?");
+  std::snprintf(
+      buf, sizeof(buf),
+      rate >= 100 ? "] %5.1f%% %zu/%zu  %.0f/s  %s left" : "] %5.1f%% %zu/%zu  %.3g/s  %s left",
+      100.0 * frac, done, total, rate, done ? formatDuration(left).c_str() : "?");
   return label + " [" + std::string(static_cast<std::size_t>(filled), '#') +
          std::string(static_cast<std::size_t>(width - filled), '.') + buf;
 }

@@ -20,7 +20,8 @@ WheelOdometry::WheelOdometry(std::vector<OdometrySample> samples) : samples_(std
     if (!std::isfinite(s.t) || !std::isfinite(s.speed_mps) || !std::isfinite(s.yaw_rate_rad_s))
       throw std::invalid_argument("odometry sample " + std::to_string(i) + " is not finite");
     if (std::isfinite(s.roll_rad) != std::isfinite(s.pitch_rad))
-      throw std::invalid_argument("odometry sample " + std::to_string(i) + " has roll or pitch but not both");
+      throw std::invalid_argument("odometry sample " + std::to_string(i) +
+                                  " has roll or pitch but not both");
     if (i > 0 && !(s.t > samples_[i - 1].t))
       throw std::invalid_argument("odometry sample " + std::to_string(i) + ": times must increase");
   }
@@ -37,7 +38,9 @@ const OdometrySample& WheelOdometry::sampleAt(double t) const {
   return *it;
 }
 
-double WheelOdometry::yawRate(double t) const { return samples_.empty() ? 0.0 : sampleAt(t).yaw_rate_rad_s; }
+double WheelOdometry::yawRate(double t) const {
+  return samples_.empty() ? 0.0 : sampleAt(t).yaw_rate_rad_s;
+}
 
 std::optional<Attitude> WheelOdometry::attitude(double t) const {
   if (samples_.empty() || !sampleAt(t).hasAttitude()) return std::nullopt;
@@ -86,7 +89,8 @@ GyroBiasResult removeStandstillGyroBias(const WheelOdometry& odo, double standst
   for (std::size_t k = 0; k < n; ++k) {
     while (hi < n && out[hi].t <= out[k].t + margin_s) fast += isFast(hi++);
     while (out[lo].t < out[k].t - margin_s) fast -= isFast(lo++);
-    still[k] = fast == 0 && out[k].t - margin_s >= out.front().t && out[k].t + margin_s <= out.back().t;
+    still[k] =
+        fast == 0 && out[k].t - margin_s >= out.front().t && out[k].t + margin_s <= out.back().t;
   }
   // Causal: sample k uses the standstill samples already confirmed (margin_s behind it).
   // The bias is averaged over the raw readings (`out` is corrected as k advances).
@@ -142,14 +146,15 @@ WheelOdometry readOdometryCsv(const std::filesystem::path& path) {
 
 void writeOdometryCsv(const std::filesystem::path& path, const WheelOdometry& odo) {
   std::ostringstream os;
-  const bool tilt = !odo.empty() && std::all_of(odo.samples().begin(), odo.samples().end(),
-                                                [](const OdometrySample& s) { return s.hasAttitude(); });
+  const bool tilt =
+      !odo.empty() && std::all_of(odo.samples().begin(), odo.samples().end(),
+                                  [](const OdometrySample& s) { return s.hasAttitude(); });
   os << (tilt ? "t,speed_mps,yaw_rate_rad_s,roll_rad,pitch_rad\n" : "t,speed_mps,yaw_rate_rad_s\n");
   char buf[128];
   for (const auto& s : odo.samples()) {
     if (tilt)
-      std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f,%.7f,%.7f\n", s.t, s.speed_mps, s.yaw_rate_rad_s, s.roll_rad,
-                    s.pitch_rad);
+      std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f,%.7f,%.7f\n", s.t, s.speed_mps,
+                    s.yaw_rate_rad_s, s.roll_rad, s.pitch_rad);
     else
       std::snprintf(buf, sizeof buf, "%.4f,%.5f,%.7f\n", s.t, s.speed_mps, s.yaw_rate_rad_s);
     os << buf;

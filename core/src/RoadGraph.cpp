@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "JsonFile.hpp"
-#include "slamroute/core/Coordinates.hpp"
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/Coordinates.hpp"
 #include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/core/SumoNet.hpp"
 
@@ -57,18 +57,20 @@ void RoadGraph::validate(const std::string& where) const {
     if (e.u < 0 || e.u >= n || e.v < 0 || e.v >= n)
       throw std::invalid_argument(where + ": edge " + std::to_string(i) + " names a missing node");
     if (!(e.length_m >= 0.0) || !(e.length_m <= kMaxCoordinateM) || !std::isfinite(e.weight))
-      throw std::invalid_argument(where + ": edge " + std::to_string(i) + " has a bad length or weight");
+      throw std::invalid_argument(where + ": edge " + std::to_string(i) +
+                                  " has a bad length or weight");
     for (const Point3& p : e.polyline)
       if (!plausibleCoordinate(p.x()) || !plausibleCoordinate(p.y()) || !plausibleCoordinate(p.z()))
-        throw std::invalid_argument(where + ": edge " + std::to_string(i) + " polyline: " +
-                                    kCoordinateRule);
+        throw std::invalid_argument(where + ": edge " + std::to_string(i) +
+                                    " polyline: " + kCoordinateRule);
   }
   if (restricted_turns) {
     if (allowed_next.size() != edges.size())
       throw std::invalid_argument(where + ": turn table size differs from the edge count");
     for (int i = 0; i < m; ++i)
       for (int nx : allowed_next[static_cast<std::size_t>(i)])
-        if (nx < 0 || nx >= m || edges[static_cast<std::size_t>(nx)].u != edges[static_cast<std::size_t>(i)].v)
+        if (nx < 0 || nx >= m ||
+            edges[static_cast<std::size_t>(nx)].u != edges[static_cast<std::size_t>(i)].v)
           throw std::invalid_argument(where + ": turn from edge " + std::to_string(i) +
                                       " to edge " + std::to_string(nx) + " is not a turn");
   }
@@ -122,13 +124,15 @@ RoadGraph RoadGraph::fromSumoNet(const SumoNet& net, bool lscc_only) {
   for (std::size_t i = 0; i < dg.numEdges(); ++i) {
     if (edge_of[i] < 0) continue;
     for (std::size_t nx : dg.allowed_next[i])
-      if (edge_of[nx] >= 0) g.allowed_next[static_cast<std::size_t>(edge_of[i])].push_back(edge_of[nx]);
+      if (edge_of[nx] >= 0)
+        g.allowed_next[static_cast<std::size_t>(edge_of[i])].push_back(edge_of[nx]);
   }
-  g.metadata_json = json{{"source", "sumo-net"},
-                         {"net", net.source.string()},
-                         {"largest_scc_only", lscc_only},
-                         {"dropped_edges", dropped}}
-                        .dump();
+  g.metadata_json = json{
+      {"source", "sumo-net"},
+      {"net", net.source.string()},
+      {"largest_scc_only", lscc_only},
+      {"dropped_edges",
+       dropped}}.dump();
   return g;
 }
 
@@ -158,7 +162,8 @@ RoadGraph RoadGraph::readJson(const std::filesystem::path& path) {
         for (const auto& p : e.at("polyline"))
           edge.polyline.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(),
                                      p.size() > 2 ? p.at(2).get<double>() : 0.0);
-      if (e.contains("sumo_edges")) edge.sumo_edges = e.at("sumo_edges").get<std::vector<std::string>>();
+      if (e.contains("sumo_edges"))
+        edge.sumo_edges = e.at("sumo_edges").get<std::vector<std::string>>();
       g.edges.push_back(std::move(edge));
     }
     if (j.contains("turns") && !j.at("turns").is_null()) {

@@ -63,7 +63,8 @@ void RoadGraph::writeGraphML(const std::filesystem::path& path) const {
   };
   using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, V, E>;
   G g(nodes.size());
-  for (const auto& n : nodes) g[static_cast<std::size_t>(n.id)] = {n.pos.x(), n.pos.y(), n.pos.z(), n.sumo_junction};
+  for (const auto& n : nodes)
+    g[static_cast<std::size_t>(n.id)] = {n.pos.x(), n.pos.y(), n.pos.z(), n.sumo_junction};
   for (const auto& e : edges) {
     std::string se;
     for (const auto& s : e.sumo_edges) se += (se.empty() ? "" : " ") + s;
@@ -205,14 +206,16 @@ void RoadGraph::renderPng(const std::filesystem::path& path, const std::string& 
   for (std::size_t i : order) {
     const auto& e = edges[i];
     std::vector<Point3> world = e.polyline;
-    if (world.size() < 2) world = {nodes[static_cast<std::size_t>(e.u)].pos, nodes[static_cast<std::size_t>(e.v)].pos};
+    if (world.size() < 2)
+      world = {nodes[static_cast<std::size_t>(e.u)].pos, nodes[static_cast<std::size_t>(e.v)].pos};
     cv::polylines(img, shiftedPixels(world, frame, 2.5), false, colour(val[i]), 3, cv::LINE_AA);
   }
   for (const auto& n : nodes)
     cv::circle(img, frame.px(n.pos), 4, cv::Scalar(40, 40, 40), -1, cv::LINE_AA);
   drawLegend(img, colour, attribute, frame.scale, width_px);
   std::vector<uchar> png;
-  if (!cv::imencode(".png", img, png)) throw std::runtime_error(path.string() + ": PNG encoding failed");
+  if (!cv::imencode(".png", img, png))
+    throw std::runtime_error(path.string() + ": PNG encoding failed");
   writeFileAtomic(path, std::string(png.begin(), png.end()));
 }
 

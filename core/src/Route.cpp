@@ -30,7 +30,8 @@ Route routeFromJsonObject(const json& j) {
   r.mean_edge_weight = j.value("mean_edge_weight", 0.0);
   r.final_logdet_cov = j.value("final_logdet_cov", 0.0);
   r.max_logdet_cov = j.value("max_logdet_cov", 0.0);
-  if (j.contains("logdet_cov_along")) r.logdet_cov_along = j.at("logdet_cov_along").get<std::vector<double>>();
+  if (j.contains("logdet_cov_along"))
+    r.logdet_cov_along = j.at("logdet_cov_along").get<std::vector<double>>();
   r.planning_seconds = j.value("planning_seconds", 0.0);
   r.heuristic = j.value("heuristic", false);
   r.completed_by_shortest_paths = j.value("completed_by_shortest_paths", false);

@@ -60,7 +60,8 @@ std::filesystem::path kittiPointTimesPath(const std::filesystem::path& bin_path)
 Scan readKittiScan(const std::filesystem::path& path) {
   const std::string raw = readFile(path);
   if (raw.size() % (4 * sizeof(float)) != 0)
-    throw std::runtime_error(path.string() + ": size is not a multiple of 16 bytes (x,y,z,i float32)");
+    throw std::runtime_error(path.string() +
+                             ": size is not a multiple of 16 bytes (x,y,z,i float32)");
   Scan s;
   const std::size_t n = raw.size() / (4 * sizeof(float));
   s.points.resize(n);
@@ -76,7 +77,9 @@ Scan readKittiScan(const std::filesystem::path& path) {
                                path.filename().string());
     const float* ft = reinterpret_cast<const float*>(traw.data());
     for (std::size_t i = 0; i < n; ++i) {
-      if (!std::isfinite(ft[i])) throw std::runtime_error(tp.string() + ": point time " + std::to_string(i) + " is not finite");
+      if (!std::isfinite(ft[i]))
+        throw std::runtime_error(tp.string() + ": point time " + std::to_string(i) +
+                                 " is not finite");
       s.points[i].dt = ft[i];
     }
     s.has_point_times = true;

@@ -36,8 +36,7 @@ long stagingPid(const std::string& name, const fs::path& target, const std::stri
 }
 
 bool processGone(long pid) {
-  return pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) == -1 &&
-         errno == ESRCH;
+  return pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH;
 }
 
 /// Tidies up after a process that is gone (killed by SIGKILL or the OOM killer, it could not do
@@ -65,7 +64,8 @@ void swapInto(const fs::path& from, const fs::path& to, const fs::path& aside) {
   std::error_code ec;
   if (!fs::exists(to, ec)) {
     fs::rename(from, to, ec);
-    if (ec) throw std::runtime_error(to.string() + ": cannot move into place (" + ec.message() + ")");
+    if (ec)
+      throw std::runtime_error(to.string() + ": cannot move into place (" + ec.message() + ")");
     return;
   }
   if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {

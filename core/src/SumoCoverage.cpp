@@ -64,16 +64,19 @@ SumoCoverage sumoCoverage(const SumoNet& net, const std::vector<std::string>& ro
     c.route_on_edges_m += edges[k]->length();
     if (k == 0) continue;
     const auto it = turns.find(edges[k - 1]->id + " " + edges[k]->id);
-    if (it == turns.end()) ++c.turns_without_connection;
-    else c.route_in_junctions_m += it->second;
+    if (it == turns.end())
+      ++c.turns_without_connection;
+    else
+      c.route_in_junctions_m += it->second;
   }
   return c;
 }
 
 void sumoCoverageToJson(const SumoCoverage& c, nlohmann::json& j) {
   j["directed_coverage"] = {
-      {"definition", "directed SUMO edges driven, of the passenger edges in the net's largest "
-                     "strongly connected part (internal junction edges excluded)"},
+      {"definition",
+       "directed SUMO edges driven, of the passenger edges in the net's largest "
+       "strongly connected part (internal junction edges excluded)"},
       {"edges_pct", c.edges_pct},
       {"length_pct", c.length_pct},
       {"edges_driven", c.edges_driven},

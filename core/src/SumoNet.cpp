@@ -36,7 +36,8 @@ Polyline parseShape(const char* s, const std::string& where) {
     std::size_t start = 0;
     while (start <= tok.size() && n < 3) {
       const std::size_t comma = tok.find(',', start);
-      const std::string part = tok.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      const std::string part =
+          tok.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
       try {
         std::size_t used = 0;
         v[n++] = std::stod(part, &used);
@@ -49,7 +50,8 @@ Polyline parseShape(const char* s, const std::string& where) {
     }
     if (n < 2 || !plausibleCoordinate(v[0]) || !plausibleCoordinate(v[1]) ||
         !plausibleCoordinate(v[2]))
-      throw std::invalid_argument(where + ": bad shape point '" + tok + "' (" + kCoordinateRule + ")");
+      throw std::invalid_argument(where + ": bad shape point '" + tok + "' (" + kCoordinateRule +
+                                  ")");
     pl.emplace_back(v[0], v[1], v[2]);
   }
   for (std::size_t i = 1; i < pl.size(); ++i)
@@ -75,9 +77,9 @@ Point3 junctionPosition(const pugi::xml_node& j, const std::string& name) {
   const Point3 p(j.attribute("x").as_double(), j.attribute("y").as_double(),
                  j.attribute("z").as_double(0.0));
   if (!plausibleCoordinate(p.x()) || !plausibleCoordinate(p.y()) || !plausibleCoordinate(p.z()))
-    throw std::invalid_argument(name + ": junction '" + j.attribute("id").as_string() +
-                                "' at (" + j.attribute("x").as_string() + ", " +
-                                j.attribute("y").as_string() + ") (" + kCoordinateRule + ")");
+    throw std::invalid_argument(name + ": junction '" + j.attribute("id").as_string() + "' at (" +
+                                j.attribute("x").as_string() + ", " + j.attribute("y").as_string() +
+                                ") (" + kCoordinateRule + ")");
   return p;
 }
 
@@ -98,7 +100,8 @@ bool passengerAllowed(const std::vector<std::string>& allow,
 bool SumoLane::allowsPassenger() const { return passengerAllowed(allow, disallow); }
 
 bool SumoEdge::allowsPassenger() const {
-  return std::any_of(lanes.begin(), lanes.end(), [](const SumoLane& l) { return l.allowsPassenger(); });
+  return std::any_of(lanes.begin(), lanes.end(),
+                     [](const SumoLane& l) { return l.allowsPassenger(); });
 }
 
 double SumoEdge::length() const {
@@ -228,13 +231,15 @@ struct InternalLanes {
     InternalLanes in;
     for (auto e : root.children("edge")) {
       const std::string id = e.attribute("id").as_string();
-      if (std::string(e.attribute("function").as_string()) != "internal" && (id.empty() || id[0] != ':'))
+      if (std::string(e.attribute("function").as_string()) != "internal" &&
+          (id.empty() || id[0] != ':'))
         continue;
       for (auto l : e.children("lane"))
         in.length_m[l.attribute("id").as_string()] = l.attribute("length").as_double(0.0);
     }
     for (auto c : root.children("connection")) {
-      const std::string from = c.attribute("from").as_string(), via = c.attribute("via").as_string();
+      const std::string from = c.attribute("from").as_string(),
+                        via = c.attribute("via").as_string();
       if (!from.empty() && from[0] == ':' && !via.empty())
         in.next[from + "_" + std::to_string(c.attribute("fromLane").as_int())] = via;
     }

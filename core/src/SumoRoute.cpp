@@ -13,8 +13,9 @@
 namespace slamroute {
 namespace {
 
-using LineGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property,
-                                        boost::property<boost::edge_weight_t, double>>;
+using LineGraph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+                          boost::property<boost::edge_weight_t, double>>;
 
 /// The passenger edges of a net as the vertices of a line graph (arc = allowed turn, cost = the
 /// length of the edge driven next) and its largest strongly connected part.
@@ -36,7 +37,8 @@ class PassengerLineGraph {
   bool inLargest(const std::string& id) const { return comp_[index_.at(id)] == largest_; }
 
   /// The edges strictly between a and b on the shortest legal path; false when there is none.
-  bool pathBetween(const std::string& a, const std::string& b, std::vector<const SumoEdge*>& between) {
+  bool pathBetween(const std::string& a, const std::string& b,
+                   std::vector<const SumoEdge*>& between) {
     const std::size_t s = index_.at(a), t = index_.at(b);
     dist_.resize(pax_.size());
     pred_.resize(pax_.size());
@@ -55,8 +57,11 @@ class PassengerLineGraph {
  private:
   void findLargestPart() {
     comp_.resize(pax_.size());
-    const std::size_t ncomp = pax_.empty() ? 0 : boost::strong_components(
-        lg_, boost::make_iterator_property_map(comp_.begin(), boost::get(boost::vertex_index, lg_)));
+    const std::size_t ncomp =
+        pax_.empty() ? 0
+                     : boost::strong_components(
+                           lg_, boost::make_iterator_property_map(
+                                    comp_.begin(), boost::get(boost::vertex_index, lg_)));
     std::vector<std::size_t> comp_size(ncomp, 0);
     for (std::size_t c : comp_) ++comp_size[c];
     largest_ = static_cast<std::size_t>(std::max_element(comp_size.begin(), comp_size.end()) -
@@ -132,9 +137,11 @@ LegalRoute legalizeSumoRoute(const SumoNet& net, const std::vector<std::string>&
   const std::string where = net.source.string();
   PassengerLineGraph lg(net);
   for (const auto& id : edges) {
-    if (!net.findEdge(id)) throw std::invalid_argument(where + ": route edge '" + id + "' is not in the net");
+    if (!net.findEdge(id))
+      throw std::invalid_argument(where + ": route edge '" + id + "' is not in the net");
     if (!lg.has(id))
-      throw std::invalid_argument(where + ": route edge '" + id + "' is not open to passenger cars");
+      throw std::invalid_argument(where + ": route edge '" + id +
+                                  "' is not open to passenger cars");
   }
   LegalRoute out;
   if (edges.empty()) return out;

@@ -37,7 +37,8 @@ std::vector<std::vector<double>> readRows(const std::filesystem::path& path) {
                                     ": not a number '" + tok + "'");
       }
       if (!std::isfinite(row.back()))
-        throw std::invalid_argument(path.string() + ":" + std::to_string(lineno) + ": non-finite value");
+        throw std::invalid_argument(path.string() + ":" + std::to_string(lineno) +
+                                    ": non-finite value");
     }
     rows.push_back(std::move(row));
     rows.back().push_back(lineno);  // remember the line number as the last entry
@@ -55,8 +56,9 @@ std::string lineOf(const std::filesystem::path& path, const std::vector<double>&
 void checkPose(const std::filesystem::path& path, const std::vector<double>& row,
                const Trajectory& before, const StampedPose& p) {
   if (!before.empty() && !(p.t > before.back().t))
-    throw std::invalid_argument(lineOf(path, row) + ": time " + std::to_string(p.t) +
-                                " s is not later than the pose before (poses must be in time order)");
+    throw std::invalid_argument(
+        lineOf(path, row) + ": time " + std::to_string(p.t) +
+        " s is not later than the pose before (poses must be in time order)");
   const Vec3 t = p.T_world_body.translation();
   if (!plausibleCoordinate(t.x()) || !plausibleCoordinate(t.y()) || !plausibleCoordinate(t.z()))
     throw std::invalid_argument(lineOf(path, row) + ": " + kCoordinateRule);
@@ -118,7 +120,8 @@ Trajectory readKittiPoses(const std::filesystem::path& path, double dt) {
     R << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
     // Written with a few digits, a rotation is orthonormal to ~1e-6; a zero or scaled matrix
     // is no rotation, whatever the re-orthonormalisation below would make of it.
-    if (!((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-2) || !(R.determinant() > 0))
+    if (!((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() < 1e-2) ||
+        !(R.determinant() > 0))
       throw std::invalid_argument(lineOf(path, r) + ": the 3x3 part is not a rotation matrix");
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::Matrix3d Ro = svd.matrixU() * svd.matrixV().transpose();  // re-orthonormalise
@@ -147,7 +150,8 @@ Trajectory readTrajectory(const std::filesystem::path& path) {
   const std::size_t cols = rows.front().size() - 1;
   if (cols == 8) return readTum(path);
   if (cols == 12) return readKittiPoses(path);
-  throw std::invalid_argument(path.string() + ": neither TUM (8 columns) nor KITTI (12 columns), found " +
+  throw std::invalid_argument(path.string() +
+                              ": neither TUM (8 columns) nor KITTI (12 columns), found " +
                               std::to_string(cols));
 }
 

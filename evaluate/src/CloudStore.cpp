@@ -13,7 +13,8 @@
 namespace slamroute::evaluate {
 namespace {
 
-static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "clouds are stored as packed xyz floats");
+static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float),
+              "clouds are stored as packed xyz floats");
 
 /// An unnamed file in `dir`: O_TMPFILE where the file system has it, else a named one unlinked
 /// at once.
@@ -36,9 +37,11 @@ void transfer(int fd, void* data, std::size_t bytes, std::uint64_t offset, bool 
                             : ::pread(fd, p, bytes, static_cast<off_t>(offset));
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      const std::string why = n < 0 ? std::strerror(errno) : write ? std::strerror(ENOSPC) : "file too short";
-      throw std::runtime_error(dir.string() + (write ? ": cannot write " : ": cannot read back ") + what + " (" +
-                               why + ")");
+      const std::string why = n < 0   ? std::strerror(errno)
+                              : write ? std::strerror(ENOSPC)
+                                      : "file too short";
+      throw std::runtime_error(dir.string() + (write ? ": cannot write " : ": cannot read back ") +
+                               what + " (" + why + ")");
     }
     p += n;
     offset += static_cast<std::uint64_t>(n);
@@ -48,10 +51,12 @@ void transfer(int fd, void* data, std::size_t bytes, std::uint64_t offset, bool 
 
 }  // namespace
 
-CloudStore::CloudStore(const std::filesystem::path& dir, std::string what) : dir_(dir), what_(std::move(what)) {
+CloudStore::CloudStore(const std::filesystem::path& dir, std::string what)
+    : dir_(dir), what_(std::move(what)) {
   fd_ = openUnnamed(dir);
   if (fd_ < 0)
-    throw std::runtime_error(dir.string() + ": cannot make a file for " + what_ + " (" + std::strerror(errno) + ")");
+    throw std::runtime_error(dir.string() + ": cannot make a file for " + what_ + " (" +
+                             std::strerror(errno) + ")");
 }
 
 CloudStore::~CloudStore() {
@@ -67,7 +72,8 @@ int CloudStore::add(const Cloud& c) {
     memory_.push_back(c);
   } else {
     // pwrite does not change the cloud; transfer takes one pointer type for both directions.
-    transfer(fd_, const_cast<Eigen::Vector3f*>(c.data()), c.size() * sizeof(Eigen::Vector3f), end_, true, dir_, what_);
+    transfer(fd_, const_cast<Eigen::Vector3f*>(c.data()), c.size() * sizeof(Eigen::Vector3f), end_,
+             true, dir_, what_);
     end_ += c.size() * sizeof(Eigen::Vector3f);
   }
   index_.push_back(e);
@@ -76,7 +82,8 @@ int CloudStore::add(const Cloud& c) {
 
 const CloudStore::Entry& CloudStore::entry(int id) const {
   const auto k = static_cast<std::size_t>(id);
-  if (id < 0 || k >= index_.size()) throw std::out_of_range("CloudStore: no cloud " + std::to_string(id));
+  if (id < 0 || k >= index_.size())
+    throw std::out_of_range("CloudStore: no cloud " + std::to_string(id));
   return index_[k];
 }
 

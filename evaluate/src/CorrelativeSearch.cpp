@@ -40,7 +40,8 @@ struct Grid {
   int w = 0, h = 0;
   std::vector<float> v;
   float at(int ix, int iy) const {
-    return (ix < 0 || iy < 0 || ix >= w || iy >= h) ? 0.f : v[static_cast<std::size_t>(iy) * w + ix];
+    return (ix < 0 || iy < 0 || ix >= w || iy >= h) ? 0.f
+                                                    : v[static_cast<std::size_t>(iy) * w + ix];
   }
   int cellX(double x) const { return static_cast<int>(std::floor((x - x0) / res)); }
   int cellY(double y) const { return static_cast<int>(std::floor((y - y0) / res)); }
@@ -63,11 +64,13 @@ Grid likelihoodGrid(const Cloud& target, const CorrelativeOptions& o) {
   g.w = static_cast<int>(std::ceil((x1 - g.x0) / g.res)) + k + 1;
   g.h = static_cast<int>(std::ceil((y1 - g.y0) / g.res)) + k + 1;
   std::vector<char> occupied(static_cast<std::size_t>(g.w) * g.h, 0);
-  for (const auto& p : target) occupied[static_cast<std::size_t>(g.cellY(p.y())) * g.w + g.cellX(p.x())] = 1;
+  for (const auto& p : target)
+    occupied[static_cast<std::size_t>(g.cellY(p.y())) * g.w + g.cellX(p.x())] = 1;
   std::vector<float> kernel;
   for (int dy = -k; dy <= k; ++dy)
     for (int dx = -k; dx <= k; ++dx)
-      kernel.push_back(static_cast<float>(std::exp(-(dx * dx + dy * dy) * g.res * g.res / (2 * o.sigma_m * o.sigma_m))));
+      kernel.push_back(static_cast<float>(
+          std::exp(-(dx * dx + dy * dy) * g.res * g.res / (2 * o.sigma_m * o.sigma_m))));
   g.v.assign(occupied.size(), 0.f);
   for (int iy = 0; iy < g.h; ++iy)
     for (int ix = 0; ix < g.w; ++ix) {
@@ -122,7 +125,8 @@ struct Scored {
 std::vector<Cells> sourceCells(const Grid& g, const Cloud& source, const Pose3& start,
                                const CorrelativeOptions& o, std::vector<double>& yaws) {
   const int n_yaw = static_cast<int>(std::floor(o.yaw_window_rad / o.yaw_step_rad));
-  const std::size_t stride = std::max<std::size_t>(1, source.size() / static_cast<std::size_t>(o.max_source_points));
+  const std::size_t stride =
+      std::max<std::size_t>(1, source.size() / static_cast<std::size_t>(o.max_source_points));
   std::vector<Cells> out;
   for (int j = -n_yaw; j <= n_yaw; ++j) {
     const double dyaw = j * o.yaw_step_rad;
@@ -139,15 +143,18 @@ std::vector<Cells> sourceCells(const Grid& g, const Cloud& source, const Pose3& 
 }
 
 /// Fine scores of every offset in the blocks whose bound reaches prune_share of the best so far.
-std::vector<Scored> scoreBlocks(const Grid& fine, const Grid& bound, const std::vector<Cells>& cells,
-                                int n, const CorrelativeOptions& o) {
+std::vector<Scored> scoreBlocks(const Grid& fine, const Grid& bound,
+                                const std::vector<Cells>& cells, int n,
+                                const CorrelativeOptions& o) {
   const int c = o.coarse_cells;
   std::vector<Block> blocks;
   for (int j = 0; j < static_cast<int>(cells.size()); ++j)
     for (int oy = -n; oy <= n; oy += c)
-      for (int ox = -n; ox <= n; ox += c) blocks.push_back({meanAt(bound, cells[j], ox, oy), j, ox, oy});
+      for (int ox = -n; ox <= n; ox += c)
+        blocks.push_back({meanAt(bound, cells[j], ox, oy), j, ox, oy});
   std::sort(blocks.begin(), blocks.end(), [](const Block& a, const Block& b) {
-    return a.bound != b.bound ? a.bound > b.bound : std::tie(a.yaw, a.oy, a.ox) < std::tie(b.yaw, b.oy, b.ox);
+    return a.bound != b.bound ? a.bound > b.bound
+                              : std::tie(a.yaw, a.oy, a.ox) < std::tie(b.yaw, b.oy, b.ox);
   });
   std::vector<Scored> kept;
   double best = 0.0;
@@ -170,21 +177,23 @@ CorrelativeResult correlativeSearch(const Cloud& target, const Cloud& source, co
   CorrelativeResult r;
   r.best = start;
   if (target.empty() || source.empty()) return r;
-  const Grid fine = likelihoodGrid(target, o);                  // 1. the target's likelihood
-  const Grid bound = blockMaxGrid(fine, o.coarse_cells);        // 2. its block maxima
+  const Grid fine = likelihoodGrid(target, o);            // 1. the target's likelihood
+  const Grid bound = blockMaxGrid(fine, o.coarse_cells);  // 2. its block maxima
   std::vector<double> yaws;
   const std::vector<Cells> cells = sourceCells(fine, source, start, o, yaws);  // 3. source per yaw
   r.source_points = static_cast<int>(cells.front().size());
   const int n = static_cast<int>(std::ceil(o.window_m / o.resolution_m));
   const std::vector<Scored> kept = scoreBlocks(fine, bound, cells, n, o);  // 4. branch and bound
   const auto top = std::min_element(kept.begin(), kept.end(), [](const Scored& a, const Scored& b) {
-    return a.score != b.score ? a.score > b.score : std::tie(a.yaw, a.oy, a.ox) < std::tie(b.yaw, b.oy, b.ox);
+    return a.score != b.score ? a.score > b.score
+                              : std::tie(a.yaw, a.oy, a.ox) < std::tie(b.yaw, b.oy, b.ox);
   });
   r.score = top->score;
   r.runner_up = o.prune_share * r.score;  // 5. the best pose well away from it
   for (const Scored& s : kept) {
     const Vec3 d((s.ox - top->ox) * o.resolution_m, (s.oy - top->oy) * o.resolution_m, 0.0);
-    if (d.norm() >= o.separation_m && s.score > r.runner_up) r.runner_up = s.score, r.runner_up_offset = d;
+    if (d.norm() >= o.separation_m && s.score > r.runner_up)
+      r.runner_up = s.score, r.runner_up_offset = d;
   }
   r.best = start * Eigen::AngleAxisd(yaws[static_cast<std::size_t>(top->yaw)], Vec3::UnitZ());
   r.best.translation() += Vec3(top->ox * o.resolution_m, top->oy * o.resolution_m, 0.0);

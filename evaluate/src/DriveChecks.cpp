@@ -53,8 +53,8 @@ void checkCovers(const fs::path& path, const std::vector<double>& times, const S
                  const std::string& what) {
   if (times.empty()) throw std::invalid_argument(path.string() + ": no " + what);
   if (const std::size_t i = firstDisorder(times); i < times.size())
-    throw std::invalid_argument(path.string() + ": " + what + " " + std::to_string(i + 1) +
-                                " at " + seconds(times[i]) + " is not later than the one before");
+    throw std::invalid_argument(path.string() + ": " + what + " " + std::to_string(i + 1) + " at " +
+                                seconds(times[i]) + " is not later than the one before");
   if (times.front() > span.t0 + span.slack_s || times.back() < span.t1 - span.slack_s)
     throw std::invalid_argument(path.string() + ": " + what + " span " + seconds(times.front()) +
                                 " to " + seconds(times.back()) + " but the ground truth spans " +
@@ -68,9 +68,9 @@ void checkScanFiles(const fs::path& dir, std::size_t listed) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".bin") ++bins;
   if (bins != listed)
-    throw std::invalid_argument((dir / "times.txt").string() + ": lists " +
-                                std::to_string(listed) + " scans but the folder holds " +
-                                std::to_string(bins) + " .bin files");
+    throw std::invalid_argument((dir / "times.txt").string() + ": lists " + std::to_string(listed) +
+                                " scans but the folder holds " + std::to_string(bins) +
+                                " .bin files");
 }
 
 void checkPoseEdges(const fs::path& path, const Span& span, std::size_t gt_poses) {
@@ -79,8 +79,8 @@ void checkPoseEdges(const fs::path& path, const Span& span, std::size_t gt_poses
   for (const auto& r : rows) times.push_back(r.t);
   checkCovers(path, times, span, "row");
   if (rows.size() != gt_poses)
-    throw std::invalid_argument(path.string() + ": " + std::to_string(rows.size()) +
-                                " rows for " + std::to_string(gt_poses) +
+    throw std::invalid_argument(path.string() + ": " + std::to_string(rows.size()) + " rows for " +
+                                std::to_string(gt_poses) +
                                 " ground-truth poses (one row per pose)");
 }
 

@@ -4,18 +4,19 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <set>
 
+#include "EvaluationSummary.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/DriveFolder.hpp"
 #include "slamroute/core/Log.hpp"
-#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/OdometrySpec.hpp"
+#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoCoverage.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/evaluate/MapAccuracy.hpp"
@@ -23,7 +24,6 @@
 #include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/Output.hpp"
 #include "slamroute/evaluate/StridedScanSource.hpp"
-#include "EvaluationSummary.hpp"
 
 namespace slamroute::evaluate {
 namespace fs = std::filesystem;
@@ -84,7 +84,8 @@ EdgeCoverage edgeCoverage(const fs::path& drive, const std::vector<PoseEdge>& po
     hit += static_cast<long long>(visited.count(e.id));
   }
   c.edges_total = total;
-  if (total > 0) c.coverage_edge_pct = 100.0 * static_cast<double>(hit) / static_cast<double>(total);
+  if (total > 0)
+    c.coverage_edge_pct = 100.0 * static_cast<double>(hit) / static_cast<double>(total);
   return c;
 }
 
@@ -151,7 +152,8 @@ double evaluationDiskGb(double route_km, const Config& cfg) {
   // map.pcd's size until map.pcd is written (PcdWriter), by when the clouds' file is gone: the
   // peak is the clouds + the map, or twice the map with the clouds in memory.
   const double map = 0.0066, clouds = 0.023;
-  return std::max(0.0, route_km) * (cfg.output.keyframe_clouds_on_disk ? clouds + map : 2 * map) * 1.1;
+  return std::max(0.0, route_km) * (cfg.output.keyframe_clouds_on_disk ? clouds + map : 2 * map) *
+         1.1;
 }
 
 namespace {
@@ -163,13 +165,15 @@ void warnIfShortOfDisk(const fs::path& dir, const fs::path& out, double km, cons
   const fs::space_info sp = fs::space(dir, ec);
   if (ec || static_cast<double>(sp.available) >= need * 1e9) return;
   char buf[200];
-  std::snprintf(buf, sizeof buf, "evaluate: %s has %.2f GB free; a %.1f km drive needs ~%.2f GB there", out.c_str(),
+  std::snprintf(buf, sizeof buf,
+                "evaluate: %s has %.2f GB free; a %.1f km drive needs ~%.2f GB there", out.c_str(),
                 static_cast<double>(sp.available) / 1e9, km, need);
-  logWarn(std::string(buf) + " (map.pcd" + (cfg.output.keyframe_clouds_on_disk ? ", the keyframe clouds while the SLAM runs)" : ")"));
+  logWarn(
+      std::string(buf) + " (map.pcd" +
+      (cfg.output.keyframe_clouds_on_disk ? ", the keyframe clouds while the SLAM runs)" : ")"));
 }
 
 }  // namespace
-
 
 namespace {
 
@@ -187,9 +191,7 @@ StartState startState(const ScanSource& source, const Trajectory& gt, const Conf
   if (source.size() > 1) first.push_back(StampedPose{source.time(1), Pose3::Identity()});
   const auto p0 = associate(first, gt, tol);
   StartState s;
-  s.T0 = !p0.empty()   ? p0.front().gt
-         : gt.empty() ? Pose3::Identity()
-                      : gt.front().T_world_body;
+  s.T0 = !p0.empty() ? p0.front().gt : gt.empty() ? Pose3::Identity() : gt.front().T_world_body;
   if (p0.size() == 2) s.V0 = p0[0].gt.inverse() * p0[1].gt;
   return s;
 }
@@ -206,9 +208,11 @@ struct MotionPrior {
 MotionPrior motionPrior(const fs::path& drive, const Config& cfg) {
   MotionPrior p{{}, {}, cfg};
   const fs::path odo_file = drive / drive_files::kOdometry;
-  if (cfg.odometry.use_wheel_odometry && fs::exists(odo_file)) p.odometry = readOdometryCsv(odo_file);
+  if (cfg.odometry.use_wheel_odometry && fs::exists(odo_file))
+    p.odometry = readOdometryCsv(odo_file);
   if (cfg.odometry.use_wheel_odometry && p.odometry.empty())
-    logInfo("evaluate: no " + odo_file.string() + ": predicting motion with a constant-velocity model");
+    logInfo("evaluate: no " + odo_file.string() +
+            ": predicting motion with a constant-velocity model");
   if (p.odometry.empty()) return p;
   if (cfg.odometry.gyro_standstill_mps > 0) {
     p.gyro = removeStandstillGyroBias(p.odometry, cfg.odometry.gyro_standstill_mps,
@@ -216,8 +220,9 @@ MotionPrior motionPrior(const fs::path& drive, const Config& cfg) {
                                       cfg.odometry.gyro_standstill_margin_s);
     p.odometry = p.gyro.odometry;
     if (p.gyro.standstill_s >= cfg.odometry.gyro_min_standstill_s)
-      logInfo("evaluate: gyro bias " + std::to_string(p.gyro.final_bias_rad_s * 180.0 / std::numbers::pi) +
-              " deg/s from " + std::to_string(static_cast<int>(p.gyro.standstill_s)) + " s of standstill");
+      logInfo("evaluate: gyro bias " +
+              std::to_string(p.gyro.final_bias_rad_s * 180.0 / std::numbers::pi) + " deg/s from " +
+              std::to_string(static_cast<int>(p.gyro.standstill_s)) + " s of standstill");
   }
   const fs::path spec = drive / drive_files::kOdometrySpec;
   p.slam_cfg.odometry.prior_sigma_deg = yawPriorSigmaDeg(cfg, readOdometrySpec(spec));
@@ -273,8 +278,10 @@ void addMapAccuracy(MapOutput& map, const Config& cfg, const fs::path& dir, Eval
   const std::optional<MapAccuracy> accuracy = map.accuracy();
   if (!accuracy) return;
   const MapAccuracy aligned = *map.alignedAccuracy();
-  r.map = MapFigures{accuracy->mean_m, accuracy->median_m, accuracy->p95_m, accuracy->clamped_share};
-  r.map_aligned = MapFigures{aligned.mean_m, aligned.median_m, aligned.p95_m, aligned.clamped_share};
+  r.map =
+      MapFigures{accuracy->mean_m, accuracy->median_m, accuracy->p95_m, accuracy->clamped_share};
+  r.map_aligned =
+      MapFigures{aligned.mean_m, aligned.median_m, aligned.p95_m, aligned.clamped_share};
   r.map_accuracy_max_m = cfg.metrics.map_accuracy_max_m;
   map.writeImage(dir / "map_error_top.png");
 }
@@ -296,7 +303,8 @@ EvaluationResult evaluateDrive(const fs::path& drive, const ScanSource& all_scan
                                const fs::path& out, const Config& cfg,
                                const std::map<std::string, std::string>& edge_labels) {
   const Trajectory gt = readTum(drive / drive_files::kGroundTruth);
-  if (gt.empty()) throw std::runtime_error((drive / drive_files::kGroundTruth).string() + ": empty");
+  if (gt.empty())
+    throw std::runtime_error((drive / drive_files::kGroundTruth).string() + ": empty");
   return evaluateScans(drive, all_scans, gt, out, cfg, edge_labels);
 }
 
@@ -306,15 +314,17 @@ EvaluationResult evaluateScans(const fs::path& drive, const ScanSource& all_scan
   // The window here; the stride (with denser sampling in turns) inside runSlam.
   const StridedScanSource source(all_scans, 1, cfg.input.start_s, cfg.input.end_s);
   if (source.size() == 0)
-    throw std::runtime_error(drive.string() + (all_scans.size() == 0 ? ": the drive has no scans"
-                                                                     : ": no scans in the time window"));
+    throw std::runtime_error(drive.string() + (all_scans.size() == 0
+                                                   ? ": the drive has no scans"
+                                                   : ": no scans in the time window"));
   const StartState start = startState(source, gt, cfg);
   const MotionPrior prior = motionPrior(drive, cfg);
   // The world mesh (map accuracy), read before the SLAM so that a bad one fails at once.
   const fs::path mesh_path = drive / drive_files::kWorldMesh;
   std::optional<Mesh> mesh;
   if (fs::exists(mesh_path)) mesh = readPly(mesh_path);
-  if (!(cfg.output.map_tile_m > 0)) throw std::invalid_argument("evaluate.output.map_tile_m must be positive");
+  if (!(cfg.output.map_tile_m > 0))
+    throw std::invalid_argument("evaluate.output.map_tile_m must be positive");
 
   // Only now that every input file has been read: a bad one leaves no output folder behind. The
   // outputs are made in a staging folder beside `out` and replace it at the end, so a failed

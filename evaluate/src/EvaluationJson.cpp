@@ -142,15 +142,16 @@ void addMapAccuracyJson(const EvaluationResult& r, json& j) {
 }
 
 json completenessJson(const MapCompletenessFigures& m) {
-  return {{"street_radius_m", m.street_radius_m}, {"cells", m.cells},
-          {"unknown_share", m.unknown_share}, {"frontier_share", m.frontier_share},
+  return {{"street_radius_m", m.street_radius_m},
+          {"cells", m.cells},
+          {"unknown_share", m.unknown_share},
+          {"frontier_share", m.frontier_share},
           {"mean_frontier_probability", m.mean_frontier_probability}};
 }
 
 MapCompletenessFigures completenessFromJson(const json& j) {
-  return {figure(j, "street_radius_m"), j.at("cells").get<long long>(),
-          figure(j, "unknown_share"), figure(j, "frontier_share"),
-          figure(j, "mean_frontier_probability")};
+  return {figure(j, "street_radius_m"), j.at("cells").get<long long>(), figure(j, "unknown_share"),
+          figure(j, "frontier_share"), figure(j, "mean_frontier_probability")};
 }
 
 void addSlamJson(const EvaluationResult& r, json& j) {

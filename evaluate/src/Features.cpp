@@ -130,7 +130,8 @@ namespace {
 std::vector<std::pair<std::uint64_t, std::uint32_t>> sortedKeys(const Cloud& in, float inv) {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
   keys.reserve(in.size());
-  for (std::size_t i = 0; i < in.size(); ++i) keys.emplace_back(voxelKey(in[i], inv), static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < in.size(); ++i)
+    keys.emplace_back(voxelKey(in[i], inv), static_cast<std::uint32_t>(i));
   std::sort(keys.begin(), keys.end());
   return keys;
 }
@@ -150,7 +151,8 @@ Eigen::AlignedBox3f transformedBox(const Eigen::AlignedBox3f& b, const Pose3& T)
   Eigen::AlignedBox3f out;
   if (b.isEmpty()) return out;
   Cloud corners;
-  for (int k = 0; k < 8; ++k) corners.push_back(b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)));
+  for (int k = 0; k < 8; ++k)
+    corners.push_back(b.corner(static_cast<Eigen::AlignedBox3f::CornerType>(k)));
   for (const auto& p : transformed(corners, T)) out.extend(p);
   return out;
 }

@@ -12,9 +12,13 @@ namespace {
 struct PointsAdaptor {
   const std::vector<Eigen::Vector3f>* points = nullptr;
   std::size_t kdtree_get_point_count() const { return points->size(); }
-  float kdtree_get_pt(std::size_t i, std::size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
+  float kdtree_get_pt(std::size_t i, std::size_t dim) const {
+    return (*points)[i][static_cast<int>(dim)];
+  }
   template <class BBox>
-  bool kdtree_get_bbox(BBox& /*bb*/) const { return false; }
+  bool kdtree_get_bbox(BBox& /*bb*/) const {
+    return false;
+  }
 };
 
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointsAdaptor>,
@@ -40,7 +44,8 @@ void KdTree::build(const std::vector<Eigen::Vector3f>& points) {
   if (points.empty()) return;
   impl_->points = points;
   impl_->adaptor.points = &impl_->points;
-  impl_->tree = std::make_unique<Tree>(3, impl_->adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize));
+  impl_->tree = std::make_unique<Tree>(3, impl_->adaptor,
+                                       nanoflann::KDTreeSingleIndexAdaptorParams(kLeafSize));
 }
 
 int KdTree::knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
@@ -51,7 +56,8 @@ int KdTree::knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
   thread_local std::vector<std::uint32_t> found;
   found.resize(static_cast<std::size_t>(k));
   sq_dist.resize(static_cast<std::size_t>(k));
-  const std::size_t n = impl_->tree->knnSearch(q.data(), static_cast<std::size_t>(k), found.data(), sq_dist.data());
+  const std::size_t n =
+      impl_->tree->knnSearch(q.data(), static_cast<std::size_t>(k), found.data(), sq_dist.data());
   sq_dist.resize(n);
   idx.assign(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(n));
   return static_cast<int>(n);

@@ -129,7 +129,10 @@ PlyHeader readHeader(const std::string& data, std::size_t& pos, const std::strin
 class PlyBody {
  public:
   PlyBody(const std::string& data, std::size_t pos, bool binary, const std::string& where)
-      : data_(data), pos_(pos), binary_(binary), where_(where),
+      : data_(data),
+        pos_(pos),
+        binary_(binary),
+        where_(where),
         ascii_(binary ? std::string() : data.substr(pos)) {}
   double value(const std::string& type) {
     if (binary_) {
@@ -162,10 +165,12 @@ void readItem(const Element& e, PlyBody& body, Mesh& mesh) {
     if (!p.count_type.empty()) {
       const int n = static_cast<int>(body.value(p.count_type));
       std::vector<int> idx(static_cast<std::size_t>(std::max(n, 0)));
-      for (int k = 0; k < n; ++k) idx[static_cast<std::size_t>(k)] = static_cast<int>(body.value(p.type));
+      for (int k = 0; k < n; ++k)
+        idx[static_cast<std::size_t>(k)] = static_cast<int>(body.value(p.type));
       if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index"))
         for (int k = 2; k < n; ++k)
-          mesh.faces.push_back({idx[0], idx[static_cast<std::size_t>(k - 1)], idx[static_cast<std::size_t>(k)]});
+          mesh.faces.push_back(
+              {idx[0], idx[static_cast<std::size_t>(k - 1)], idx[static_cast<std::size_t>(k)]});
       continue;
     }
     const double x = body.value(p.type);
@@ -195,7 +200,8 @@ Mesh readPly(const std::filesystem::path& path) {
   return mesh;
 }
 
-MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::AlignedBox3f& bounds)
+MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m,
+                                   const Eigen::AlignedBox3f& bounds)
     : mesh_(mesh), max_m_(max_m) {
   if (!(max_m > 0)) throw std::invalid_argument("mapAccuracy: max distance must be positive");
   hist_.assign(static_cast<std::size_t>(std::ceil(max_m / kBinM)) + 1, 0);
@@ -206,7 +212,8 @@ MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::
   const Eigen::Vector2d hi = bounds.max().head<2>().cast<double>().array() + cell;
   nx_ = static_cast<int>(std::ceil((hi.x() - lo_.x()) / cell)) + 1;
   ny_ = static_cast<int>(std::ceil((hi.y() - lo_.y()) / cell)) + 1;
-  if (static_cast<double>(nx_) * ny_ > 5e7) throw std::invalid_argument("mapAccuracy: map too large for the grid");
+  if (static_cast<double>(nx_) * ny_ > 5e7)
+    throw std::invalid_argument("mapAccuracy: map too large for the grid");
   const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   // Each triangle's cells (those its xy box overlaps), counted, then placed: one index array,
   // not a list per cell.
@@ -221,10 +228,13 @@ MapAccuracyMeter::MapAccuracyMeter(const Mesh& mesh, double max_m, const Eigen::
     const int x1 = std::min(nx_ - 1, static_cast<int>(std::floor((b.x() - lo_.x()) / cell)));
     const int y1 = std::min(ny_ - 1, static_cast<int>(std::floor((b.y() - lo_.y()) / cell)));
     for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) fn(static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x));
+      for (int x = x0; x <= x1; ++x)
+        fn(static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(x));
   };
   cell_start_.assign(cells + 1, 0);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) forEachCell(f, [&](std::size_t c) { ++cell_start_[c + 1]; });
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    forEachCell(f, [&](std::size_t c) { ++cell_start_[c + 1]; });
   for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
   cell_faces_.resize(cell_start_[cells]);
   std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
@@ -243,22 +253,25 @@ void MapAccuracyMeter::add(const Cloud& part, std::vector<float>* dist_m) {
     double best2 = max_m_ * max_m_;
     for (int y = std::max(0, cy - 1); y <= std::min(ny_ - 1, cy + 1); ++y)
       for (int x = std::max(0, cx - 1); x <= std::min(nx_ - 1, cx + 1); ++x) {
-        const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x);
+        const std::size_t c = static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+                              static_cast<std::size_t>(x);
         for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
           const std::uint32_t f = cell_faces_[k];
           if (seen_[f] == stamp) continue;
           seen_[f] = stamp;
           const auto& tri = mesh_.faces[f];
-          const Eigen::Vector3d q = closestOnTriangle(
-              p, mesh_.vertices[static_cast<std::size_t>(tri[0])].cast<double>(),
-              mesh_.vertices[static_cast<std::size_t>(tri[1])].cast<double>(),
-              mesh_.vertices[static_cast<std::size_t>(tri[2])].cast<double>());
+          const Eigen::Vector3d q =
+              closestOnTriangle(p, mesh_.vertices[static_cast<std::size_t>(tri[0])].cast<double>(),
+                                mesh_.vertices[static_cast<std::size_t>(tri[1])].cast<double>(),
+                                mesh_.vertices[static_cast<std::size_t>(tri[2])].cast<double>());
           best2 = std::min(best2, (q - p).squaredNorm());
         }
       }
     const double dist = std::sqrt(best2);
-    if (dist >= max_m_) ++clamped_;
-    else ++hist_[std::min(hist_.size() - 1, static_cast<std::size_t>(dist / kBinM))];
+    if (dist >= max_m_)
+      ++clamped_;
+    else
+      ++hist_[std::min(hist_.size() - 1, static_cast<std::size_t>(dist / kBinM))];
     sum_ += dist;
     if (dist_m) dist_m->push_back(static_cast<float>(dist));
   }

@@ -8,8 +8,8 @@
 
 namespace slamroute::evaluate {
 
-MapOutput::MapOutput(const std::filesystem::path& pcd, const Mesh* mesh, const Trajectory* gt, double max_dt_s,
-                     double max_m, int image_px)
+MapOutput::MapOutput(const std::filesystem::path& pcd, const Mesh* mesh, const Trajectory* gt,
+                     double max_dt_s, double max_m, int image_px)
     : pcd_(pcd), mesh_(mesh), gt_(gt), max_dt_s_(max_dt_s), max_m_(max_m), image_px_(image_px) {}
 
 void MapOutput::estimate(const Trajectory& est) {
@@ -53,9 +53,10 @@ void MapOutput::writeImage(const std::filesystem::path& png) const {
   const MapAccuracy aligned = *alignedAccuracy();
   const double top = mapErrorImageTop(aligned.p95_m, max_m_);
   char title[200];
-  std::snprintf(title, sizeof title,
-                "SLAM map from above, aligned like the ATE: distance to the world surface (median %.2f m)",
-                aligned.median_m);
+  std::snprintf(
+      title, sizeof title,
+      "SLAM map from above, aligned like the ATE: distance to the world surface (median %.2f m)",
+      aligned.median_m);
   image_->write(png, title, top);
 }
 

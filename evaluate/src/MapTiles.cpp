@@ -25,8 +25,8 @@ constexpr std::size_t kTileChunkPoints = std::size_t{1} << 22;
 
 }  // namespace
 
-std::size_t buildMapByTiles(CloudStore& clouds, const std::vector<MapKeyframe>& keyframes, double voxel_m,
-                            double tile_m, MapSink& sink,
+std::size_t buildMapByTiles(CloudStore& clouds, const std::vector<MapKeyframe>& keyframes,
+                            double voxel_m, double tile_m, MapSink& sink,
                             const std::function<void(std::size_t, std::size_t)>& progress) {
   const std::size_t n = keyframes.size();
   Eigen::AlignedBox3f bounds;
@@ -34,7 +34,8 @@ std::size_t buildMapByTiles(CloudStore& clouds, const std::vector<MapKeyframe>& 
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::AlignedBox3f& b = clouds.box(keyframes[k].cloud);
     if (b.isEmpty()) continue;
-    boxes[k] = transformedBox(b, keyframes[k].T_world);  // + rounding, covered by a voxel's margin below
+    boxes[k] =
+        transformedBox(b, keyframes[k].T_world);  // + rounding, covered by a voxel's margin below
     bounds.extend(boxes[k]);
   }
   if (voxel_m <= 0.0) {  // every point, keyframe by keyframe

@@ -84,7 +84,8 @@ RpeStats computeRpe(const std::vector<PosePair>& pairs, const std::vector<double
   for (std::size_t i = 0; i < n; i += step) {
     for (double len : lengths_m) {
       if (len <= 0) continue;
-      const auto it = std::lower_bound(dist.begin() + static_cast<long>(i), dist.end(), dist[i] + len);
+      const auto it =
+          std::lower_bound(dist.begin() + static_cast<long>(i), dist.end(), dist[i] + len);
       if (it == dist.end()) continue;
       const std::size_t j = static_cast<std::size_t>(it - dist.begin());
       const Pose3 d_gt = pairs[i].gt.inverse() * pairs[j].gt;
@@ -117,7 +118,8 @@ TrajectoryMetrics compareTrajectories(const Trajectory& est, const Trajectory& g
   for (std::size_t i = 0; i < m.pairs.size(); ++i) {
     if (i > 0) d += (m.pairs[i].gt.translation() - m.pairs[i - 1].gt.translation()).norm();
     m.distance_m.push_back(d);
-    const double e = (m.T_gt_est * m.pairs[i].est.translation() - m.pairs[i].gt.translation()).norm();
+    const double e =
+        (m.T_gt_est * m.pairs[i].est.translation() - m.pairs[i].gt.translation()).norm();
     m.errors_m.push_back(e);
     sq += e * e;
     sum += e;

@@ -26,11 +26,14 @@ double maxTurnRate(const Config& cfg, double speed_mps) {
   return std::min(cap, cfg.odometry.max_lateral_accel_mps2 / std::max(speed_mps, 0.5));
 }
 
-bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps) {
+bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt,
+               double speed_mps) {
   const Pose3 d = pred.inverse() * result;
   const double scale = std::max(1.0, dt / 0.1);
-  const double max_rot = maxTurnRate(cfg, speed_mps) * dt + cfg.odometry.rotation_slack_deg * std::numbers::pi / 180.0;
-  return d.translation().norm() <= scale * cfg.odometry.max_step_change_m && rotationAngle(d) <= max_rot;
+  const double max_rot =
+      maxTurnRate(cfg, speed_mps) * dt + cfg.odometry.rotation_slack_deg * std::numbers::pi / 180.0;
+  return d.translation().norm() <= scale * cfg.odometry.max_step_change_m &&
+         rotationAngle(d) <= max_rot;
 }
 
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt) {
@@ -43,14 +46,17 @@ bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config&
 
 bool plausibleLoopCorrection(double correction_m, double driven_m, const Config& cfg) {
   if (cfg.loop.max_correction_m < 0) return true;
-  return correction_m <= cfg.loop.max_correction_m + cfg.loop.correction_per_m * std::max(0.0, driven_m);
+  return correction_m <=
+         cfg.loop.max_correction_m + cfg.loop.correction_per_m * std::max(0.0, driven_m);
 }
 
 Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
   const Mat3 R = T.rotation();
   const double yaw = yawOf(R);
   const Attitude now = attitudeOf(R);
-  const auto towards = [w](double a, double b) { return a + w * std::remainder(b - a, 2.0 * std::numbers::pi); };
+  const auto towards = [w](double a, double b) {
+    return a + w * std::remainder(b - a, 2.0 * std::numbers::pi);
+  };
   Pose3 out = T;
   out.linear() = (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) *
                   Eigen::AngleAxisd(towards(now.pitch_rad, pitch_rad), Vec3::UnitY()) *
@@ -60,7 +66,8 @@ Pose3 levelled(const Pose3& T, double roll_rad, double pitch_rad, double w) {
 }
 
 double yawPriorSigmaDeg(const Config& cfg, const std::optional<OdometrySpec>& spec) {
-  const double ref = std::hypot(cfg.odometry.prior_ref_noise_deg_s, cfg.odometry.prior_ref_bias_deg_s);
+  const double ref =
+      std::hypot(cfg.odometry.prior_ref_noise_deg_s, cfg.odometry.prior_ref_bias_deg_s);
   if (cfg.odometry.prior_sigma_deg <= 0 || !spec || !(ref > 0)) return cfg.odometry.prior_sigma_deg;
   const double gyro = std::hypot(spec->gyro_noise_deg_s, spec->gyro_bias_sigma_deg_s);
   return std::max(cfg.odometry.prior_min_sigma_deg, cfg.odometry.prior_sigma_deg * gyro / ref);

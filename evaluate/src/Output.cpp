@@ -18,7 +18,8 @@ namespace {
 
 void writePng(const std::filesystem::path& path, const cv::Mat& img) {
   std::vector<uchar> buf;
-  if (!cv::imencode(".png", img, buf)) throw std::runtime_error(path.string() + ": PNG encoding failed");
+  if (!cv::imencode(".png", img, buf))
+    throw std::runtime_error(path.string() + ": PNG encoding failed");
   writeFileAtomic(path, std::string(buf.begin(), buf.end()));
 }
 
@@ -38,7 +39,8 @@ void drawScaleBar(cv::Mat& img, double scale, int margin) {
   if (bar * scale > S / 3.0) bar /= 2.0;
   const cv::Point b0(margin, S - 15), b1(margin + static_cast<int>(bar * scale), S - 15);
   cv::line(img, b0, b1, cv::Scalar(0, 0, 0), 2);
-  cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1);
+  cv::putText(img, fmt(bar, 0) + " m", b1 + cv::Point(5, 5), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              cv::Scalar(0, 0, 0), 1);
 }
 
 /// A TURBO colour bar 150 px wide at (x, y), labelled "0 UNIT" and ">= TOP UNIT"; `caption` above.
@@ -52,7 +54,8 @@ void drawColourBar(cv::Mat& img, int x, int y, double top, const std::string& un
   cv::resize(ramp_bgr, ramp_bgr, {bw, bh}, 0, 0, cv::INTER_NEAREST);
   ramp_bgr.copyTo(img(cv::Rect(x, y, bw, bh)));
   const cv::Scalar black(0, 0, 0);
-  if (!caption.empty()) cv::putText(img, caption, {x, y - 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
+  if (!caption.empty())
+    cv::putText(img, caption, {x, y - 4}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
   cv::putText(img, "0 " + unit, {x, y + bh + 15}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
   cv::putText(img, ">= " + fmt(top, 2) + " " + unit, {x + bw - 55, y + bh + 15},
               cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1);
@@ -107,7 +110,8 @@ std::string pcdHeader(std::size_t points) {
 static_assert(sizeof(Eigen::Vector3f) == 12, "PCD points are written as packed xyz floats");
 
 void writePoints(std::ofstream& out, const Cloud& c) {
-  out.write(reinterpret_cast<const char*>(c.data()), static_cast<std::streamsize>(c.size() * sizeof(Eigen::Vector3f)));
+  out.write(reinterpret_cast<const char*>(c.data()),
+            static_cast<std::streamsize>(c.size() * sizeof(Eigen::Vector3f)));
 }
 
 std::filesystem::path folderOf(const std::filesystem::path& path) {
@@ -124,7 +128,8 @@ void writePcd(const std::filesystem::path& path, const Cloud& cloud) {
 }
 
 PcdWriter::PcdWriter(std::filesystem::path path)
-    : path_(std::move(path)), parts_(folderOf(path_), "the map's points for " + path_.filename().string()) {}
+    : path_(std::move(path)),
+      parts_(folderOf(path_), "the map's points for " + path_.filename().string()) {}
 
 void PcdWriter::add(const Cloud& part) {
   if (part.empty()) return;
@@ -142,7 +147,8 @@ void PcdWriter::commit() {
   out.commit();
 }
 
-TopViewFrame::TopViewFrame(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int size_px, int margin_px)
+TopViewFrame::TopViewFrame(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, int size_px,
+                           int margin_px)
     : scale((size_px - 2 * margin_px) / std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1.0})),
       size(size_px),
       centre(0.5 * (lo + hi)) {}
@@ -157,12 +163,13 @@ MapErrorImage::MapErrorImage(const Eigen::AlignedBox3f& bounds, int size_px)
   sum_.assign(pixels, 0.0f);
   count_.assign(pixels, 0);
   if (bounds.isEmpty()) return;
-  frame_ = TopViewFrame(bounds.min().head<2>().cast<double>(), bounds.max().head<2>().cast<double>(),
-                        size_, margin_);
+  frame_ = TopViewFrame(bounds.min().head<2>().cast<double>(),
+                        bounds.max().head<2>().cast<double>(), size_, margin_);
 }
 
 std::size_t MapErrorImage::at(int row, int col) const {
-  return static_cast<std::size_t>(row) * static_cast<std::size_t>(size_) + static_cast<std::size_t>(col);
+  return static_cast<std::size_t>(row) * static_cast<std::size_t>(size_) +
+         static_cast<std::size_t>(col);
 }
 
 bool MapErrorImage::pixel(double x, double y, int& col, int& row) const {
@@ -193,15 +200,19 @@ double mapErrorImageTop(double aligned_p95_m, double max_m) {
   return std::min(max_m, std::max(0.25, std::ceil(2.0 * aligned_p95_m / 0.25) * 0.25));
 }
 
-void MapErrorImage::write(const std::filesystem::path& path, const std::string& title, double top_m) const {
-  if (!(top_m > 0)) throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
+void MapErrorImage::write(const std::filesystem::path& path, const std::string& title,
+                          double top_m) const {
+  if (!(top_m > 0))
+    throw std::invalid_argument("MapErrorImage: the colour scale's top must be positive");
   // Mean distance per pixel on the colour map (0 .. top_m), white where the map has no point.
   cv::Mat level(size_, size_, CV_8UC1, cv::Scalar(0)), empty(size_, size_, CV_8UC1, cv::Scalar(0));
   for (int r = 0; r < size_; ++r)
     for (int c = 0; c < size_; ++c) {
       const std::size_t k = at(r, c);
-      if (count_[k]) level.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * sum_[k] / count_[k] / top_m);
-      else empty.at<uchar>(r, c) = 255;
+      if (count_[k])
+        level.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * sum_[k] / count_[k] / top_m);
+      else
+        empty.at<uchar>(r, c) = 255;
     }
   cv::Mat img;
   cv::applyColorMap(level, img, cv::COLORMAP_TURBO);
@@ -247,14 +258,16 @@ void plotTopView(const std::filesystem::path& path, const TrajectoryMetrics& m, 
 }
 
 void plotCurve(const std::filesystem::path& path, const std::vector<double>& x,
-               const std::vector<double>& y, const std::string& title, int size_px,
-               double y_max) {
-  const int W = std::max(300, size_px), H = std::max(200, size_px / 2), ml = 60, mb = 40, mt = 30, mr = 20;
+               const std::vector<double>& y, const std::string& title, int size_px, double y_max) {
+  const int W = std::max(300, size_px), H = std::max(200, size_px / 2), ml = 60, mb = 40, mt = 30,
+            mr = 20;
   cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
   if (x.empty() || x.size() != y.size())
-    throw std::invalid_argument(path.string() + ": a curve needs as many x as y values, at least one");
+    throw std::invalid_argument(path.string() +
+                                ": a curve needs as many x as y values, at least one");
   const double dmax = std::max(1.0, x.back());
-  const double emax = y_max > 0 ? y_max : std::max(1e-3, *std::max_element(y.begin(), y.end())) * 1.1;
+  const double emax =
+      y_max > 0 ? y_max : std::max(1e-3, *std::max_element(y.begin(), y.end())) * 1.1;
   auto px = [&](double d, double e) {
     return cv::Point(static_cast<int>(ml + d / dmax * (W - ml - mr)),
                      static_cast<int>(H - mb - e / emax * (H - mb - mt)));

@@ -34,8 +34,8 @@ struct RelativePoseError {
 
 }  // namespace
 
-PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses, const std::vector<PoseGraphEdge>& edges,
-                                  int fixed) {
+PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
+                                  const std::vector<PoseGraphEdge>& edges, int fixed) {
   PoseGraphResult out;
   if (poses.empty()) return out;
   const int n = static_cast<int>(poses.size());
@@ -76,7 +76,8 @@ PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses, const std::vector<P
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     Pose3 T = Pose3::Identity();
-    T.linear() = Eigen::Quaterniond(q[i][3], q[i][0], q[i][1], q[i][2]).normalized().toRotationMatrix();
+    T.linear() =
+        Eigen::Quaterniond(q[i][3], q[i][0], q[i][1], q[i][2]).normalized().toRotationMatrix();
     T.translation() = Vec3(p[i][0], p[i][1], p[i][2]);
     poses[i] = T;
   }

@@ -52,8 +52,9 @@ RangeImage projectScan(const Scan& scan, const LidarSpec& spec, const Config& cf
 void segmentGround(RangeImage& img, const Config& cfg) {
   // Beams below ground_max_elevation_deg can see the road (LeGO-LOAM groundScanInd).
   const int ground_rows = std::clamp(
-      static_cast<int>(std::floor((cfg.features.ground_max_elevation_deg * kDeg - img.vfov_down_rad) /
-                                  img.vres_rad)) + 1,
+      static_cast<int>(std::floor(
+          (cfg.features.ground_max_elevation_deg * kDeg - img.vfov_down_rad) / img.vres_rad)) +
+          1,
       0, img.rows - 1);
   const double max_angle = cfg.features.ground_angle_deg * kDeg;
   const double mount = cfg.features.sensor_mount_angle_deg * kDeg;
@@ -78,7 +79,8 @@ void clusterRangeImage(RangeImage& img, const Config& cfg) {
   for (int r0 = 0; r0 < img.rows; ++r0) {
     for (int c0 = 0; c0 < img.cols; ++c0) {
       const int i0 = img.idx(r0, c0);
-      if (img.range[i0] == 0.0f || img.ground[i0] || img.label[i0] != RangeImage::kNoLabel) continue;
+      if (img.range[i0] == 0.0f || img.ground[i0] || img.label[i0] != RangeImage::kNoLabel)
+        continue;
       const int label = next_label;
       queue.clear();
       queue.push_back(i0);
@@ -94,7 +96,8 @@ void clusterRangeImage(RangeImage& img, const Config& cfg) {
           if (rr < 0 || rr >= img.rows) continue;
           const int cc = (nbr[k][1] + img.cols) % img.cols;
           const int j = img.idx(rr, cc);
-          if (img.range[j] == 0.0f || img.ground[j] || img.label[j] != RangeImage::kNoLabel) continue;
+          if (img.range[j] == 0.0f || img.ground[j] || img.label[j] != RangeImage::kNoLabel)
+            continue;
           const double d1 = std::max(img.range[i], img.range[j]);
           const double d2 = std::min(img.range[i], img.range[j]);
           const bool vertical = k < 2;
@@ -110,7 +113,8 @@ void clusterRangeImage(RangeImage& img, const Config& cfg) {
       for (bool b : row_hit) rows_spanned += b ? 1 : 0;
       const int size = static_cast<int>(queue.size());
       const bool keep = size >= cfg.features.min_cluster_points ||
-                        (size >= cfg.features.min_line_cluster_points && rows_spanned >= cfg.features.min_cluster_rings);
+                        (size >= cfg.features.min_line_cluster_points &&
+                         rows_spanned >= cfg.features.min_cluster_rings);
       if (keep) {
         ++next_label;
       } else {

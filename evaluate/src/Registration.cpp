@@ -42,7 +42,8 @@ struct Normal {
     Eigen::VectorXd b(m);
     for (int i = 0; i < m; ++i) {
       b(i) = -g(act[static_cast<std::size_t>(i)]);
-      for (int j = 0; j < m; ++j) A(i, j) = H(act[static_cast<std::size_t>(i)], act[static_cast<std::size_t>(j)]);
+      for (int j = 0; j < m; ++j)
+        A(i, j) = H(act[static_cast<std::size_t>(i)], act[static_cast<std::size_t>(j)]);
     }
     A.diagonal().array() += 1e-6 * (1.0 + A.diagonal().array());
     Eigen::VectorXd x = A.ldlt().solve(b);
@@ -127,8 +128,9 @@ struct Corr {
 };
 
 /// Nearest-neighbour line fits for the edges and plane fits for the planar points at pose (R, t).
-void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes, const Mat3& R,
-               const Vec3& t, const AlignOptions& opt, std::vector<Corr>& lines, std::vector<Corr>& planes) {
+void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes,
+               const Mat3& R, const Vec3& t, const AlignOptions& opt, std::vector<Corr>& lines,
+               std::vector<Corr>& planes) {
   constexpr int kK = 5;
   std::vector<int> idx;
   std::vector<float> d2;
@@ -155,8 +157,10 @@ void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& sr
       const Vec3 n = s.es.eigenvectors().col(0);
       bool planar = true;
       for (int i : idx)
-        planar = planar &&
-                 std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) < opt.plane_max_dev_m;
+        planar =
+            planar &&
+            std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) <
+                opt.plane_max_dev_m;
       if (planar) planes.push_back({p, s.mean, n});
     }
   }
@@ -235,7 +239,8 @@ IcpTarget::IcpTarget(Cloud target) : cloud_(std::move(target)) {
   }
 }
 
-IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iterations, double max_corr_m) const {
+IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iterations,
+                           double max_corr_m) const {
   IcpResult res;
   res.T_target_source = init;
   if (source.empty() || cloud_.size() < 8) return res;
@@ -285,8 +290,8 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   return res;
 }
 
-std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source, const IcpResult& match,
-                                     const IcpAmbiguity& amb) {
+std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source,
+                                     const IcpResult& match, const IcpAmbiguity& amb) {
   const Pose3& T = match.T_target_source;
   Vec3 along = T.rotation().col(0);
   along.z() = 0.0;
@@ -301,8 +306,8 @@ std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& sourc
     init.translation() += shift;
     const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
     const double apart = (r.T_target_source.translation() - T.translation()).norm();
-    if (apart > amb.separation_m && amb.accept(r) && r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin &&
-        r.fitness_m2 < match.fitness_m2)
+    if (apart > amb.separation_m && amb.accept(r) &&
+        r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin && r.fitness_m2 < match.fitness_m2)
       return apart;
   }
   return std::nullopt;

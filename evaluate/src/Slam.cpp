@@ -29,12 +29,18 @@ using slam::cpuSince;
 
 const char* toString(FrameStatus s) {
   switch (s) {
-    case FrameStatus::Ok: return "ok";
-    case FrameStatus::Empty: return "empty_scan";
-    case FrameStatus::Invalid: return "too_few_valid_points";
-    case FrameStatus::Missing: return "missing_scan";
-    case FrameStatus::FewFeatures: return "few_features";
-    case FrameStatus::Degenerate: return "degenerate_geometry";
+    case FrameStatus::Ok:
+      return "ok";
+    case FrameStatus::Empty:
+      return "empty_scan";
+    case FrameStatus::Invalid:
+      return "too_few_valid_points";
+    case FrameStatus::Missing:
+      return "missing_scan";
+    case FrameStatus::FewFeatures:
+      return "few_features";
+    case FrameStatus::Degenerate:
+      return "degenerate_geometry";
   }
   return "unknown";
 }
@@ -75,26 +81,29 @@ struct LidarSlam::Impl {
   MapSink* map_sink = nullptr;  ///< where finish() puts the map (none: SlamResult::map)
   StageTimes times;
   // Tracking state between scans.
-  bool tracking = false;                  ///< a first usable scan was taken
-  Pose3 T_world_good = Pose3::Identity(); ///< last well-registered frame
+  bool tracking = false;                   ///< a first usable scan was taken
+  Pose3 T_world_good = Pose3::Identity();  ///< last well-registered frame
   int good_frame = -1;
-  bool last_failed = false;               ///< the previous scan failed
-  bool check_motion = true;               ///< dynamics check on (off right after a relocalisation,
-                                          ///< whose jump makes the next prediction unreliable)
-  double dense_until_t = -1e18;           ///< take every scan until then (after a failure) [s]
-  double inlier_ref = 0;                  ///< recent scan-to-map inlier level (0: none)
+  bool last_failed = false;      ///< the previous scan failed
+  bool check_motion = true;      ///< dynamics check on (off right after a relocalisation,
+                                 ///< whose jump makes the next prediction unreliable)
+  double dense_until_t = -1e18;  ///< take every scan until then (after a failure) [s]
+  double inlier_ref = 0;         ///< recent scan-to-map inlier level (0: none)
 
   Impl(const Config& c, const LidarSpec& s, const Pose3& T0) : cfg(c), spec(s), T_world_first(T0) {}
 
   FrameStatus addScan(const Scan& raw) {
     const double t_all = cpuNow();
-    const std::optional<Scan> fixed = deskew(raw);                                 // 0. motion compensation
+    const std::optional<Scan> fixed = deskew(raw);  // 0. motion compensation
     const Scan& scan = fixed ? *fixed : raw;
-    const slam::PreparedScan p = slam::prepareScan(scan, spec, cfg, times);         // 1-2. image, features
+    const slam::PreparedScan p = slam::prepareScan(scan, spec, cfg, times);  // 1-2. image, features
     FrameStatus s = p.status;
-    if (s != FrameStatus::Ok) s = addUnusable(scan.t, s);
-    else if (!tracking) s = startTracking(scan.t, p);
-    else s = track(scan.t, p);                                                      // 3-5
+    if (s != FrameStatus::Ok)
+      s = addUnusable(scan.t, s);
+    else if (!tracking)
+      s = startTracking(scan.t, p);
+    else
+      s = track(scan.t, p);  // 3-5
     times.total += cpuSince(t_all);
     return s;
   }
@@ -107,20 +116,22 @@ struct LidarSlam::Impl {
     const bool check = motion.hasVelocity() && check_motion;
     double t0 = cpuNow();
     bool implausible = false;
-    const Pose3 T_prev_curr = scanToScan(p, step, check, implausible);            // 3. odometry
+    const Pose3 T_prev_curr = scanToScan(p, step, check, implausible);  // 3. odometry
     times.odometry += cpuSince(t0);
     t0 = cpuNow();
     MapStep m = scanToMap(p, step, T_world_good * T_prev_curr, check, implausible);  // 4. mapping
     times.mapping += cpuSince(t0);
-    m.T_world = motion.levelled(m.T_world, t);                                     // IMU roll / pitch
+    m.T_world = motion.levelled(m.T_world, t);  // IMU roll / pitch
     using Outcome = slam::MotionModel::Outcome;
-    const Outcome outcome = m.failed ? Outcome::Failed : m.relocalised ? Outcome::Relocalised : Outcome::Registered;
+    const Outcome outcome = m.failed        ? Outcome::Failed
+                            : m.relocalised ? Outcome::Relocalised
+                                            : Outcome::Registered;
     motion.update(outcome, index - good_frame == 1, T_world_good, m.T_world, step.dt);
     last_failed = m.failed;
     scan_to_scan.setPrevious(p.features);
     T_world_good = m.T_world;
     good_frame = index;
-    if (keyframeDue(m)) {                                                          // 5. keyframe + loop
+    if (keyframeDue(m)) {  // 5. keyframe + loop
       addKeyframe(t, m.T_world, p);
       m.T_world = graph.back().T_world;  // may have moved in the pose graph
       T_world_good = m.T_world;
@@ -148,15 +159,16 @@ struct LidarSlam::Impl {
   }
 
   /// Scan-to-scan from the last good frame; an implausible result falls back to the prediction.
-  Pose3 scanToScan(const slam::PreparedScan& p, const slam::Prediction& step, bool check, bool& implausible) const {
+  Pose3 scanToScan(const slam::PreparedScan& p, const slam::Prediction& step, bool check,
+                   bool& implausible) const {
     const Pose3 T_prev_pred = T_world_good.inverse() * step.T_world;
     const Pose3 T_prev_curr = scan_to_scan.align(p.features, T_prev_pred);
     implausible = check && !motion.plausibleStep(T_prev_pred, T_prev_curr, step);
     return implausible ? T_prev_pred : T_prev_curr;
   }
 
-  MapStep scanToMap(const slam::PreparedScan& p, const slam::Prediction& step, const Pose3& init, bool check,
-                    bool implausible) {
+  MapStep scanToMap(const slam::PreparedScan& p, const slam::Prediction& step, const Pose3& init,
+                    bool check, bool implausible) {
     const AlignOptions fine = scan_to_map.options(motion, step);
     const Pose3 start = scan_to_map.coarse(p, init, fine, motion, step);
     const AlignResult r = scan_to_map.align(p, start, fine);
@@ -165,26 +177,31 @@ struct LidarSlam::Impl {
     // wrong minimum (e.g. a heading jump): the hypothesis search runs too.
     const bool inlier_drop = inlier_ref > 0 && r.inliers < cfg.relocalise.inlier_drop * inlier_ref;
     check_motion = true;
-    if ((m.failed || inlier_drop) && !last_failed) dense_until_t = step.t + cfg.input.dense_after_failure_s;
-    if ((m.failed || inlier_drop || !motion.hasVelocity()) && searchAllowed(p)) relocalise(p, step, fine, r, m);
+    if ((m.failed || inlier_drop) && !last_failed)
+      dense_until_t = step.t + cfg.input.dense_after_failure_s;
+    if ((m.failed || inlier_drop || !motion.hasVelocity()) && searchAllowed(p))
+      relocalise(p, step, fine, r, m);
     if (m.failed || inlier_drop || !check_motion || implausible) logFrame(step, r, m, implausible);
     // The level follows rising inlier counts at once and falling ones slowly, so a sudden drop
     // stands out while a gradual change of scenery does not trigger searches.
-    if (!m.failed) inlier_ref = std::max(static_cast<double>(m.inliers), cfg.relocalise.ref_decay * inlier_ref);
+    if (!m.failed)
+      inlier_ref = std::max(static_cast<double>(m.inliers), cfg.relocalise.ref_decay * inlier_ref);
     return m;
   }
 
   /// Whether the registration `r` from `start` is believed: too few matches (an open street: the
   /// prediction, with height, roll and pitch from the planes), an implausible jump (the
   /// prediction), or the result.
-  MapStep judge(const slam::PreparedScan& p, const slam::Prediction& step, const Pose3& start, const AlignResult& r,
-                const AlignOptions& fine, bool check, bool implausible) const {
+  MapStep judge(const slam::PreparedScan& p, const slam::Prediction& step, const Pose3& start,
+                const AlignResult& r, const AlignOptions& fine, bool check,
+                bool implausible) const {
     MapStep m;
     m.T_world = start;
     m.status = implausible ? FrameStatus::Degenerate : FrameStatus::Ok;
     m.inliers = r.inliers;
     m.min_eig = r.min_eig_translation;
-    if (r.edge_matches < cfg.mapping.min_edge_features || r.plane_matches < cfg.mapping.min_plane_features) {
+    if (r.edge_matches < cfg.mapping.min_edge_features ||
+        r.plane_matches < cfg.mapping.min_plane_features) {
       m.status = FrameStatus::FewFeatures;
       m.failed = true;
       // Too few features to register against: the motion model (odometry, or a car's constant
@@ -193,14 +210,16 @@ struct LidarSlam::Impl {
       AlignOptions planes_only = fine;
       planes_only.dof_mask = kZ | kRoll | kPitch;
       const AlignResult g = scan_to_map.alignPlanes(p, m.T_world, planes_only);
-      if (g.plane_matches >= cfg.mapping.min_plane_features && motion.plausibleStep(step.T_world, g.T_target_source, step))
+      if (g.plane_matches >= cfg.mapping.min_plane_features &&
+          motion.plausibleStep(step.T_world, g.T_target_source, step))
         m.T_world = g.T_target_source;
     } else if (check && !motion.plausibleStep(step.T_world, r.T_target_source, step)) {
       m.status = FrameStatus::Degenerate;
       m.failed = true;
     } else {
       m.T_world = r.T_target_source;
-      if (r.min_eig_translation < cfg.mapping.degeneracy_min_eig) m.status = FrameStatus::Degenerate;
+      if (r.min_eig_translation < cfg.mapping.degeneracy_min_eig)
+        m.status = FrameStatus::Degenerate;
     }
     return m;
   }
@@ -212,10 +231,10 @@ struct LidarSlam::Impl {
     return cfg.relocalise.enabled && searchable && !motion.hasOdometry();
   }
 
-  void relocalise(const slam::PreparedScan& p, const slam::Prediction& step, const AlignOptions& fine,
-                  const AlignResult& r, MapStep& m) {
-    const auto found = slam::relocalise(scan_to_map.localMap(), p, step.T_world, motion.hasVelocity(), fine,
-                                        r.inliers, cfg);
+  void relocalise(const slam::PreparedScan& p, const slam::Prediction& step,
+                  const AlignOptions& fine, const AlignResult& r, MapStep& m) {
+    const auto found = slam::relocalise(scan_to_map.localMap(), p, step.T_world,
+                                        motion.hasVelocity(), fine, r.inliers, cfg);
     if (!found) return;
     m.T_world = found->T_world;
     m.inliers = found->inliers;
@@ -234,7 +253,8 @@ struct LidarSlam::Impl {
   }
 
   void addKeyframe(double t, const Pose3& T_world, const slam::PreparedScan& p) {
-    graph.add(t, static_cast<int>(frames.size()), T_world, p.kf_edges, p.kf_planes, p.features.segmented);
+    graph.add(t, static_cast<int>(frames.size()), T_world, p.kf_edges, p.kf_planes,
+              p.features.segmented);
     loop_closer.addPlace(graph, p.features.segmented);
     bool closed = false;
     if (cfg.loop.enabled) {
@@ -263,15 +283,18 @@ struct LidarSlam::Impl {
     return s;
   }
 
-  void logFrame(const slam::Prediction& step, const AlignResult& r, const MapStep& m, bool implausible) const {
+  void logFrame(const slam::Prediction& step, const AlignResult& r, const MapStep& m,
+                bool implausible) const {
     const auto yawDeg = [](const Pose3& T) {
       return std::to_string(yawOf(T) * 180.0 / std::numbers::pi);
     };
-    logDebug("t=" + std::to_string(step.t) + " s: " + toString(m.status) + (m.failed ? " (failed)" : "") +
-             (check_motion ? "" : " relocalised") + (implausible ? " odometry implausible" : "") + ", inliers " +
-             std::to_string(r.inliers) + " (recent " + std::to_string(static_cast<int>(inlier_ref)) +
-             "), edge/plane matches " + std::to_string(r.edge_matches) + "/" + std::to_string(r.plane_matches) +
-             ", yaw " + yawDeg(m.T_world) + " deg (predicted " + yawDeg(step.T_world) + ")");
+    logDebug("t=" + std::to_string(step.t) + " s: " + toString(m.status) +
+             (m.failed ? " (failed)" : "") + (check_motion ? "" : " relocalised") +
+             (implausible ? " odometry implausible" : "") + ", inliers " +
+             std::to_string(r.inliers) + " (recent " +
+             std::to_string(static_cast<int>(inlier_ref)) + "), edge/plane matches " +
+             std::to_string(r.edge_matches) + "/" + std::to_string(r.plane_matches) + ", yaw " +
+             yawDeg(m.T_world) + " deg (predicted " + yawDeg(step.T_world) + ")");
   }
 
   SlamResult finish();
@@ -282,8 +305,9 @@ SlamResult LidarSlam::Impl::finish() {
   for (const auto& r : frames) {
     StampedPose sp;
     sp.t = r.t;
-    sp.T_world_body = r.keyframe >= 0 ? graph.at(static_cast<std::size_t>(r.keyframe)).T_world * r.T_kf_frame
-                                      : r.T_kf_frame;
+    sp.T_world_body = r.keyframe >= 0
+                          ? graph.at(static_cast<std::size_t>(r.keyframe)).T_world * r.T_kf_frame
+                          : r.T_kf_frame;
     out.trajectory.push_back(sp);
     out.status.push_back(r.status);
     out.min_eig.push_back(r.min_eig);
@@ -292,21 +316,24 @@ SlamResult LidarSlam::Impl::finish() {
   // sink (each keyframe's cloud is freed after its last tile; the run is over).
   std::vector<MapKeyframe> map_kfs;
   map_kfs.reserve(graph.size());
-  for (std::size_t k = 0; k < graph.size(); ++k) map_kfs.push_back({graph.at(k).cloud, graph.at(k).T_world});
+  for (std::size_t k = 0; k < graph.size(); ++k)
+    map_kfs.push_back({graph.at(k).cloud, graph.at(k).T_world});
   CollectedMap collected;
   MapSink& sink = map_sink ? *map_sink : collected;
   sink.estimate(out.trajectory);
   std::optional<Progress> progress;  // the tiles are counted inside
-  out.map_points = buildMapByTiles(graph.clouds(), map_kfs, cfg.output.map_voxel_m, cfg.output.map_tile_m, sink,
-                                   [&](std::size_t done, std::size_t total) {
-                                     if (!progress) progress.emplace("SLAM: map tiles", total);
-                                     progress->update(done);
-                                   });
+  out.map_points =
+      buildMapByTiles(graph.clouds(), map_kfs, cfg.output.map_voxel_m, cfg.output.map_tile_m, sink,
+                      [&](std::size_t done, std::size_t total) {
+                        if (!progress) progress.emplace("SLAM: map tiles", total);
+                        progress->update(done);
+                      });
   if (progress) progress->finish();
   out.map = std::move(collected.map);
   if (graph.clouds().onDisk())
-    logInfo("SLAM: the keyframes' clouds took " + std::to_string(graph.clouds().bytesOnDisk() / 1000000) +
-            " MB in a temporary file (" + std::to_string(graph.size()) + " keyframes)");
+    logInfo("SLAM: the keyframes' clouds took " +
+            std::to_string(graph.clouds().bytesOnDisk() / 1000000) + " MB in a temporary file (" +
+            std::to_string(graph.size()) + " keyframes)");
   const slam::LoopStats& ls = loop_closer.stats();
   out.loops = ls.loops;
   out.loop_candidates = ls.candidates;
@@ -321,7 +348,9 @@ LidarSlam::LidarSlam(const Config& cfg, const LidarSpec& spec, const Pose3& T_wo
     : impl_(std::make_unique<Impl>(cfg, spec, T_world_first)) {}
 LidarSlam::~LidarSlam() = default;
 void LidarSlam::setMapSink(MapSink& sink) { impl_->map_sink = &sink; }
-void LidarSlam::keepCloudsOnDisk(const std::filesystem::path& dir) { impl_->graph.keepCloudsOnDisk(dir); }
+void LidarSlam::keepCloudsOnDisk(const std::filesystem::path& dir) {
+  impl_->graph.keepCloudsOnDisk(dir);
+}
 void LidarSlam::setInitialMotion(const Pose3& T_first_second, double dt_s) {
   impl_->motion.setInitialMotion(T_first_second, dt_s);
 }
@@ -337,7 +366,8 @@ bool LidarSlam::wantsEveryScan() const {
   const Impl& s = *impl_;
   if (s.frames.empty()) return false;
   if (s.frames.back().t < s.dense_until_t) return true;
-  return s.cfg.input.dense_turn_rate_deg_s > 0 && turnRateDegPerS() > s.cfg.input.dense_turn_rate_deg_s;
+  return s.cfg.input.dense_turn_rate_deg_s > 0 &&
+         turnRateDegPerS() > s.cfg.input.dense_turn_rate_deg_s;
 }
 SlamResult LidarSlam::finish() { return impl_->finish(); }
 
@@ -361,8 +391,9 @@ SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_w
       scan = source.scan(i);
     } catch (const std::exception& e) {
       ok = false;
-      if (missing++ < 5) logWarn(std::string("scan ") + std::to_string(i) + ": " + e.what() +
-                                 " (predicting with constant velocity)");
+      if (missing++ < 5)
+        logWarn(std::string("scan ") + std::to_string(i) + ": " + e.what() +
+                " (predicting with constant velocity)");
     }
     if (ok) {
       scan.t = source.time(i);

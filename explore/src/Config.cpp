@@ -33,7 +33,8 @@ void Config::validate() const {
   requirePositive("speed_factor", speed_factor, 3.0);
   requirePositive("max_time_s", max_time_s, 1e7);
   requirePositive("completeness_radius_m", completeness_radius_m, 1000.0);
-  if (map_poses != "truth" && map_poses != "slam") rejectValue("map_poses", map_poses, "truth | slam");
+  if (map_poses != "truth" && map_poses != "slam")
+    rejectValue("map_poses", map_poses, "truth | slam");
 }
 
 }  // namespace slamroute::explore

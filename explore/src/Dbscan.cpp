@@ -23,7 +23,8 @@ class Buckets {
         const auto it = cells_.find({cx + dx, cy + dy});
         if (it == cells_.end()) continue;
         for (int j : it->second)
-          if ((pts_[static_cast<std::size_t>(j)] - pts_[static_cast<std::size_t>(i)]).norm() <= eps_)
+          if ((pts_[static_cast<std::size_t>(j)] - pts_[static_cast<std::size_t>(i)]).norm() <=
+              eps_)
             out.push_back(j);
       }
     return out;
@@ -63,7 +64,8 @@ DbscanResult dbscan(const std::vector<Point2>& points, double eps, int min_point
       if (r.label[j] != kUnvisited) continue;
       r.label[j] = id;
       const std::vector<int> more = buckets.near(static_cast<int>(j));
-      if (static_cast<int>(more.size()) >= min_points) seeds.insert(seeds.end(), more.begin(), more.end());
+      if (static_cast<int>(more.size()) >= min_points)
+        seeds.insert(seeds.end(), more.begin(), more.end());
     }
   }
   return r;

@@ -44,19 +44,28 @@ nlohmann::json milestoneJson(const Milestone& m, double bound_m) {
 
 nlohmann::json summaryJson(const ExploreOptions& o, const ExploreResult& r,
                            const std::string& map_poses) {
-  nlohmann::json j = {{"net", o.net.string()},   {"strategy", r.strategy},
-                      {"vehicles", o.vehicles},   {"seed", o.seed},
+  nlohmann::json j = {{"net", o.net.string()},
+                      {"strategy", r.strategy},
+                      {"vehicles", o.vehicles},
+                      {"seed", o.seed},
                       {"map_poses", map_poses},
-                      {"directed_streets", r.total_edges}, {"streets_driven", r.edges_driven},
-                      {"end_time_s", r.end_time_s}, {"time_limit_hit", r.time_limit_hit},
-                      {"decisions", r.decisions}, {"offline_bound_m", r.offline_bound_m},
+                      {"directed_streets", r.total_edges},
+                      {"streets_driven", r.edges_driven},
+                      {"end_time_s", r.end_time_s},
+                      {"time_limit_hit", r.time_limit_hit},
+                      {"decisions", r.decisions},
+                      {"offline_bound_m", r.offline_bound_m},
                       {"offline_makespan_m", r.offline_makespan_m},
-                      {"streets_known", r.streets_known}, {"grid_cells_known", r.grid_cells_known}};
+                      {"streets_known", r.streets_known},
+                      {"grid_cells_known", r.grid_cells_known}};
   for (const Milestone& m : r.milestones)
     j["milestones"].push_back(milestoneJson(m, r.offline_bound_m));
   for (const VehicleResult& v : r.vehicles)
-    j["per_vehicle"].push_back({{"id", v.id}, {"depart_s", v.depart_s}, {"distance_m", v.distance_m},
-                                {"streets", v.edges.size()}, {"decisions", v.decisions}});
+    j["per_vehicle"].push_back({{"id", v.id},
+                                {"depart_s", v.depart_s},
+                                {"distance_m", v.distance_m},
+                                {"streets", v.edges.size()},
+                                {"decisions", v.decisions}});
   for (const CoverageSample& c : r.curve)
     j["curve"].push_back({c.time_s, c.fleet_distance_m, c.edges_driven});
   return j;
@@ -78,8 +87,10 @@ void writeCoveragePlot(const std::filesystem::path& path, const ExploreResult& r
     t.push_back(c.time_s);
     share.push_back(100.0 * c.edges_driven / std::max(1, r.total_edges));
   }
-  evaluate::plotCurve(path, t, share, "directed streets driven [%] vs simulated time [s] (" +
-                      r.strategy + ", " + std::to_string(r.vehicles.size()) + " vehicles)", 900, 100.0);
+  evaluate::plotCurve(path, t, share,
+                      "directed streets driven [%] vs simulated time [s] (" + r.strategy + ", " +
+                          std::to_string(r.vehicles.size()) + " vehicles)",
+                      900, 100.0);
 }
 
 }  // namespace
@@ -90,7 +101,8 @@ ExploreResult runExplore(const ExploreOptions& opts, const Config& cfg,
   StagingDir staging(opts.out_dir, kSummary);
   ExploreRun run(opts, cfg, world, drive);
   ExploreResult r = run.run();
-  for (double share : {0.90, 0.95, 1.0}) r.milestones.push_back(milestoneAt(r.curve, r.total_edges, share));
+  for (double share : {0.90, 0.95, 1.0})
+    r.milestones.push_back(milestoneAt(r.curve, r.total_edges, share));
   const OfflineBound bound = run.offlineBound();
   r.offline_bound_m = bound.total_m;
   r.offline_makespan_m = bound.makespan_m;

@@ -58,7 +58,8 @@ ExploreRun::ExploreRun(const ExploreOptions& opts, const Config& cfg,
   if (opts.vehicles < 1 || opts.vehicles > 64)
     throw std::invalid_argument("explore: --vehicles must be in [1, 64]");
   for (int e = 0; e < pg_.m; ++e) {
-    const RoadEdge& re = graph_.edges[static_cast<std::size_t>(pg_.edge_orig[static_cast<std::size_t>(e)])];
+    const RoadEdge& re =
+        graph_.edges[static_cast<std::size_t>(pg_.edge_orig[static_cast<std::size_t>(e)])];
     for (const auto& s : re.sumo_edges) edge_of_[s] = e;
   }
   driven_.assign(static_cast<std::size_t>(pg_.m), false);
@@ -152,7 +153,8 @@ void ExploreRun::follow(simulate::OnlineVehicles& vehicles, int k) {
   if (s.edge.empty()) return;
   const auto it = edge_of_.find(s.edge);
   if (it == edge_of_.end())
-    throw std::runtime_error(opts_.net.string() + ": explorer " + x.id + " left the drivable part on '" + s.edge + "'");
+    throw std::runtime_error(opts_.net.string() + ": explorer " + x.id +
+                             " left the drivable part on '" + s.edge + "'");
   if (it->second != x.edge) enterEdge(vehicles, k, it->second, result_.end_time_s);
 }
 
@@ -168,8 +170,9 @@ void ExploreRun::scan(int k, const simulate::OnlineVehicleState& s, const Pose3&
   std::vector<Point3> pts;
   pts.reserve(sweep.points.size());
   for (const ScanPoint& p : sweep.points) pts.push_back(T * Point3(p.x, p.y, p.z));
-  const std::vector<int> changed = grid_.addScan(pts, T.translation(), road_z, cfg_.grid.max_range_m,
-                                                 cfg_.grid.ground_tol_m, cfg_.grid.ground_grade);
+  const std::vector<int> changed =
+      grid_.addScan(pts, T.translation(), road_z, cfg_.grid.max_range_m, cfg_.grid.ground_tol_m,
+                    cfg_.grid.ground_grade);
   streets_.update(changed);
 }
 
@@ -242,7 +245,8 @@ int ExploreRun::wander(int e) const {
   int best = -1;
   for (int i = pg_.nextBegin(e); i < pg_.nextEnd(e); ++i) {
     const int n = pg_.next[static_cast<std::size_t>(i)];
-    if (best < 0 || drive_count_[static_cast<std::size_t>(n)] < drive_count_[static_cast<std::size_t>(best)])
+    if (best < 0 ||
+        drive_count_[static_cast<std::size_t>(n)] < drive_count_[static_cast<std::size_t>(best)])
       best = n;
   }
   if (best < 0) throw std::runtime_error(opts_.net.string() + ": no turn leaves a drivable street");
@@ -266,7 +270,8 @@ bool ExploreRun::finished() const {
   if (result_.edges_driven >= pg_.m) return true;
   // a street entered for the first time counts once it has been driven to its end
   if (explorers_.empty() || entered_ > result_.edges_driven) return false;
-  return std::all_of(explorers_.begin(), explorers_.end(), [](const Explorer& x) { return x.settled; });
+  return std::all_of(explorers_.begin(), explorers_.end(),
+                     [](const Explorer& x) { return x.settled; });
 }
 
 FleetView ExploreRun::view() const {

@@ -36,9 +36,9 @@ class ExploreRun {
     std::vector<int> route;     ///< the route SUMO has: edge, chosen turn, provisional ones
     double last_scan_m = -1e9;  ///< odometer at the last sweep [m]
     double odometer_m = 0.0;
-    Point2 pos = Point2::Zero();  ///< where it is (its start before it departs)
-    bool idle = false;          ///< the last decision found nothing to do
-    bool settled = false;       ///< idle through a whole street
+    Point2 pos = Point2::Zero();                  ///< where it is (its start before it departs)
+    bool idle = false;                            ///< the last decision found nothing to do
+    bool settled = false;                         ///< idle through a whole street
     std::optional<DeadReckoning> dead_reckoning;  ///< its pose estimate (map_poses: slam)
     VehicleResult result;
   };
@@ -70,13 +70,13 @@ class ExploreRun {
   StreetMap streets_;
   std::unique_ptr<Strategy> strategy_;
   std::vector<Explorer> explorers_;
-  std::vector<bool> driven_;          ///< entered (being or been driven)
-  std::vector<int> drive_count_;      ///< times completed
+  std::vector<bool> driven_;      ///< entered (being or been driven)
+  std::vector<int> drive_count_;  ///< times completed
   std::vector<int> targets_;
   ExploreResult result_;
-  int entered_ = 0;                   ///< streets entered at least once
+  int entered_ = 0;  ///< streets entered at least once
   std::size_t scans_ = 0;
-  double t0_ = -1.0;                  ///< first departure [s]
+  double t0_ = -1.0;  ///< first departure [s]
 };
 
 /// Bounding box of the net's drivable streets, grown by `margin_m`.

@@ -60,8 +60,9 @@ Point2 centreOf(const Segment& s) {
 /// Splits the largest segment in two by K-means until there are `groups` segments.
 void splitLargest(std::vector<Segment>& segs, int groups, std::uint64_t seed) {
   while (static_cast<int>(segs.size()) < groups) {
-    auto big = std::max_element(segs.begin(), segs.end(),
-                                [](const Segment& a, const Segment& b) { return a.size() < b.size(); });
+    auto big = std::max_element(segs.begin(), segs.end(), [](const Segment& a, const Segment& b) {
+      return a.size() < b.size();
+    });
     if (big->size() < 2) return;
     KMeansOptions o;
     o.seed = seed;
@@ -117,7 +118,8 @@ class FleetStrategy : public Strategy {
 
  private:
   /// Hungarian assignment of groups to segments, cost D_ij / W_j (leader to segment centre).
-  int segmentOfGroup(const FleetView& f, const std::vector<Segment>& segs, int groups, int g) const {
+  int segmentOfGroup(const FleetView& f, const std::vector<Segment>& segs, int groups,
+                     int g) const {
     std::vector<std::vector<double>> cost(static_cast<std::size_t>(groups));
     for (int i = 0; i < groups; ++i) {
       const Point2 leader = f.vehicles[static_cast<std::size_t>(i * group_size_)].pos;

@@ -52,7 +52,8 @@ OccupancyGrid occupancyFromScans(const ScanSource& scans, const Trajectory& pose
   return grid;
 }
 
-std::vector<bool> streetMask(const OccupancyGrid& grid, const RoadGraph& g, double street_radius_m) {
+std::vector<bool> streetMask(const OccupancyGrid& grid, const RoadGraph& g,
+                             double street_radius_m) {
   std::vector<bool> mask(grid.size(), false);
   const int reach = static_cast<int>(std::ceil(street_radius_m / grid.cellSize()));
   auto disc = [&](const Point3& p) {
@@ -63,7 +64,8 @@ std::vector<bool> streetMask(const OccupancyGrid& grid, const RoadGraph& g, doub
         const int col = grid.col(*c) + dc, row = grid.row(*c) + dr;
         if (!grid.inside(col, row)) continue;
         const int idx = row * grid.width() + col;
-        if ((grid.centre(idx) - p.head<2>()).norm() <= street_radius_m) mask[static_cast<std::size_t>(idx)] = true;
+        if ((grid.centre(idx) - p.head<2>()).norm() <= street_radius_m)
+          mask[static_cast<std::size_t>(idx)] = true;
       }
   };
   for (const RoadEdge& e : g.edges)
@@ -103,15 +105,18 @@ void writeFrontierProbabilityPng(const std::filesystem::path& path, const Occupa
   for (int i = 0; i < static_cast<int>(grid.size()); ++i) {
     if (!mask[static_cast<std::size_t>(i)]) continue;
     const Cell c = grid.at(i);
-    cv::Vec3b px = c == Cell::Unknown ? cv::Vec3b(110, 110, 110)
-                   : c == Cell::Ground ? cv::Vec3b(255, 255, 255) : cv::Vec3b(200, 90, 40);
+    cv::Vec3b px = c == Cell::Unknown  ? cv::Vec3b(110, 110, 110)
+                   : c == Cell::Ground ? cv::Vec3b(255, 255, 255)
+                                       : cv::Vec3b(200, 90, 40);
     const double p = std::clamp(map.frontierProbability(i) * 10.0, 0.0, 1.0);  // 0.1 = full red
-    if (p > 0) px = cv::Vec3b(static_cast<uchar>(px[0] * (1 - p)), static_cast<uchar>(px[1] * (1 - p)),
-                              static_cast<uchar>(px[2] * (1 - p) + 255 * p));
+    if (p > 0)
+      px = cv::Vec3b(static_cast<uchar>(px[0] * (1 - p)), static_cast<uchar>(px[1] * (1 - p)),
+                     static_cast<uchar>(px[2] * (1 - p) + 255 * p));
     img.at<cv::Vec3b>(grid.height() - 1 - grid.row(i), grid.col(i)) = px;
   }
   std::vector<uchar> buf;
-  if (!cv::imencode(".png", img, buf)) throw std::runtime_error(path.string() + ": PNG encoding failed");
+  if (!cv::imencode(".png", img, buf))
+    throw std::runtime_error(path.string() + ": PNG encoding failed");
   writeFileAtomic(path, std::string(buf.begin(), buf.end()));
 }
 

@@ -73,8 +73,9 @@ class GpFrontierStrategy : public Strategy {
 
 /// Signed turn from edge a onto edge b [rad], left positive, in (-pi, pi].
 double turnAngle(const rl::PlanGraph& pg, int a, int b) {
-  return std::remainder(pg.heading[static_cast<std::size_t>(b)] - pg.heading[static_cast<std::size_t>(a)],
-                        2.0 * std::numbers::pi);
+  return std::remainder(
+      pg.heading[static_cast<std::size_t>(b)] - pg.heading[static_cast<std::size_t>(a)],
+      2.0 * std::numbers::pi);
 }
 
 class SibaStrategy : public Strategy {
@@ -84,7 +85,8 @@ class SibaStrategy : public Strategy {
     std::vector<std::pair<double, int>> turns;  // rightmost first, a U-turn last
     for (int i = f.pg.nextBegin(e); i < f.pg.nextEnd(e); ++i) {
       const int n = f.pg.next[static_cast<std::size_t>(i)];
-      const bool u_turn = f.pg.v[static_cast<std::size_t>(n)] == f.pg.u[static_cast<std::size_t>(e)];
+      const bool u_turn =
+          f.pg.v[static_cast<std::size_t>(n)] == f.pg.u[static_cast<std::size_t>(e)];
       turns.push_back({u_turn ? 10.0 : turnAngle(f.pg, e, n), n});
     }
     std::sort(turns.begin(), turns.end());

@@ -37,10 +37,14 @@ Point2 halfway(const Polyline& pl) {
 }  // namespace
 
 StreetMap::StreetMap(const rl::PlanGraph& pg, const RoadGraph& g, const OccupancyGrid& grid)
-    : grid_(grid), cells_(static_cast<std::size_t>(pg.m)), seen_(static_cast<std::size_t>(pg.m), 0),
-      offered_(static_cast<std::size_t>(pg.m), false), mid_(static_cast<std::size_t>(pg.m)) {
+    : grid_(grid),
+      cells_(static_cast<std::size_t>(pg.m)),
+      seen_(static_cast<std::size_t>(pg.m), 0),
+      offered_(static_cast<std::size_t>(pg.m), false),
+      mid_(static_cast<std::size_t>(pg.m)) {
   for (int e = 0; e < pg.m; ++e) {
-    const Polyline& pl = g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].polyline;
+    const Polyline& pl =
+        g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].polyline;
     cells_[static_cast<std::size_t>(e)] = cellsAlong(pl, grid, grid.cellSize() / 2.0);
     mid_[static_cast<std::size_t>(e)] = halfway(pl);
     for (int c : cells_[static_cast<std::size_t>(e)]) {
@@ -82,7 +86,8 @@ std::vector<FrontierPoint> StreetMap::frontierPoints() const {
         const auto it = edges_at_.find(r * grid_.width() + c);
         if (it == edges_at_.end()) continue;
         for (int e : it->second)
-          if (!fullySeen(e) && std::find(near.begin(), near.end(), e) == near.end()) near.push_back(e);
+          if (!fullySeen(e) && std::find(near.begin(), near.end(), e) == near.end())
+            near.push_back(e);
       }
     std::sort(near.begin(), near.end());
     for (int e : near) out.push_back({f, e, grid_.centre(f)});

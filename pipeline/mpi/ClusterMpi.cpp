@@ -56,7 +56,8 @@ class MpiCluster : public Cluster {
     int n = 0;
     MPI_Get_count(&st, MPI_CHAR, &n);
     std::string text(static_cast<std::size_t>(n), '\0');
-    MPI_Recv(text.data(), n, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Recv(text.data(), n, MPI_CHAR, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
     return Message{st.MPI_SOURCE, static_cast<Tag>(st.MPI_TAG), std::move(text)};
   }
 

@@ -9,7 +9,8 @@ namespace fs = std::filesystem;
 void makeFleetRouteDrivable(const SumoNet& net, const fs::path& route_json) {
   FleetRoute f = FleetRoute::readJson(route_json);
   for (std::size_t k = 0; k < f.vehicles.size(); ++k)
-    repairSumoTurns(net, f.vehicles[k], route_json.string() + " (vehicle " + std::to_string(k) + ")");
+    repairSumoTurns(net, f.vehicles[k],
+                    route_json.string() + " (vehicle " + std::to_string(k) + ")");
   f.writeJson(route_json);
   fs::path rou = route_json;
   rou.replace_extension(".rou.xml");

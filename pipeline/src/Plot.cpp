@@ -24,7 +24,8 @@ std::string fmt(double v, int prec) {
 }  // namespace
 
 void scatterPng(const fs::path& path, const std::vector<double>& x, const std::vector<double>& y,
-                const std::string& xlabel, const std::string& ylabel, const std::vector<std::string>& xticks) {
+                const std::string& xlabel, const std::string& ylabel,
+                const std::vector<std::string>& xticks) {
   const int W = 640, H = 480, m = 60;
   cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
   if (x.empty()) return;
@@ -47,7 +48,8 @@ void scatterPng(const fs::path& path, const std::vector<double>& x, const std::v
     text(fmt(x0, 2), {m - 10, H - m + 18});
     text(fmt(x1, 2), {W - m, H - m + 18});
   } else {
-    for (std::size_t i = 0; i < xticks.size(); ++i) text(xticks[i], {px(static_cast<double>(i)) - 20, H - m + 18});
+    for (std::size_t i = 0; i < xticks.size(); ++i)
+      text(xticks[i], {px(static_cast<double>(i)) - 20, H - m + 18});
   }
   text(fmt(y1, 1), {5, m / 2 + 5});
   text("0", {m - 15, H - m});

@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "slamroute/core/Route.hpp"
-#include "slamroute/core/SumoNet.hpp"
 #include "slamroute/core/SumoCoverage.hpp"
+#include "slamroute/core/SumoNet.hpp"
 #include "slamroute/core/SumoRoute.hpp"
 
 namespace slamroute::pipeline {
@@ -13,9 +13,9 @@ namespace fs = std::filesystem;
 
 Step childStep(const ChildOptions& opts, const std::string& label, std::vector<std::string> args,
                const fs::path& log, long long seed) {
-  std::vector<std::string> full{"--seed",
-                                std::to_string(seed >= 0 ? static_cast<std::uint64_t>(seed) : opts.seed),
-                                "--log-level", opts.debug_log ? "debug" : "info"};
+  std::vector<std::string> full{
+      "--seed", std::to_string(seed >= 0 ? static_cast<std::uint64_t>(seed) : opts.seed),
+      "--log-level", opts.debug_log ? "debug" : "info"};
   if (!opts.config_file.empty()) {
     full.push_back("--config");
     full.push_back(opts.config_file);
@@ -59,8 +59,8 @@ Step budgetedPlanStep(const ChildOptions& opts, const RunLayout& run, const Plan
 
 Step driveStep(const ChildOptions& opts, const RunLayout& run, const std::string& net,
                const std::string& id, bool save_scans, long long seed) {
-  std::vector<std::string> a{"drive", "--net", net, "--route", run.route(id).string(), "--out",
-                             run.drive(id).string()};
+  std::vector<std::string> a{
+      "drive", "--net", net, "--route", run.route(id).string(), "--out", run.drive(id).string()};
   if (save_scans) a.push_back("--save-scans");
   Step s = childStep(opts, "drive " + id, a, run.logs() / ("drive-" + id + ".log"), seed);
   s.output = run.drive(id) / "drive.json";  // the folder appears complete
@@ -69,9 +69,10 @@ Step driveStep(const ChildOptions& opts, const RunLayout& run, const std::string
 
 Step evaluateStep(const ChildOptions& opts, const RunLayout& run, const std::string& id,
                   long long seed) {
-  Step s = childStep(opts, "evaluate " + id,
-                     {"evaluate", "--drive", run.drive(id).string(), "--out", run.eval(id).string()},
-                     run.logs() / ("evaluate-" + id + ".log"), seed);
+  Step s =
+      childStep(opts, "evaluate " + id,
+                {"evaluate", "--drive", run.drive(id).string(), "--out", run.eval(id).string()},
+                run.logs() / ("evaluate-" + id + ".log"), seed);
   s.output = run.metrics(id);  // written last
   return s;
 }
@@ -94,15 +95,18 @@ void repairSumoTurns(const SumoNet& net, Route& r, const std::string& where) {
   if (legal.repaired_transitions > 0 || legal.dropped_edges > 0) {
     std::ostringstream note;
     note << (r.notes.empty() ? "" : r.notes + "; ") << "SUMO route: " << legal.repaired_transitions
-         << " transitions joined by legal detours (+" << static_cast<int>(legal.added_length_m) << " m)";
-    if (legal.dropped_edges > 0) note << ", " << legal.dropped_edges << " edges no legal path passes dropped";
+         << " transitions joined by legal detours (+" << static_cast<int>(legal.added_length_m)
+         << " m)";
+    if (legal.dropped_edges > 0)
+      note << ", " << legal.dropped_edges << " edges no legal path passes dropped";
     r.notes = note.str();
     r.sumo_edges = legal.edges;
   }
   r.sumo_coverage = sumoCoverage(net, r.sumo_edges);  // of the route SUMO drives
 }
 
-std::vector<std::string> longestRouteFirst(const RunLayout& run, const std::vector<std::string>& ids) {
+std::vector<std::string> longestRouteFirst(const RunLayout& run,
+                                           const std::vector<std::string>& ids) {
   std::vector<std::pair<double, std::string>> by_length;
   for (const auto& id : ids) by_length.emplace_back(-routeLength(run.route(id)), id);
   std::stable_sort(by_length.begin(), by_length.end(),

@@ -2,8 +2,8 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -45,7 +45,8 @@ int startStep(const Step& s) {
   std::filesystem::create_directories(s.log.parent_path());
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, s.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, s.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
   posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   const std::string exe = selfExe();
@@ -72,7 +73,8 @@ std::optional<int> finishedStep(int pid) {
   int status = 0;
   const pid_t r = ::waitpid(pid, &status, WNOHANG);
   if (r == 0) return std::nullopt;
-  if (r < 0) throw std::runtime_error("waiting for step process " + std::to_string(pid) + " failed");
+  if (r < 0)
+    throw std::runtime_error("waiting for step process " + std::to_string(pid) + " failed");
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
@@ -100,7 +102,8 @@ StopSignals::StopSignals() {
 }
 
 StopSignals::~StopSignals() {
-  for (std::size_t i = 0; i < kStopSignals.size(); ++i) ::sigaction(kStopSignals[i], &old_[i], nullptr);
+  for (std::size_t i = 0; i < kStopSignals.size(); ++i)
+    ::sigaction(kStopSignals[i], &old_[i], nullptr);
 }
 
 int StopSignals::received() const { return g_stop_signal; }
@@ -117,7 +120,8 @@ std::string lastLogLine(const std::filesystem::path& log, std::size_t max_bytes)
   std::ifstream in(log, std::ios::binary | std::ios::ate);
   if (!in) return {};
   const std::streamoff size = in.tellg();
-  const std::streamoff from = std::max<std::streamoff>(0, size - static_cast<std::streamoff>(max_bytes));
+  const std::streamoff from =
+      std::max<std::streamoff>(0, size - static_cast<std::streamoff>(max_bytes));
   in.seekg(from);
   std::string line, last;
   bool first = from > 0;  // a line cut by the window is not quoted
@@ -150,10 +154,12 @@ std::string selfExe() {
 namespace {
 
 using StepClock = std::chrono::steady_clock;
-using RunningSteps = std::map<pid_t, std::pair<std::size_t, StepClock::time_point>>;  ///< pid -> step, start
+using RunningSteps =
+    std::map<pid_t, std::pair<std::size_t, StepClock::time_point>>;  ///< pid -> step, start
 
 /// Passes the stop signal on to the running steps, waits for them and throws Interrupted.
-[[noreturn]] void stopOnSignal(int sig, const std::vector<Step>& steps, const RunningSteps& running) {
+[[noreturn]] void stopOnSignal(int sig, const std::vector<Step>& steps,
+                               const RunningSteps& running) {
   std::string stopped;
   std::vector<int> pids;
   for (const auto& [p, run] : running) {
@@ -172,7 +178,8 @@ void quoteProgress(const std::vector<Step>& steps, const RunningSteps& running,
   for (const auto& [p, run] : running) {
     const std::string line = lastLogLine(steps[run.first].log);
     char buf[64];
-    std::snprintf(buf, sizeof buf, " [%.0f s]", std::chrono::duration<double>(now - run.second).count());
+    std::snprintf(buf, sizeof buf, " [%.0f s]",
+                  std::chrono::duration<double>(now - run.second).count());
     logInfo("  running  " + steps[run.first].label + buf + (line.empty() ? "" : ": " + line));
   }
 }
@@ -202,7 +209,8 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
   const StopSignals stop_signals;
   while (next < steps.size() || !running.empty()) {
     if (const int sig = stop_signals.received()) stopOnSignal(sig, steps, running);
-    while (failure.empty() && next < steps.size() && static_cast<int>(running.size()) < std::max(1, jobs)) {
+    while (failure.empty() && next < steps.size() &&
+           static_cast<int>(running.size()) < std::max(1, jobs)) {
       logInfo("  started  " + steps[next].label);
       std::error_code ec;
       std::filesystem::remove(stampPath(steps[next]), ec);  // stale until the step succeeds again
@@ -215,7 +223,8 @@ std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, doubl
     if (pid < 0) throw std::runtime_error("waiting for pipeline steps failed");
     if (pid == 0) {  // none finished: quote the running steps' progress now and then
       const auto now = StepClock::now();
-      if (status_every_s > 0.0 && std::chrono::duration<double>(now - last_status).count() >= status_every_s) {
+      if (status_every_s > 0.0 &&
+          std::chrono::duration<double>(now - last_status).count() >= status_every_s) {
         last_status = now;
         quoteProgress(steps, running, now);
       }

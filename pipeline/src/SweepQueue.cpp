@@ -18,7 +18,8 @@ std::optional<std::size_t> SweepQueue::next(double free_gb, bool idle) const {
   for (std::size_t i = 0; i < tasks_.size(); ++i) {
     if (status_[i].state != TaskState::Ready) continue;
     if (!best || tasks_[i].cost > tasks_[*best].cost) best = i;
-    if (tasks_[i].memory_gb <= free_gb && (!best_fitting || tasks_[i].cost > tasks_[*best_fitting].cost))
+    if (tasks_[i].memory_gb <= free_gb &&
+        (!best_fitting || tasks_[i].cost > tasks_[*best_fitting].cost))
       best_fitting = i;
   }
   return best_fitting ? best_fitting : (idle ? best : std::nullopt);

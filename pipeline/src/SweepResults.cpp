@@ -27,9 +27,12 @@ void flatten(const json& j, const std::string& prefix, std::map<std::string, dou
   for (const auto& [k, v] : j.items()) {
     const std::string key = prefix + k;
     if (isTiming(key)) continue;
-    if (v.is_object()) flatten(v, key + ".", out);
-    else if (v.is_number()) out[key] = v.get<double>();
-    else if (v.is_boolean()) out[key] = v.get<bool>() ? 1.0 : 0.0;
+    if (v.is_object())
+      flatten(v, key + ".", out);
+    else if (v.is_number())
+      out[key] = v.get<double>();
+    else if (v.is_boolean())
+      out[key] = v.get<bool>() ? 1.0 : 0.0;
   }
 }
 
@@ -38,8 +41,8 @@ std::string rowStatus(const SweepRow& row, const SweepOutcome& o, const fs::path
   const fs::path dir = rowLayout(out, row).out;
   for (std::size_t i = 0; i < o.tasks.size(); ++i) {
     const SweepTask& t = o.tasks[i];
-    const bool of_row = t.run.out == dir && (t.kind == TaskKind::Survey || t.kind == TaskKind::Graph ||
-                                             t.plan.id == row.planner);
+    const bool of_row = t.run.out == dir && (t.kind == TaskKind::Survey ||
+                                             t.kind == TaskKind::Graph || t.plan.id == row.planner);
     if (of_row && o.status[i].state != TaskState::Done) return "failed: " + t.name;
   }
   return "ok";
@@ -58,12 +61,14 @@ std::string num(double v) {
   return buf;
 }
 
-std::string groupName(const SweepRow& r) { return netStem(r.net) + " / " + r.variant + " / " + r.planner; }
+std::string groupName(const SweepRow& r) {
+  return netStem(r.net) + " / " + r.variant + " / " + r.planner;
+}
 
 }  // namespace
 
-std::vector<RowResult> collectResults(const std::vector<SweepRow>& rows, const SweepOutcome& outcome,
-                                      const fs::path& out) {
+std::vector<RowResult> collectResults(const std::vector<SweepRow>& rows,
+                                      const SweepOutcome& outcome, const fs::path& out) {
   std::vector<RowResult> res;
   for (const auto& row : rows) {
     RowResult r{row, rowStatus(row, outcome, out), {}};
@@ -88,8 +93,8 @@ std::string resultsCsv(const std::vector<RowResult>& results) {
   for (const auto& k : keys) csv << "," << k;
   csv << "\n";
   for (const auto& r : results) {
-    csv << netStem(r.row.net) << "," << r.row.variant << "," << r.row.planner << "," << r.row.seed << ","
-        << r.status;
+    csv << netStem(r.row.net) << "," << r.row.variant << "," << r.row.planner << "," << r.row.seed
+        << "," << r.status;
     for (const auto& k : keys) {
       const auto it = r.metrics.find(k);
       csv << "," << (it == r.metrics.end() ? std::string() : num(it->second));
@@ -105,13 +110,17 @@ struct Headline {
   int decimals;
 };
 const std::vector<Headline> kHeadlines = {
-    {"eval.ate_rmse_m", "ATE RMSE [m]", 3},          {"eval.ate_mean_m", "ATE mean [m]", 3},
-    {"eval.rpe_trans_pct", "RPE [%]", 2},             {"eval.loop_closures", "loop closures", 1},
+    {"eval.ate_rmse_m", "ATE RMSE [m]", 3},
+    {"eval.ate_mean_m", "ATE mean [m]", 3},
+    {"eval.rpe_trans_pct", "RPE [%]", 2},
+    {"eval.loop_closures", "loop closures", 1},
     {"eval.map_aligned_median_dist_m", "map error, aligned, median [m]", 3},
-    {"route.length_m", "route length [m]", 0},        {"route.edge_coverage_pct", "edge coverage [%]", 1}};
+    {"route.length_m", "route length [m]", 0},
+    {"route.edge_coverage_pct", "edge coverage [%]", 1}};
 
 /// The groups (net / variant / planner) in the order of the rows, with their successful rows.
-std::vector<std::pair<std::string, std::vector<const RowResult*>>> groups(const std::vector<RowResult>& results) {
+std::vector<std::pair<std::string, std::vector<const RowResult*>>> groups(
+    const std::vector<RowResult>& results) {
   std::vector<std::pair<std::string, std::vector<const RowResult*>>> g;
   for (const auto& r : results) {
     const std::string name = groupName(r.row);
@@ -138,7 +147,8 @@ std::string summaryTable(const std::vector<RowResult>& results) {
   md << "\n";
   for (const auto& [name, rows] : groups(results)) {
     md << "| " << name << " | " << rows.size() << " |";
-    for (const auto& h : kHeadlines) md << " " << formatMeanSd(meanSd(values(rows, h.key)), h.decimals) << " |";
+    for (const auto& h : kHeadlines)
+      md << " " << formatMeanSd(meanSd(values(rows, h.key)), h.decimals) << " |";
     md << "\n";
   }
   return md.str();
@@ -171,12 +181,18 @@ std::string summaryPlots(const std::vector<RowResult>& results, const fs::path& 
 
 const char* stateName(TaskState s) {
   switch (s) {
-    case TaskState::Waiting: return "waiting";
-    case TaskState::Ready: return "ready";
-    case TaskState::Running: return "running";
-    case TaskState::Done: return "done";
-    case TaskState::Failed: return "failed";
-    case TaskState::Skipped: return "skipped";
+    case TaskState::Waiting:
+      return "waiting";
+    case TaskState::Ready:
+      return "ready";
+    case TaskState::Running:
+      return "running";
+    case TaskState::Done:
+      return "done";
+    case TaskState::Failed:
+      return "failed";
+    case TaskState::Skipped:
+      return "skipped";
   }
   return "?";
 }
@@ -187,8 +203,8 @@ std::string tasksCsv(const SweepOutcome& o) {
   csv << "task,state,attempts,kept,seconds\n";
   for (std::size_t i = 0; i < o.tasks.size(); ++i) {
     const TaskStatus& s = o.status[i];
-    csv << o.tasks[i].name << "," << stateName(s.state) << "," << s.attempts << "," << (s.kept ? 1 : 0) << ","
-        << num(s.seconds) << "\n";
+    csv << o.tasks[i].name << "," << stateName(s.state) << "," << s.attempts << ","
+        << (s.kept ? 1 : 0) << "," << num(s.seconds) << "\n";
   }
   return csv.str();
 }
@@ -217,10 +233,11 @@ std::string taskCounts(const SweepOutcome& o) {
     if (s.state != TaskState::Done) ++failed;
   }
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "%zu tasks on %d rank(s) in %.0f s: %d done (%d kept from an earlier sweep, %d after a "
-                "retry), %d failed or not run (failed_tasks.txt)",
-                o.tasks.size(), o.ranks, o.seconds, ran + kept, kept, retried, failed);
+  std::snprintf(
+      buf, sizeof buf,
+      "%zu tasks on %d rank(s) in %.0f s: %d done (%d kept from an earlier sweep, %d after a "
+      "retry), %d failed or not run (failed_tasks.txt)",
+      o.tasks.size(), o.ranks, o.seconds, ran + kept, kept, retried, failed);
   return buf;
 }
 
@@ -232,11 +249,13 @@ void writeSweepResults(const std::vector<RowResult>& results, const SweepOutcome
   writeFileAtomic(out / "failed_tasks.txt", failedList(outcome));
   writeFileAtomic(out / "tasks.csv", tasksCsv(outcome));
   std::ostringstream md;
-  md << "# Sweep summary\n\nCommand: `" << command << "`  \n" << taskCounts(outcome)
+  md << "# Sweep summary\n\nCommand: `" << command << "`  \n"
+     << taskCounts(outcome)
      << ".\n\nMean ± sample standard deviation over the seeds of each net, config variant and "
         "planner (runs: rows whose every task succeeded; every metric of every row is in "
         "results.csv).\n\n"
-     << summaryTable(results) << "\n" << summaryPlots(results, out);
+     << summaryTable(results) << "\n"
+     << summaryPlots(results, out);
   writeFileAtomic(out / "summary.md", md.str());
 }
 

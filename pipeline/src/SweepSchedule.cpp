@@ -38,8 +38,12 @@ std::vector<QueuedTask> queued(const std::vector<SweepTask>& tasks) {
 class Scheduler {
  public:
   Scheduler(Cluster& c, std::vector<SweepTask> tasks, const SweepOptions& o)
-      : c_(c), tasks_(std::move(tasks)), q_(queued(tasks_), o.max_attempts), o_(o),
-        steps_(tasks_.size()), ranks_(static_cast<std::size_t>(c.size())) {
+      : c_(c),
+        tasks_(std::move(tasks)),
+        q_(queued(tasks_), o.max_attempts),
+        o_(o),
+        steps_(tasks_.size()),
+        ranks_(static_cast<std::size_t>(c.size())) {
     ranks_[0].memory_gb = availableMemoryGb();
   }
 
@@ -76,12 +80,15 @@ class Scheduler {
 
   void receive() {
     while (auto m = c_.poll()) {
-      if (m->from <= 0 || m->from >= c_.size() || !rank(m->from).alive) continue;  // a rank taken for dead
+      if (m->from <= 0 || m->from >= c_.size() || !rank(m->from).alive)
+        continue;  // a rank taken for dead
       rank(m->from).heard = Clock::now();
-      if (m->tag == Tag::Hello) rank(m->from).memory_gb = json::parse(m->text).value("memory_gb", 0.0);
+      if (m->tag == Tag::Hello)
+        rank(m->from).memory_gb = json::parse(m->text).value("memory_gb", 0.0);
       if (m->tag == Tag::Done) {
         const json j = json::parse(m->text);
-        finish(j.at("task").get<std::size_t>(), j.at("exit").get<int>(), j.at("seconds").get<double>(), m->from);
+        finish(j.at("task").get<std::size_t>(), j.at("exit").get<int>(),
+               j.at("seconds").get<double>(), m->from);
       }
     }
   }
@@ -120,8 +127,9 @@ class Scheduler {
       if (!s.alive || secondsSince(s.heard) < o_.worker_timeout_s) continue;
       s.alive = false;
       c_.peerDied(r);
-      logWarn("rank " + std::to_string(r) + " silent for " + std::to_string(static_cast<int>(o_.worker_timeout_s)) +
-              " s: taken for dead, its " + std::to_string(s.running.size()) + " task(s) re-queued");
+      logWarn("rank " + std::to_string(r) + " silent for " +
+              std::to_string(static_cast<int>(o_.worker_timeout_s)) + " s: taken for dead, its " +
+              std::to_string(s.running.size()) + " task(s) re-queued");
       for (std::size_t i : s.running) {
         q_.requeue(i, "rank " + std::to_string(r) + " died while running it");
         logInfo("  re-queued " + tasks_[i].name);
@@ -164,7 +172,10 @@ class Scheduler {
       return;
     }
     c_.send(r, Tag::Task,
-            json{{"task", i}, {"label", steps_[i].label}, {"args", steps_[i].args}, {"log", steps_[i].log.string()}}
+            json{{"task", i},
+                 {"label", steps_[i].label},
+                 {"args", steps_[i].args},
+                 {"log", steps_[i].log.string()}}
                 .dump());
   }
 
@@ -222,7 +233,8 @@ class Scheduler {
 
 }  // namespace
 
-SweepOutcome scheduleSweep(Cluster& cluster, std::vector<SweepTask> tasks, const SweepOptions& opts) {
+SweepOutcome scheduleSweep(Cluster& cluster, std::vector<SweepTask> tasks,
+                           const SweepOptions& opts) {
   return Scheduler(cluster, std::move(tasks), opts).run();
 }
 

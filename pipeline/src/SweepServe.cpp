@@ -39,8 +39,11 @@ void reportFinished(Cluster& c, std::map<int, Running>& running) {
       ++it;
       continue;
     }
-    c.send(0, Tag::Done,
-           json{{"task", it->second.task}, {"exit", *code}, {"seconds", secondsSince(it->second.start)}}.dump());
+    c.send(
+        0, Tag::Done,
+        json{
+            {"task", it->second.task}, {"exit", *code}, {"seconds", secondsSince(it->second.start)}}
+            .dump());
     it = running.erase(it);
   }
 }

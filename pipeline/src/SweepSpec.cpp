@@ -46,9 +46,11 @@ std::vector<SweepVariant> readVariants(const YAML::Node& root, const fs::path& b
 }
 
 SweepRow readRow(const YAML::Node& r, const fs::path& base) {
-  if (!r["net"] || !r["planner"] || !r["seed"]) throw SpecError("a row needs net, planner and seed");
-  SweepRow row{existingFile(base, r["net"].as<std::string>(), "net"), r["planner"].as<std::string>(),
-               r["seed"].as<std::uint64_t>(), r["variant"] ? r["variant"].as<std::string>() : "default"};
+  if (!r["net"] || !r["planner"] || !r["seed"])
+    throw SpecError("a row needs net, planner and seed");
+  SweepRow row{existingFile(base, r["net"].as<std::string>(), "net"),
+               r["planner"].as<std::string>(), r["seed"].as<std::uint64_t>(),
+               r["variant"] ? r["variant"].as<std::string>() : "default"};
   return row;
 }
 
@@ -68,7 +70,8 @@ SweepSpec SweepSpec::readYaml(const fs::path& file) {
     checkKeys(root);
     const fs::path base = fs::absolute(file).parent_path();
     SweepSpec s;
-    for (const auto& n : list<std::string>(root, "nets")) s.nets.push_back(existingFile(base, n, "net"));
+    for (const auto& n : list<std::string>(root, "nets"))
+      s.nets.push_back(existingFile(base, n, "net"));
     s.planners = list<std::string>(root, "planners");
     s.seeds = list<std::uint64_t>(root, "seeds");
     s.variants = readVariants(root, base);

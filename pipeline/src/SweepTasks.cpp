@@ -22,7 +22,7 @@ struct Builder {
   fs::path out;
   ChildOptions global;  // the sweep command's own options: config when a variant has none
   std::vector<SweepTask> tasks;
-  std::map<GroupKey, std::size_t> graph_of;                     // group -> its graph task
+  std::map<GroupKey, std::size_t> graph_of;                         // group -> its graph task
   std::map<std::pair<GroupKey, std::string>, std::size_t> plan_of;  // (group, planner) -> plan task
 
   std::size_t add(SweepTask t) {
@@ -94,11 +94,16 @@ std::vector<SweepTask> sweepTasks(const SweepSpec& spec, const std::vector<Sweep
 
 Step taskStep(const SweepTask& t) {
   switch (t.kind) {
-    case TaskKind::Survey: return surveyStep(t.opts, t.run, t.net);
-    case TaskKind::Graph: return buildGraphStep(t.opts, t.run, t.net);
-    case TaskKind::Plan: return budgetedPlanStep(t.opts, t.run, t.plan);
-    case TaskKind::Drive: return driveStep(t.opts, t.run, t.net, t.plan.id);
-    case TaskKind::Evaluate: return evaluateStep(t.opts, t.run, t.plan.id);
+    case TaskKind::Survey:
+      return surveyStep(t.opts, t.run, t.net);
+    case TaskKind::Graph:
+      return buildGraphStep(t.opts, t.run, t.net);
+    case TaskKind::Plan:
+      return budgetedPlanStep(t.opts, t.run, t.plan);
+    case TaskKind::Drive:
+      return driveStep(t.opts, t.run, t.net, t.plan.id);
+    case TaskKind::Evaluate:
+      return evaluateStep(t.opts, t.run, t.plan.id);
   }
   throw std::logic_error("unknown task kind");
 }
@@ -118,11 +123,16 @@ double taskCost(const SweepTask& t) {
   // Weights from the step times of `run` on the default city (report.md, "Step times"): the SLAM
   // run dominates, then the drive, the survey, planning and the graph.
   switch (t.kind) {
-    case TaskKind::Survey: return 4.0 * t.net_mb;
-    case TaskKind::Graph: return 1.0 * t.net_mb;
-    case TaskKind::Plan: return (t.plan.planner == "qlearning" ? 3.0 : 1.0) * t.net_mb;
-    case TaskKind::Drive: return 5.0 * t.net_mb + 1.0 * plannedKm(t);
-    case TaskKind::Evaluate: return 10.0 * t.net_mb + 4.0 * plannedKm(t);
+    case TaskKind::Survey:
+      return 4.0 * t.net_mb;
+    case TaskKind::Graph:
+      return 1.0 * t.net_mb;
+    case TaskKind::Plan:
+      return (t.plan.planner == "qlearning" ? 3.0 : 1.0) * t.net_mb;
+    case TaskKind::Drive:
+      return 5.0 * t.net_mb + 1.0 * plannedKm(t);
+    case TaskKind::Evaluate:
+      return 10.0 * t.net_mb + 4.0 * plannedKm(t);
   }
   return 0.0;
 }

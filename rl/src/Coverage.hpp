@@ -20,14 +20,17 @@ class Coverage {
   }
   /// Driving edge e covers something new.
   bool isNew(int e) const {
-    return goal_ == Goal::Nodes ? !node_[static_cast<std::size_t>(pg_.v[static_cast<std::size_t>(e)])]
-                                : !street_[static_cast<std::size_t>(pg_.street[static_cast<std::size_t>(e)])];
+    return goal_ == Goal::Nodes
+               ? !node_[static_cast<std::size_t>(pg_.v[static_cast<std::size_t>(e)])]
+               : !street_[static_cast<std::size_t>(pg_.street[static_cast<std::size_t>(e)])];
   }
   /// Records driving e; returns whether it covered something new.
   bool drive(int e) {
     if (!isNew(e)) return false;
-    if (goal_ == Goal::Nodes) node_[static_cast<std::size_t>(pg_.v[static_cast<std::size_t>(e)])] = 1;
-    else street_[static_cast<std::size_t>(pg_.street[static_cast<std::size_t>(e)])] = 1;
+    if (goal_ == Goal::Nodes)
+      node_[static_cast<std::size_t>(pg_.v[static_cast<std::size_t>(e)])] = 1;
+    else
+      street_[static_cast<std::size_t>(pg_.street[static_cast<std::size_t>(e)])] = 1;
     --remaining_;
     return true;
   }

@@ -102,16 +102,15 @@ PlanOutput planCoverage(const PlanGraph& pg, const TurnPaths& paths, const Confi
   PlanOutput out;
   out.edges = walk.edges;
   out.heuristic = true;
-  out.stats = CoverageStats{
-      static_cast<long long>(walk.reached.size()),
-      static_cast<long long>(walk.revisit_after.size()),
-      walk.revisit_length_m,
-      {tour.cost_m, tour.nearest_neighbour_m, tour.improved_at_iteration,
-       static_cast<long long>(tour.cities.size())},
-      ga,
-      dist_s,
-      aco_s,
-      secondsSince(t0)};
+  out.stats = CoverageStats{static_cast<long long>(walk.reached.size()),
+                            static_cast<long long>(walk.revisit_after.size()),
+                            walk.revisit_length_m,
+                            {tour.cost_m, tour.nearest_neighbour_m, tour.improved_at_iteration,
+                             static_cast<long long>(tour.cities.size())},
+                            ga,
+                            dist_s,
+                            aco_s,
+                            secondsSince(t0)};
   return out;
 }
 

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "slamroute/core/Log.hpp"
 #include "PlannerStatsJson.hpp"
+#include "slamroute/core/Log.hpp"
 #include "slamroute/rl/Planners.hpp"
 #include "slamroute/rl/Uncertainty.hpp"
 
@@ -45,17 +45,19 @@ void checkSettings(const Config& cfg) {
 }
 
 /// The start node in the planning graph's numbering (its node 0 unless cfg.start_node is set).
-int localStart(const RoadGraph& g, const PlanGraph& pg, const Config& cfg, const std::string& where) {
+int localStart(const RoadGraph& g, const PlanGraph& pg, const Config& cfg,
+               const std::string& where) {
   if (cfg.start_node < 0) return 0;
   if (cfg.start_node >= static_cast<int>(g.nodes.size()))
     throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
-                                " does not exist (the graph has " +
-                                std::to_string(g.nodes.size()) + " nodes)");
+                                " does not exist (the graph has " + std::to_string(g.nodes.size()) +
+                                " nodes)");
   const int start = pg.node_local[static_cast<std::size_t>(cfg.start_node)];
   if (start < 0)
-    throw std::invalid_argument(where + ": start node " + std::to_string(cfg.start_node) +
-                                " is unreachable (outside the largest part that is strongly connected under the turn "
-                                "permissions)");
+    throw std::invalid_argument(
+        where + ": start node " + std::to_string(cfg.start_node) +
+        " is unreachable (outside the largest part that is strongly connected under the turn "
+        "permissions)");
   return start;
 }
 
@@ -85,7 +87,8 @@ std::string extraJson(const RoadGraph& g, const PlanGraph& pg, const Config& cfg
   extra["uncertainty"] = uncertaintyJson(pg, cfg, start, out.edges);
   int without_sumo = 0;
   for (int e : out.edges)
-    without_sumo += g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges.empty();
+    without_sumo += g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])]
+                        .sumo_edges.empty();
   extra["edges_without_sumo"] = without_sumo;
   extra["start_node"] = pg.node_orig[static_cast<std::size_t>(start)];
   return extra.dump();
@@ -98,15 +101,16 @@ Route plan(const RoadGraph& g, const Config& cfg, std::uint64_t seed, const std:
   const auto t0 = std::chrono::steady_clock::now();
   const PlanGraph pg = PlanGraph::build(g, where);
   if (pg.dropped_nodes > 0 || pg.dropped_edges > 0)
-    logWarn(where + ": not strongly connected under its turn permissions; planning on the largest "
-                    "part (" + std::to_string(pg.n) + " nodes, " + std::to_string(pg.m) +
-            " edges; dropped " + std::to_string(pg.dropped_nodes) + " nodes, " +
-            std::to_string(pg.dropped_edges) + " edges)");
+    logWarn(where +
+            ": not strongly connected under its turn permissions; planning on the largest "
+            "part (" +
+            std::to_string(pg.n) + " nodes, " + std::to_string(pg.m) + " edges; dropped " +
+            std::to_string(pg.dropped_nodes) + " nodes, " + std::to_string(pg.dropped_edges) +
+            " edges)");
   const int start = localStart(g, pg, cfg, where);
   const TurnPaths paths(pg);
   const PlanOutput out = runPlanner(pg, paths, cfg, start, seed);
-  const double secs =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   Route r;
   r.planner = cfg.planner;

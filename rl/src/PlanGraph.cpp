@@ -58,8 +58,9 @@ TurnComponents turnComponents(const RoadGraph& g, const std::string& where) {
     if (hasCycle(tc, c, count[sz(c)]) && (tc.largest < 0 || count[sz(c)] > count[sz(tc.largest)]))
       tc.largest = c;
   if (tc.largest < 0)
-    throw std::invalid_argument(where + ": no route can be driven legally (no cycle under the turn "
-                                        "permissions)");
+    throw std::invalid_argument(where +
+                                ": no route can be driven legally (no cycle under the turn "
+                                "permissions)");
   return tc;
 }
 

@@ -48,19 +48,18 @@ json toJson(const CoverageStats& s) {
           {"evaluations", s.ga->evaluations},
           {"improved_at_generation", s.ga->improved_at_generation},
           {"switching_length_m", s.ga->switching_length_m}};
-  return {{"coverage_legs", s.coverage_legs},
-          {"loop_closure_revisits", s.loop_closure_revisits},
-          {"revisit_length_m", s.revisit_length_m},
-          {"aco",
-           {{"tour_cost_m", s.aco.tour_cost_m},
-            {"nearest_neighbour_m", s.aco.nearest_neighbour_m},
-            {"improved_at_iteration", s.aco.improved_at_iteration},
-            {"cities", s.aco.cities}}},
-          {"ga", ga},
-          {"seconds",
-           {{"distances", s.distances_seconds},
-            {"aco", s.aco_seconds},
-            {"total", s.total_seconds}}}};
+  return {
+      {"coverage_legs", s.coverage_legs},
+      {"loop_closure_revisits", s.loop_closure_revisits},
+      {"revisit_length_m", s.revisit_length_m},
+      {"aco",
+       {{"tour_cost_m", s.aco.tour_cost_m},
+        {"nearest_neighbour_m", s.aco.nearest_neighbour_m},
+        {"improved_at_iteration", s.aco.improved_at_iteration},
+        {"cities", s.aco.cities}}},
+      {"ga", ga},
+      {"seconds",
+       {{"distances", s.distances_seconds}, {"aco", s.aco_seconds}, {"total", s.total_seconds}}}};
 }
 
 }  // namespace

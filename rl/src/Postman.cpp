@@ -20,9 +20,9 @@
 #include <lemon/smart_graph.h>
 
 #include <algorithm>
-#include <map>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "Index.hpp"
@@ -70,8 +70,9 @@ std::vector<int> legalCirculation(const PlanGraph& pg, const std::vector<int>& f
   lemon::NetworkSimplex<G, long long, long long> ns(lg);
   ns.lowerMap(lower).costMap(cost);
   if (ns.run() != lemon::NetworkSimplex<G, long long, long long>::OPTIMAL)
-    throw std::runtime_error("postman: no legal covering circulation (the turn graph is not "
-                             "strongly connected)");
+    throw std::runtime_error(
+        "postman: no legal covering circulation (the turn graph is not "
+        "strongly connected)");
   std::vector<int> y(pg.next.size());
   for (std::size_t k = 0; k < turn.size(); ++k) y[k] = static_cast<int>(ns.flow(turn[k]));
   return y;
@@ -185,7 +186,8 @@ struct OneWayMerge {
 };
 
 void cheapestOneWayMergeAt(const PlanGraph& pg, const TurnPaths& paths,
-                           const std::vector<UsedTurn>& used, UnionFind& trails, OneWayMerge& best) {
+                           const std::vector<UsedTurn>& used, UnionFind& trails,
+                           OneWayMerge& best) {
   for (std::size_t p = 0; p < used.size(); ++p)
     for (std::size_t q = 0; q < used.size(); ++q) {
       const auto [a, ka] = used[p];
@@ -303,8 +305,8 @@ int smallestOtherTrail(UnionFind& trails, int m, int e0) {
 
 /// The cheapest circulation that also takes one unused legal turn into trail `small`; the
 /// chosen turn is appended to `forced` (nothing when there is no such turn).
-std::vector<int> cheapestForcing(const PlanGraph& pg, const std::vector<int>& y,
-                                 UnionFind& trails, int small, std::vector<int>& forced) {
+std::vector<int> cheapestForcing(const PlanGraph& pg, const std::vector<int>& y, UnionFind& trails,
+                                 int small, std::vector<int>& forced) {
   double best_m = std::numeric_limits<double>::infinity();
   std::vector<int> best_y;
   int best_turn = -1;
@@ -327,7 +329,7 @@ std::vector<int> cheapestForcing(const PlanGraph& pg, const std::vector<int>& y,
 /// free swaps + detours; (B) re-solve the circulation forcing one legal turn into a still
 /// separate trail (the flow re-routes optimally around it), a few rounds.
 Connection connectBest(const PostmanGraph& g, const std::vector<int>& y0, int max_rounds,
-                   int& forcing_rounds) {
+                       int& forcing_rounds) {
   Connection best = connect(g, y0);
   double best_len = circulationLength(g.pg, best.y);
   std::vector<int> forced, y = y0;

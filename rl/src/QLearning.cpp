@@ -51,11 +51,11 @@
 #include <stdexcept>
 
 #include "Coverage.hpp"
+#include "Index.hpp"
+#include "UncoveredGuide.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/rl/Eif.hpp"
 #include "slamroute/rl/Planners.hpp"
-#include "Index.hpp"
-#include "UncoveredGuide.hpp"
 
 namespace slamroute::rl {
 
@@ -78,7 +78,8 @@ Table buildTable(const PlanGraph& pg, int signature_bits) {
     if (s < pg.m)
       for (int k = pg.nextBegin(s); k < pg.nextEnd(s); ++k) t.act.push_back(pg.next[sz(k)]);
     else
-      for (int k = pg.outBegin(s - pg.m); k < pg.outEnd(s - pg.m); ++k) t.act.push_back(pg.out[sz(k)]);
+      for (int k = pg.outBegin(s - pg.m); k < pg.outEnd(s - pg.m); ++k)
+        t.act.push_back(pg.out[sz(k)]);
     t.act_off[sz(s) + 1] = static_cast<int>(t.act.size());
   }
   t.bits.resize(sz(ns));
@@ -98,7 +99,9 @@ struct EpisodeCoverage {
   std::vector<int> node_stamp, street_stamp;
   int stamp = 0, remaining = 0;
   EpisodeCoverage(const PlanGraph& graph, Goal goal_kind)
-      : pg(graph), goal(goal_kind), node_stamp(sz(graph.n), 0),
+      : pg(graph),
+        goal(goal_kind),
+        node_stamp(sz(graph.n), 0),
         street_stamp(sz(graph.num_streets), 0) {}
   void reset(int start) {
     ++stamp;
@@ -209,8 +212,9 @@ double learnedShare(const PlanGraph& pg, const std::vector<int>& edges, double s
 void checkSettings(const QLearningConfig& qc) {
   if (qc.episodes < 0 || qc.signature_bits < 0 || qc.signature_bits > 6 || qc.alpha <= 0 ||
       qc.alpha > 1 || qc.gamma < 0 || qc.gamma >= 1)
-    throw std::invalid_argument("rl.qlearning: need episodes >= 0, 0 <= signature_bits <= 6, "
-                                "0 < alpha <= 1, 0 <= gamma < 1");
+    throw std::invalid_argument(
+        "rl.qlearning: need episodes >= 0, 0 <= signature_bits <= 6, "
+        "0 < alpha <= 1, 0 <= gamma < 1");
 }
 
 /// R_U normalisation u_ref (see the header comment): the mean per-edge drop of log det L over n
@@ -228,9 +232,16 @@ double uncertaintyReference(const PlanGraph& pg, const EifConfig& eif) {
 class Environment {
  public:
   Environment(const PlanGraph& pg, const Config& cfg, Goal goal)
-      : cov(pg, goal), pg_(pg), cfg_(cfg), qc_(cfg.qlearning), full_(cfg.reward == "full"),
-        eif_(cfg.eif), node_cov_(sz(pg.n)), node_logdet_(sz(pg.n), 0.0),
-        node_travel_(sz(pg.n), 0.0), node_stamp_(sz(pg.n), 0) {
+      : cov(pg, goal),
+        pg_(pg),
+        cfg_(cfg),
+        qc_(cfg.qlearning),
+        full_(cfg.reward == "full"),
+        eif_(cfg.eif),
+        node_cov_(sz(pg.n)),
+        node_logdet_(sz(pg.n), 0.0),
+        node_travel_(sz(pg.n), 0.0),
+        node_stamp_(sz(pg.n), 0) {
     motion_.resize(sz(pg.m));
     for (int e = 0; e < pg.m; ++e)
       motion_[sz(e)] = edgeMotion(cfg.eif, pg.len[sz(e)], pg.heading[sz(e)], pg.weight[sz(e)]);
@@ -263,8 +274,9 @@ class Environment {
     const double uncertainty =
         std::clamp((logdet_cov_ - logdet) * u_scale_ * qc_.weight_uncertainty,
                    -qc_.uncertainty_clip, qc_.uncertainty_clip);
-    reward += qc_.weight_coverage * (gained - qc_.step_length_cost * pg_.len[sz(f)] / pg_.mean_len) +
-              uncertainty;
+    reward +=
+        qc_.weight_coverage * (gained - qc_.step_length_cost * pg_.len[sz(f)] / pg_.mean_len) +
+        uncertainty;
     logdet_cov_ = logdet;
     return reward;
   }
@@ -428,13 +440,16 @@ Rollout greedyRollout(const PlanGraph& pg, const TurnPaths& paths, const Table& 
     const int deg = t.deg(s);
     const int i = greedy(&t.q[t.qoff[sz(s)] + sz(obs.sig) * sz(deg)], deg);
     const int f = t.act[sz(t.act_off[sz(s)] + i)];
-    if (cov.drive(f)) ++epoch, progress_step = step;
-    else if (i == obs.toward) progress_step = step;
+    if (cov.drive(f))
+      ++epoch, progress_step = step;
+    else if (i == obs.toward)
+      progress_step = step;
     r.edges.push_back(f);
     s = f;
   }
   if (!cov.done() && qc.complete_with_shortest_paths) {
-    r.segments += detail::completeByShortestPaths(pg, paths, cov, start, r.edges, &r.shortest_len_m);
+    r.segments +=
+        detail::completeByShortestPaths(pg, paths, cov, start, r.edges, &r.shortest_len_m);
     r.completed_by_shortest_paths = true;
   }
   return r;

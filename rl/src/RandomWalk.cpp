@@ -22,7 +22,8 @@ PlanOutput planRandom(const PlanGraph& pg, const TurnPaths& paths, const Config&
     const int b = cur_edge < 0 ? pg.outBegin(start) : pg.nextBegin(cur_edge);
     const int e = cur_edge < 0 ? pg.outEnd(start) : pg.nextEnd(cur_edge);
     const std::vector<int>& acts = cur_edge < 0 ? pg.out : pg.next;
-    const int f = acts[static_cast<std::size_t>(b + static_cast<int>(rng() % static_cast<std::uint64_t>(e - b)))];
+    const int f = acts[static_cast<std::size_t>(
+        b + static_cast<int>(rng() % static_cast<std::uint64_t>(e - b)))];
     cov.drive(f);
     out.edges.push_back(f);
     driven += pg.len[static_cast<std::size_t>(f)];
@@ -32,7 +33,8 @@ PlanOutput planRandom(const PlanGraph& pg, const TurnPaths& paths, const Config&
   int segments = 0;
   if (!cov.done() && driven >= budget) {
     out.notes = "random walk stopped at its length budget of " +
-                std::to_string(static_cast<int>(cfg.random.budget_m)) + " m before meeting the goal";
+                std::to_string(static_cast<int>(cfg.random.budget_m)) +
+                " m before meeting the goal";
   } else if (!cov.done()) {
     segments = detail::completeByShortestPaths(pg, paths, cov, start, out.edges, &extra);
     out.completed_by_shortest_paths = true;

@@ -59,7 +59,8 @@ void fillRouteMetrics(const PlanGraph& pg, const RoadGraph& g, int start,
         ++r.loop_closures;
         filter.closeLoop(node_info[sz(w)]);
       }
-      if (filter.info().determinant() > node_info[sz(w)].determinant()) node_info[sz(w)] = filter.info();
+      if (filter.info().determinant() > node_info[sz(w)].determinant())
+        node_info[sz(w)] = filter.info();
     } else {
       node_seen[sz(w)] = 1;
       ++nodes_seen;

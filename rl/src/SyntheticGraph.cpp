@@ -26,7 +26,8 @@ RoadGraph gridCity(const GridCitySpec& s) {
     e.id = static_cast<int>(g.edges.size());
     e.u = a;
     e.v = b;
-    e.polyline = {g.nodes[static_cast<std::size_t>(a)].pos, g.nodes[static_cast<std::size_t>(b)].pos};
+    e.polyline = {g.nodes[static_cast<std::size_t>(a)].pos,
+                  g.nodes[static_cast<std::size_t>(b)].pos};
     e.length_m = (e.polyline[1] - e.polyline[0]).norm();
     e.weight = s.weight_min + (1.0 - s.weight_min) * uni(rng);
     e.street = st;
@@ -35,8 +36,10 @@ RoadGraph gridCity(const GridCitySpec& s) {
   auto addStreet = [&](int a, int b) {
     const double x = uni(rng);
     if (x < s.one_way_fraction) {
-      if (uni(rng) < 0.5) addEdge(a, b, street);
-      else addEdge(b, a, street);
+      if (uni(rng) < 0.5)
+        addEdge(a, b, street);
+      else
+        addEdge(b, a, street);
     } else {
       addEdge(a, b, street);
       addEdge(b, a, street);

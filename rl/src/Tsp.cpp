@@ -9,10 +9,10 @@
 #include <limits>
 #include <stdexcept>
 
-#include "slamroute/core/Log.hpp"
-#include "LemonTsp.hpp"
-#include "slamroute/rl/Planners.hpp"
 #include "Index.hpp"
+#include "LemonTsp.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/rl/Planners.hpp"
 
 namespace slamroute::rl {
 
@@ -95,7 +95,8 @@ std::vector<int> heldKarp(const Matrix& d, int start, bool closed, double* cost)
   // dp[S][j]: cheapest path from start visiting exactly S (bits), ending at others[j] in S.
   std::vector<double> dp(full * sz(k), kInf);
   std::vector<signed char> parent(full * sz(k), -1);
-  for (int j = 0; j < k; ++j) dp[(std::size_t{1} << j) * sz(k) + sz(j)] = d[sz(start)][sz(others[sz(j)])];
+  for (int j = 0; j < k; ++j)
+    dp[(std::size_t{1} << j) * sz(k) + sz(j)] = d[sz(start)][sz(others[sz(j)])];
   for (std::size_t S = 1; S < full; ++S)
     for (int j = 0; j < k; ++j) {
       if (!(S >> j & 1)) continue;
@@ -114,7 +115,8 @@ std::vector<int> heldKarp(const Matrix& d, int start, bool closed, double* cost)
   double best = kInf;
   int last = -1;
   for (int j = 0; j < k; ++j) {
-    const double c = dp[(full - 1) * sz(k) + sz(j)] + (closed ? d[sz(others[sz(j)])][sz(start)] : 0.0);
+    const double c =
+        dp[(full - 1) * sz(k) + sz(j)] + (closed ? d[sz(others[sz(j)])][sz(start)] : 0.0);
     if (c < best) best = c, last = j;
   }
   if (last < 0) throw std::invalid_argument("heldKarp: some node cannot be reached");
@@ -135,9 +137,10 @@ std::vector<int> heldKarp(const Matrix& d, int start, bool closed, double* cost)
 PlanOutput planTsp(const PlanGraph& pg, const TurnPaths& paths, const Config& cfg, int start) {
   const TspConfig& tc = cfg.tsp;
   if (pg.n > tc.max_nodes)
-    throw std::invalid_argument("tsp: " + std::to_string(pg.n) + " nodes is above rl.tsp.max_nodes = " +
-                                std::to_string(tc.max_nodes) +
-                                " (its n^2 distance matrix); use --planner postman or raise the limit");
+    throw std::invalid_argument(
+        "tsp: " + std::to_string(pg.n) +
+        " nodes is above rl.tsp.max_nodes = " + std::to_string(tc.max_nodes) +
+        " (its n^2 distance matrix); use --planner postman or raise the limit");
   const Matrix d = nodeDistances(pg, paths);
   PlanOutput out;
   std::vector<int> order;
@@ -148,7 +151,8 @@ PlanOutput planTsp(const PlanGraph& pg, const TurnPaths& paths, const Config& cf
   } else {
     const bool chris = pg.n <= tc.christofides_max_nodes;
     method = chris ? "christofides+2opt" : "greedy+2opt";
-    logWarn("tsp: " + std::to_string(pg.n) + " nodes is above the exact limit rl.tsp.exact_max_nodes = " +
+    logWarn("tsp: " + std::to_string(pg.n) +
+            " nodes is above the exact limit rl.tsp.exact_max_nodes = " +
             std::to_string(tc.exact_max_nodes) + "; using a heuristic tour (" + method + ")");
     order = detail::lemonTour(d, chris);
     order = orientTour(d, order, start, tc.closed_tour);

@@ -18,8 +18,12 @@ namespace slamroute::rl::detail {
 class UncoveredGuide {
  public:
   explicit UncoveredGuide(const PlanGraph& pg)
-      : pg_(pg), dist_(sz(pg.m), 0.0), pred_(sz(pg.m), -1), seen_(sz(pg.m), 0),
-        along_(sz(pg.m + pg.n), -1), along_stamp_(sz(pg.m + pg.n), 0) {}
+      : pg_(pg),
+        dist_(sz(pg.m), 0.0),
+        pred_(sz(pg.m), -1),
+        seen_(sz(pg.m), 0),
+        along_(sz(pg.m + pg.n), -1),
+        along_stamp_(sz(pg.m + pg.n), 0) {}
 
   /// Forgets the kept path: coverage was reset (a new episode).
   void reset() { target_ = -1; }
@@ -28,8 +32,7 @@ class UncoveredGuide {
   /// with is_new(edge) true; -1 when nothing uncovered is reachable.
   template <class IsNew>
   int toward(int s, const IsNew& is_new) {
-    if (target_ >= 0 && is_new(target_) && along_stamp_[sz(s)] == path_stamp_)
-      return along_[sz(s)];
+    if (target_ >= 0 && is_new(target_) && along_stamp_[sz(s)] == path_stamp_) return along_[sz(s)];
     target_ = search(s, is_new);
     if (target_ < 0) return -1;
     keepPath(s);

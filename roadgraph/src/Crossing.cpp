@@ -39,16 +39,19 @@ struct BranchLine {
 BranchLine cutBranchLine(const std::vector<Point3>& pts, const std::vector<int>& members,
                          const Point3& c, const NodeConfig& cfg) {
   BranchLine l;
-  for (int i : members) l.moments += moment(pts[static_cast<std::size_t>(i)].head<2>() - c.head<2>());
+  for (int i : members)
+    l.moments += moment(pts[static_cast<std::size_t>(i)].head<2>() - c.head<2>());
   principalLine(l.moments, l.mean, l.dir);
   for (int iter = 0; iter < 2; ++iter) {
     const Eigen::Vector2d u = l.dir.dot(l.mean) >= 0 ? l.dir : Eigen::Vector2d(-l.dir);
     const Eigen::Vector2d nrm(-u.y(), u.x());
     double wmax = 0.0;
     for (int i : members)
-      wmax = std::max(wmax, std::abs(nrm.dot(pts[static_cast<std::size_t>(i)].head<2>() - c.head<2>())));
+      wmax = std::max(wmax,
+                      std::abs(nrm.dot(pts[static_cast<std::size_t>(i)].head<2>() - c.head<2>())));
     const double t_lo = cfg.inner_radius_m;
-    const double t_hi = std::sqrt(std::max(0.0, cfg.outer_radius_m * cfg.outer_radius_m - wmax * wmax));
+    const double t_hi =
+        std::sqrt(std::max(0.0, cfg.outer_radius_m * cfg.outer_radius_m - wmax * wmax));
     Moments cut = Moments::Zero();
     for (int i : members) {
       const Eigen::Vector2d d = pts[static_cast<std::size_t>(i)].head<2>() - c.head<2>();

@@ -83,7 +83,8 @@ struct ReprojectedGrid {
   std::vector<Point3> P;
   std::vector<char> valid;
   std::size_t index(int gx, int gy) const {
-    return static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) + static_cast<std::size_t>(gx);
+    return static_cast<std::size_t>(gy) * static_cast<std::size_t>(gw) +
+           static_cast<std::size_t>(gx);
   }
 };
 
@@ -181,7 +182,8 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
   std::ifstream in(index_csv);
   if (!in) throw std::runtime_error(index_csv.string() + ": cannot open depth index");
   std::string line;
-  if (!std::getline(in, line)) throw std::invalid_argument(index_csv.string() + ": empty depth index");
+  if (!std::getline(in, line))
+    throw std::invalid_argument(index_csv.string() + ": empty depth index");
   auto split = [](const std::string& l) {
     std::vector<std::string> f;
     std::string cur;
@@ -218,7 +220,8 @@ std::vector<DepthFrame> readDepthIndex(const std::filesystem::path& index_csv) {
                                   ": too few columns");
     DepthFrame fr;
     try {
-      fr.pos = Point3(std::stod(f[static_cast<std::size_t>(cx)]), std::stod(f[static_cast<std::size_t>(cy)]),
+      fr.pos = Point3(std::stod(f[static_cast<std::size_t>(cx)]),
+                      std::stod(f[static_cast<std::size_t>(cy)]),
                       cz >= 0 ? std::stod(f[static_cast<std::size_t>(cz)]) : 0.0);
       if (ct >= 0) fr.t = std::stod(f[static_cast<std::size_t>(ct)]);
       if (cn >= 0) fr.frame = std::stol(f[static_cast<std::size_t>(cn)]);
@@ -249,9 +252,10 @@ void skipOddSizedFrames(const std::vector<DepthFrame>& frames,
   for (std::size_t i = 0; i < frames.size(); ++i)
     if (!std::isnan(score[i])) ++count[size[i]];
   if (count.size() < 2) return;
-  const auto common = std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) {
-                        return a.second < b.second;
-                      })->first;
+  const auto common =
+      std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) {
+        return a.second < b.second;
+      })->first;
   for (std::size_t i = 0; i < frames.size(); ++i)
     if (!std::isnan(score[i]) && size[i] != common) {
       score[i] = std::numeric_limits<double>::quiet_NaN();
@@ -342,10 +346,13 @@ StreetSamples streetSamples(const RoadGraph& graph) {
       first[static_cast<std::size_t>(e.street)] = e.id;
   for (int s = 0; s < out.streets; ++s)
     if (first[static_cast<std::size_t>(s)] >= 0)
-      samplePolyline(graph.edges[static_cast<std::size_t>(first[static_cast<std::size_t>(s)])].polyline, s, out);
+      samplePolyline(
+          graph.edges[static_cast<std::size_t>(first[static_cast<std::size_t>(s)])].polyline, s,
+          out);
   for (const auto& e : graph.edges) {
     if (e.street < 0 || first[static_cast<std::size_t>(e.street)] == e.id) continue;
-    const Polyline& f = graph.edges[static_cast<std::size_t>(first[static_cast<std::size_t>(e.street)])].polyline;
+    const Polyline& f =
+        graph.edges[static_cast<std::size_t>(first[static_cast<std::size_t>(e.street)])].polyline;
     if (!std::equal(f.rbegin(), f.rend(), e.polyline.begin(), e.polyline.end()))
       samplePolyline(e.polyline, e.street, out);
   }

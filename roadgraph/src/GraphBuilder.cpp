@@ -120,8 +120,8 @@ std::vector<Point3> junctionNodes(const Traces& traces, const PreparedTraces& p,
     std::size_t junctions = 0;
     for (const auto& rb : rbs) junctions += rb.junctions.size();
     logInfo("build-graph: " + std::to_string(rbs.size()) + " roundabout(s), " +
-            std::to_string(junctions) + " ring junctions in place of " +
-            std::to_string(replaced) + " node(s)");
+            std::to_string(junctions) + " ring junctions in place of " + std::to_string(replaced) +
+            " node(s)");
   }
   if (ir.nodes.empty())
     throw std::runtime_error(where + ": no intersection found in the traces (no point sees >= " +
@@ -193,7 +193,8 @@ GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg) {
   gn.n_inter = gn.pos.size();
   gn.is_end.assign(gn.pos.size(), 0);
   // Step 2: remove node neighbourhoods, cluster the rest into streets, attach them to nodes.
-  const detail::StreetPoints spts = detail::clearNodeNeighbourhoods(p.ds.points, gn.pos, ec, half_h);
+  const detail::StreetPoints spts =
+      detail::clearNodeNeighbourhoods(p.ds.points, gn.pos, ec, half_h);
   std::vector<Street> streets =
       detail::attachStreets(spts, traces, p.order, p.ds.voxel_of, gn, ec, half_h, st);
   detail::mergeNearbyEnds(gn.pos, gn.is_end, ec.end_merge_m, half_h, streets, st);
@@ -202,8 +203,8 @@ GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg) {
   // Step 3: drives from junction to junction (ShortLinks.cpp): links between junctions whose
   // street the clearing removed, and directions of travel on streets too short for runs.
   const std::vector<int> street_of_point = streetOfTracePoints(streets, spts, p.ds);
-  const detail::Passages passages = detail::junctionPassages(traces, p.order, street_of_point,
-                                                             gn.pos, gn.n_inter, ec, half_h);
+  const detail::Passages passages =
+      detail::junctionPassages(traces, p.order, street_of_point, gn.pos, gn.n_inter, ec, half_h);
   detail::addShortLinks(passages, gn.pos, ec, streets, polys, st);
   // Step 4: directions of travel, and the graph.
   const detail::TravelCounts runs =

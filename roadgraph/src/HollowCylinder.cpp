@@ -117,8 +117,8 @@ std::uint64_t sumClusters(const NodeConfig& cfg, Scratch& s, int n, int self) {
 
 /// An annulus cluster that qualifies as (part of) a branch.
 struct Qualified {
-  double bearing;          // mean bearing from the point [rad]
-  int root;                // annulus cluster
+  double bearing;            // mean bearing from the point [rad]
+  int root;                  // annulus cluster
   Eigen::Vector2d centroid;  // relative to the point
   Eigen::Vector2d axis;      // principal direction
 };
@@ -138,7 +138,8 @@ std::vector<Qualified> qualifiedClusters(const NodeConfig& cfg, Scratch& s, int 
     const double cxx = m[2] / k - c.x() * c.x(), cxy = m[3] / k - c.x() * c.y(),
                  cyy = m[4] / k - c.y() * c.y();
     const double th = 0.5 * std::atan2(2.0 * cxy, cxx - cyy);  // principal axis angle
-    quals.push_back({std::atan2(s.bearing_y[r], s.bearing_x[r]), i, c, {std::cos(th), std::sin(th)}});
+    quals.push_back(
+        {std::atan2(s.bearing_y[r], s.bearing_x[r]), i, c, {std::cos(th), std::sin(th)}});
   }
   std::sort(quals.begin(), quals.end(),
             [](const Qualified& a, const Qualified& b) { return a.bearing < b.bearing; });
@@ -196,7 +197,8 @@ void branchMembers(const std::vector<Qualified>& quals, int branches, Scratch& s
   for (int i = 0; i < n; ++i) {
     if (!s.in_annulus[static_cast<std::size_t>(i)]) continue;
     const int b = branch_of_root[static_cast<std::size_t>(s.annulus_sets.find(i))];
-    if (b >= 0) members[static_cast<std::size_t>(b)].push_back(s.local[static_cast<std::size_t>(i)]);
+    if (b >= 0)
+      members[static_cast<std::size_t>(b)].push_back(s.local[static_cast<std::size_t>(i)]);
   }
 }
 

@@ -20,7 +20,7 @@ struct Scratch {
   std::vector<int> local_of;  // per point of the whole set: its index in `local`, else -1
   std::vector<int> cluster_points;
   std::vector<double> radius_min, radius_max, bearing_x, bearing_y;
-  std::vector<char> reaches_centre;  // linked to the point inside the outer disk
+  std::vector<char> reaches_centre;                  // linked to the point inside the outer disk
   std::vector<Eigen::Matrix<double, 5, 1>> moments;  // per cluster: sum x, y, xx, xy, yy
   std::vector<int> branch_of_cluster;
   UnionFind disk_sets, annulus_sets, branch_sets;

@@ -127,7 +127,8 @@ IntersectionResult detectIntersections(const std::vector<Point3>& pts, const Nod
   };
   for (std::size_t i = 0; i < n; ++i) {
     auto tile = [](double v) {
-      return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / 32.0)) + (1 << 30));
+      return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / 32.0)) +
+                                        (1 << 30));
     };
     const std::uint64_t tx = tile(pts[i].x()), ty = tile(pts[i].y());
     key[i] = {spread(tx) | (spread(ty) << 1), static_cast<std::uint32_t>(i)};
@@ -194,7 +195,8 @@ struct Rings {
   /// per point).
   int atNode(const Point3& c, Scratch& s, bool* is_wide) const {
     const int b1 = branchesAt(grid, pts, c, cfg, s, nullptr);
-    const int b2 = useWide() && b1 < cfg.min_branches ? branchesAt(grid, pts, c, wide, s, nullptr) : 0;
+    const int b2 =
+        useWide() && b1 < cfg.min_branches ? branchesAt(grid, pts, c, wide, s, nullptr) : 0;
     if (is_wide) *is_wide = b2 > b1;
     return std::max(b1, b2);
   }
@@ -271,8 +273,7 @@ double medianGroupSize(const std::vector<DensestFirstGroup>& groups, int min_siz
 /// the crossing of the arms seen from there). The candidate must pass the test itself: a
 /// fragment of intersection points on an arm (noise) sees only the two ways of its street from
 /// its median. A strongly voted group need not (see Intersections.cpp's header).
-Candidates nodeCandidates(const Rings& rings, std::vector<DensestFirstGroup> groups,
-                          Scratch& s) {
+Candidates nodeCandidates(const Rings& rings, std::vector<DensestFirstGroup> groups, Scratch& s) {
   const NodeConfig& cfg = rings.cfg;
   const double median_votes = medianGroupSize(groups, cfg.min_node_points);
   Candidates out;

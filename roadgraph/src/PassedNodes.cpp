@@ -115,9 +115,9 @@ std::size_t vehiclesThroughNode(const StreetContext& ctx, int c, const Point3& h
 /// -d(C, i), on any other +d(C, i). The plain nearest contact would hand the part of a long arm
 /// next to C to a short arm, whose street then runs out along the long one and back.
 void streetsPerBranch(const StreetContext& ctx, int c, const std::vector<int>& mem,
-                      const std::vector<std::vector<double>>& d, const std::vector<std::size_t>& branch,
-                      const std::vector<int>& ends, std::size_t hub, std::size_t centre,
-                      std::vector<Street>& streets) {
+                      const std::vector<std::vector<double>>& d,
+                      const std::vector<std::size_t>& branch, const std::vector<int>& ends,
+                      std::size_t hub, std::size_t centre, std::vector<Street>& streets) {
   std::vector<std::vector<int>> part(branch.size());
   auto beyond = [&](std::size_t q, int i) {
     return d[branch[q]][static_cast<std::size_t>(i)] - d[branch[q]][centre];

@@ -39,9 +39,8 @@ struct Sample {
 
 /// Each vehicle's path as runs of points averaged over `step` metres of travel.
 std::vector<std::vector<Sample>> resamplePaths(const Traces& tr,
-                                               const std::vector<std::size_t>& order,
-                                               double step, double max_gap_s,
-                                               std::vector<int>& run_vehicle) {
+                                               const std::vector<std::size_t>& order, double step,
+                                               double max_gap_s, std::vector<int>& run_vehicle) {
   std::vector<std::vector<Sample>> runs;
   std::vector<Sample> cur;
   Eigen::Vector2d acc = Eigen::Vector2d::Zero();
@@ -157,8 +156,8 @@ std::vector<Candidate> circlingStretches(const std::vector<std::vector<Sample>>&
         if (ok) {
           double z = 0.0;
           for (std::size_t k = i; k < i + len; ++k) z += s[k].z;
-          out.push_back({Point3(f.centre.x(), f.centre.y(), z / static_cast<double>(len)),
-                         f.radius, f.sweep > 0 ? 1 : -1, run_vehicle[r]});
+          out.push_back({Point3(f.centre.x(), f.centre.y(), z / static_cast<double>(len)), f.radius,
+                         f.sweep > 0 ? 1 : -1, run_vehicle[r]});
         }
         i += ok ? std::max<std::size_t>(1, len / 2) : 2;
       }
@@ -241,7 +240,8 @@ std::vector<char> passRingTest(const std::vector<Roundabout>& rings, const Trace
   const double reach = cfg.max_radius_m + cfg.ring_width_m;
   for (std::size_t k = 0; k < tr.points.size(); ++k) {
     const Point3& p = tr.points[k].pos;
-    auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(p.x() - reach, std::size_t{0}));
+    auto it =
+        std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(p.x() - reach, std::size_t{0}));
     for (; it != by_x.end() && it->first <= p.x() + reach; ++it) {
       const Roundabout& rb = rings[it->second];
       const double dy = p.y() - rb.centre.y();
@@ -265,9 +265,10 @@ std::vector<char> passRingTest(const std::vector<Roundabout>& rings, const Trace
     if (c.on == 0 || c.along == 0) continue;
     const auto filled =
         std::count_if(c.sector.begin(), c.sector.end(), [](int n) { return n >= 3; });
-    pass[j] = static_cast<double>(filled) >= cfg.min_occupied * kSectors &&
-              static_cast<double>(c.in_sense) >= cfg.min_sense_share * static_cast<double>(c.along) &&
-              static_cast<double>(c.inner) <= cfg.max_inner_share * static_cast<double>(c.on);
+    pass[j] =
+        static_cast<double>(filled) >= cfg.min_occupied * kSectors &&
+        static_cast<double>(c.in_sense) >= cfg.min_sense_share * static_cast<double>(c.along) &&
+        static_cast<double>(c.inner) <= cfg.max_inner_share * static_cast<double>(c.on);
   }
   return pass;
 }
@@ -494,13 +495,13 @@ std::vector<Roundabout> detectRoundabouts(const Traces& traces,
     if (pass[j]) accepted.push_back(rings[j]);
   // One ring per place: of two rings whose centres are within the larger radius, keep the one
   // more vehicles circle (an inner and an outer lane fit two circles).
-  std::stable_sort(accepted.begin(), accepted.end(),
-                   [](const Roundabout& a, const Roundabout& b) { return a.vehicles > b.vehicles; });
+  std::stable_sort(accepted.begin(), accepted.end(), [](const Roundabout& a, const Roundabout& b) {
+    return a.vehicles > b.vehicles;
+  });
   std::vector<Roundabout> out;
   for (const auto& rb : accepted) {
     const bool dup = std::any_of(out.begin(), out.end(), [&](const Roundabout& o) {
-      return (o.centre.head<2>() - rb.centre.head<2>()).norm() <
-             std::max(o.radius_m, rb.radius_m);
+      return (o.centre.head<2>() - rb.centre.head<2>()).norm() < std::max(o.radius_m, rb.radius_m);
     });
     if (dup) continue;
     Roundabout r = rb;

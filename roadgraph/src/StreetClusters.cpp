@@ -127,7 +127,8 @@ bool attachBothEndsAtOneNode(const StreetContext& ctx, int c, Street& s, int& na
   else
     na = nearestNode(ctx, pa, nb);
   if (na >= 0 && nb >= 0) return true;
-  const Contact far = farContact(sp, s.members, pa, pb, ctx.nodes, ctx.n_inter, both, ctx.ec, ctx.half_h);
+  const Contact far =
+      farContact(sp, s.members, pa, pb, ctx.nodes, ctx.n_inter, both, ctx.ec, ctx.half_h);
   if (far.member < 0) {
     ++st.dropped_fragments;
     return false;

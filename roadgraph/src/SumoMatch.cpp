@@ -94,7 +94,8 @@ TruthGraph placeTruth(const JunctionGraph& jg, double link_max_m) {
   }
   t.nb.resize(t.id.size());
   for (const auto& l : jg.links) {
-    const auto a = static_cast<std::size_t>(place_of[l.u]), b = static_cast<std::size_t>(place_of[l.v]);
+    const auto a = static_cast<std::size_t>(place_of[l.u]),
+               b = static_cast<std::size_t>(place_of[l.v]);
     if (a == b) continue;
     t.nb[a].insert(b);
     t.nb[b].insert(a);
@@ -114,8 +115,8 @@ struct NodeMatch {
   std::vector<int> true_to_det;   ///< per truth vertex, graph node or -1
 };
 
-NodeMatch matchNodes(const RoadGraph& graph, const std::vector<int>& detected,
-                     const TruthGraph& t, const std::vector<std::size_t>& truth, double radius_m) {
+NodeMatch matchNodes(const RoadGraph& graph, const std::vector<int>& detected, const TruthGraph& t,
+                     const std::vector<std::size_t>& truth, double radius_m) {
   struct Pair {
     double d;
     int det;
@@ -181,7 +182,8 @@ void scoreNodes(const NodeMatch& m, const TruthGraph& t, const std::vector<std::
 void scoreStreets(const RoadGraph& graph, const std::vector<char>& node_is_end, const NodeMatch& m,
                   const std::set<Chain>& chains, ValidationResult& r) {
   auto isEnd = [&](int n) {
-    return static_cast<std::size_t>(n) < node_is_end.size() && node_is_end[static_cast<std::size_t>(n)];
+    return static_cast<std::size_t>(n) < node_is_end.size() &&
+           node_is_end[static_cast<std::size_t>(n)];
   };
   r.true_chains = chains.size();
   std::set<int> seen_street;
@@ -200,7 +202,8 @@ void scoreStreets(const RoadGraph& graph, const std::vector<char>& node_is_end, 
     }
   }
   r.found_chains = found.size();
-  r.edge_precision = r.detected_streets ? double(r.matched_streets) / double(r.detected_streets) : 0.0;
+  r.edge_precision =
+      r.detected_streets ? double(r.matched_streets) / double(r.detected_streets) : 0.0;
   r.edge_recall = r.true_chains ? double(r.found_chains) / double(r.true_chains) : 0.0;
 }
 
@@ -216,7 +219,8 @@ ValidationResult validateAgainst(const TruthGraph& t, const RoadGraph& graph,
   ValidationResult r;
   r.node_junction.assign(graph.nodes.size(), "");
   for (std::size_t n = 0; n < graph.nodes.size(); ++n)
-    if (m.det_to_true[n] >= 0) r.node_junction[n] = t.id[static_cast<std::size_t>(m.det_to_true[n])];
+    if (m.det_to_true[n] >= 0)
+      r.node_junction[n] = t.id[static_cast<std::size_t>(m.det_to_true[n])];
   scoreNodes(m, t, truth, detected, r);
   scoreStreets(graph, node_is_end, m, trueChains(t, truth), r);
   return r;
@@ -492,7 +496,8 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
             " SUMO edge match(es) dropped that no drivable chain along their graph edge passes");
   if (strays > 0)
     logInfo("build-graph: " + std::to_string(strays) +
-            " SUMO edge(s) dropped from chain ends that arrive at the start node or leave the end node");
+            " SUMO edge(s) dropped from chain ends that arrive at the start node or leave the end "
+            "node");
   if (gaps > 0)
     logWarn("build-graph: " + std::to_string(gaps) +
             " gap(s) between consecutive SUMO edges could not be bridged");

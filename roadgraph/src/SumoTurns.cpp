@@ -81,7 +81,8 @@ TurnStats turnsFromNet(RoadGraph& graph, const SumoNet& net, const SumoMatchConf
     std::vector<double> reach;
     if (last >= 0) {
       gap_in = distance2d(junctionEnd(net, e.sumo_edges.back()), node);
-      reach = lg.inBetween(static_cast<std::size_t>(last), cfg.turn_max_detour_m + gap_in + kMaxGapOut);
+      reach =
+          lg.inBetween(static_cast<std::size_t>(last), cfg.turn_max_detour_m + gap_in + kMaxGapOut);
     }
     for (int fid : out[static_cast<std::size_t>(e.v)]) {
       const auto& f = graph.edges[static_cast<std::size_t>(fid)];
@@ -93,12 +94,15 @@ TurnStats turnsFromNet(RoadGraph& graph, const SumoNet& net, const SumoMatchConf
       } else if (last == first) {
         ok = true;  // the same SUMO edge runs on through the node
       } else {
-        const double gap_out = std::min(kMaxGapOut, distance2d(junctionStart(net, f.sumo_edges.front()), node));
+        const double gap_out =
+            std::min(kMaxGapOut, distance2d(junctionStart(net, f.sumo_edges.front()), node));
         const double d = reach[static_cast<std::size_t>(first)];
         ok = d >= 0.0 && d <= cfg.turn_max_detour_m + gap_in + gap_out;
       }
-      if (ok) graph.allowed_next[static_cast<std::size_t>(e.id)].push_back(fid);
-      else ++st.forbidden_turns;
+      if (ok)
+        graph.allowed_next[static_cast<std::size_t>(e.id)].push_back(fid);
+      else
+        ++st.forbidden_turns;
     }
   }
   graph.restricted_turns = true;

@@ -66,9 +66,8 @@ std::vector<Vec3> travelDirections(const Traces& traces, const std::vector<std::
   for (std::size_t k = 0; k < order.size(); ++k) {
     const Point3& p = P[order[k]].pos;
     std::size_t ahead = k, behind = k;
-    for (std::size_t s = 0; s < max_steps && ahead + 1 < order.size() &&
-                            linked(order[ahead], order[ahead + 1]);
-         ++s) {
+    for (std::size_t s = 0;
+         s < max_steps && ahead + 1 < order.size() && linked(order[ahead], order[ahead + 1]); ++s) {
       ++ahead;
       if ((P[order[ahead]].pos - p).head<2>().squaredNorm() >= span2) break;
     }

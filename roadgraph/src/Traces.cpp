@@ -60,8 +60,9 @@ int vehicleIndex(Traces& tr, std::unordered_map<std::string, int>& ids, const st
 void canonicalOrder(Traces& tr) {
   std::vector<int> by_name(tr.vehicles.size());
   std::iota(by_name.begin(), by_name.end(), 0);
-  std::sort(by_name.begin(), by_name.end(),
-            [&](int a, int b) { return tr.vehicles[static_cast<std::size_t>(a)] < tr.vehicles[static_cast<std::size_t>(b)]; });
+  std::sort(by_name.begin(), by_name.end(), [&](int a, int b) {
+    return tr.vehicles[static_cast<std::size_t>(a)] < tr.vehicles[static_cast<std::size_t>(b)];
+  });
   std::vector<int> new_id(tr.vehicles.size());
   std::vector<std::string> names(tr.vehicles.size());
   for (std::size_t k = 0; k < by_name.size(); ++k) {
@@ -157,8 +158,8 @@ Traces readTraces(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   char head[2] = {0, 0};
   in.read(head, 2);
-  const bool gz = static_cast<unsigned char>(head[0]) == 0x1f &&
-                  static_cast<unsigned char>(head[1]) == 0x8b;
+  const bool gz =
+      static_cast<unsigned char>(head[0]) == 0x1f && static_cast<unsigned char>(head[1]) == 0x8b;
   std::string first;
   in.seekg(0);
   std::getline(in, first);
@@ -190,8 +191,8 @@ void checkTraces(const Traces& tr, const std::string& where) {
     if (!plausibleCoordinate(p.pos.x()) || !plausibleCoordinate(p.pos.y()) ||
         !plausibleCoordinate(p.pos.z()))
       throw std::invalid_argument(where + ": point " + std::to_string(i) + " (vehicle '" +
-                                  tr.vehicles.at(static_cast<std::size_t>(p.vehicle)) + "'): " +
-                                  kCoordinateRule);
+                                  tr.vehicles.at(static_cast<std::size_t>(p.vehicle)) +
+                                  "'): " + kCoordinateRule);
   }
 }
 

@@ -1,8 +1,8 @@
 #include "slamroute/simulate/DepthCamera.hpp"
 
+#include <tbb/parallel_for.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -14,7 +14,8 @@
 
 namespace slamroute::simulate {
 
-DepthCamera::DepthCamera(const DepthCameraConfig& cfg, std::uint64_t seed) : cfg_(cfg), seed_(seed) {
+DepthCamera::DepthCamera(const DepthCameraConfig& cfg, std::uint64_t seed)
+    : cfg_(cfg), seed_(seed) {
   try {
     cfg.validate();
   } catch (const std::invalid_argument& e) {
@@ -63,8 +64,8 @@ DepthImage DepthCamera::render(const World& world, const Pose3& T_wc,
       for (int k = 0; k < 16; ++k) {
         const int u = tx * 4 + (k & 3), v = ty * 4 + (k >> 2);
         mask[k] = (u < W && v < H) ? -1 : 0;
-        const Eigen::Vector3f d =
-            R * Eigen::Vector3f(static_cast<float>((u - cxv) / f_), static_cast<float>((v - cyv) / f_), 1.0f);
+        const Eigen::Vector3f d = R * Eigen::Vector3f(static_cast<float>((u - cxv) / f_),
+                                                      static_cast<float>((v - cyv) / f_), 1.0f);
         detail::setRay16(rh, k, o, d, maxz);
       }
       rtcIntersect16(mask, scene, &ctx, &rh);
@@ -80,9 +81,11 @@ DepthImage DepthCamera::render(const World& world, const Pose3& T_wc,
         }
         if (!std::isfinite(z)) continue;
         const std::size_t idx = static_cast<std::size_t>(v) * W + u;
-        if (cfg_.range_sigma_m > 0) z += cfg_.range_sigma_m * detail::RayRandom(seed_, frame, idx).normal();
+        if (cfg_.range_sigma_m > 0)
+          z += cfg_.range_sigma_m * detail::RayRandom(seed_, frame, idx).normal();
         const double mm = std::round(z * 1000.0);
-        if (mm >= 1.0 && z <= cfg_.max_range_m) img.mm[idx] = static_cast<std::uint16_t>(std::min(mm, 65535.0));
+        if (mm >= 1.0 && z <= cfg_.max_range_m)
+          img.mm[idx] = static_cast<std::uint16_t>(std::min(mm, 65535.0));
       }
     }
   });
@@ -102,13 +105,15 @@ void writeDepthPng(const std::filesystem::path& path, const DepthImage& image) {
 DepthImage readDepthPng(const std::filesystem::path& path) {
   const cv::Mat m = cv::imread(path.string(), cv::IMREAD_ANYDEPTH);
   if (m.empty()) throw std::runtime_error("cannot read depth image " + path.string());
-  if (m.type() != CV_16UC1) throw std::runtime_error(path.string() + ": not a 16-bit single-channel PNG");
+  if (m.type() != CV_16UC1)
+    throw std::runtime_error(path.string() + ": not a 16-bit single-channel PNG");
   DepthImage img;
   img.width = m.cols;
   img.height = m.rows;
   img.mm.resize(static_cast<std::size_t>(m.cols) * m.rows);
   for (int r = 0; r < m.rows; ++r)
-    for (int c = 0; c < m.cols; ++c) img.mm[static_cast<std::size_t>(r) * m.cols + c] = m.at<std::uint16_t>(r, c);
+    for (int c = 0; c < m.cols; ++c)
+      img.mm[static_cast<std::size_t>(r) * m.cols + c] = m.at<std::uint16_t>(r, c);
   return img;
 }
 

@@ -56,12 +56,13 @@ void headingsFromMotion(Trajectory& traj) {
   // A car turns its heading only while it moves: at most kMaxCurvature per metre driven, plus
   // kMinTurnRate while (nearly) standing. Without this the heading snapped by ~20 degrees within
   // 0.1 s when a vehicle waiting at a junction started along a differently directed internal lane.
-  constexpr double kMaxCurvature = 0.5;            // [rad/m], a 2 m turning radius
+  constexpr double kMaxCurvature = 0.5;                             // [rad/m], a 2 m turning radius
   constexpr double kMinTurnRate = 30.0 * std::numbers::pi / 180.0;  // [rad/s]
   for (std::size_t i = 1; i < n; ++i) {
     const Vec3 step = traj[i].T_world_body.translation() - traj[i - 1].T_world_body.translation();
     const double dt = std::max(0.0, traj[i].t - traj[i - 1].t);
-    const double limit = std::max(kMaxCurvature * std::hypot(step.x(), step.y()), kMinTurnRate * dt);
+    const double limit =
+        std::max(kMaxCurvature * std::hypot(step.x(), step.y()), kMinTurnRate * dt);
     const double diff = std::remainder(yaw[i] - yaw[i - 1], 2.0 * std::numbers::pi);
     yaw[i] = yaw[i - 1] + std::clamp(diff, -limit, limit);
   }
@@ -69,7 +70,8 @@ void headingsFromMotion(Trajectory& traj) {
     const Vec3 x_axis = traj[i].T_world_body.linear().col(0);
     const double pitch = std::asin(std::clamp(x_axis.z(), -1.0, 1.0));
     traj[i].T_world_body.linear() =
-        (Eigen::AngleAxisd(yaw[i], Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY())).toRotationMatrix();
+        (Eigen::AngleAxisd(yaw[i], Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
+            .toRotationMatrix();
   }
 }
 
@@ -142,7 +144,11 @@ class MapperRecorder {
  public:
   MapperRecorder(const SumoNet& net, const MapperToDrive& mapper, const DriveConfig& dc,
                  const LidarSpec& spec)
-      : net_(net), id_(mapper.id), edges_(mapper.edges), dc_(dc), spec_(spec),
+      : net_(net),
+        id_(mapper.id),
+        edges_(mapper.edges),
+        dc_(dc),
+        spec_(spec),
         name_(id_ == kMapper ? "the mapping vehicle" : "the mapping vehicle " + id_),
         range_(dc.traffic_range_m > 0.0 ? dc.traffic_range_m : spec.max_range_m),
         steps_per_record_(
@@ -175,9 +181,7 @@ class MapperRecorder {
   void finish() { progress_.finish(); }
   const std::string& lastEdge() const { return edges_[static_cast<std::size_t>(last_route_index)]; }
   const std::string& name() const { return name_; }
-  bool reachedRouteEnd() const {
-    return last_route_index == static_cast<int>(edges_.size()) - 1;
-  }
+  bool reachedRouteEnd() const { return last_route_index == static_cast<int>(edges_.size()) - 1; }
 
   DriveRecord rec;
   bool arrived = false;
@@ -245,8 +249,7 @@ void stepUntilAllArrived(SumoSession& sim, BackgroundTraffic& traffic,
     const double t = sim.time();
     bool all_arrived = true;
     for (auto& r : recorders) {
-      if (!r.arrived)
-        sim.guard("following " + r.name(), [&] { r.afterStep(step, t); });
+      if (!r.arrived) sim.guard("following " + r.name(), [&] { r.afterStep(step, t); });
       all_arrived = all_arrived && r.arrived;
     }
     if (all_arrived) return;
@@ -275,9 +278,8 @@ DriveRecord finishedRecord(MapperRecorder& r, const std::string& where) {
 }  // namespace
 
 std::vector<DriveRecord> recordMappers(const SumoNet& net,
-                                       const std::vector<MapperToDrive>& mappers,
-                                       const Config& cfg, const LidarSpec& spec,
-                                       std::uint64_t seed) {
+                                       const std::vector<MapperToDrive>& mappers, const Config& cfg,
+                                       const LidarSpec& spec, std::uint64_t seed) {
   const DriveConfig& dc = cfg.drive;
   if (!(dc.record_hz > 0.0) || !(dc.step_length_s > 0.0))
     throw std::invalid_argument("drive: record_hz and step_length_s must be > 0");
@@ -324,7 +326,8 @@ DriveResult runDrive(const DriveOptions& opts, const Config& cfg) {
   const World world = World::build(net, cfg.world, opts.seed);
   // the sensor rides on the body, which stands on the world's road surface
   rec.groundtruth = vehicleSensorPoses(rec.groundtruth, world, cfg.drive.body, spec.mount_height_m);
-  DriveResult res = writeDriveFolder(staging.path(), net, edges, rec, world, cfg, spec, opts, opts.seed);
+  DriveResult res =
+      writeDriveFolder(staging.path(), net, edges, rec, world, cfg, spec, opts, opts.seed);
   staging.commit();
   res.out_dir = staging.target();
   res.wall_seconds =

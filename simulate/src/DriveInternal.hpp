@@ -30,9 +30,8 @@ struct MapperToDrive {
 /// Runs SUMO: one session, every mapper on its edges, all departing at 0 (SUMO inserts them as
 /// space allows), background traffic; one record per mapper, in order.
 std::vector<DriveRecord> recordMappers(const SumoNet& net,
-                                       const std::vector<MapperToDrive>& mappers,
-                                       const Config& cfg, const LidarSpec& spec,
-                                       std::uint64_t seed);
+                                       const std::vector<MapperToDrive>& mappers, const Config& cfg,
+                                       const LidarSpec& spec, std::uint64_t seed);
 
 /// Runs SUMO: one session, the mapper on `edges` (already validated), background traffic.
 DriveRecord recordDrive(const SumoNet& net, const std::vector<std::string>& edges,

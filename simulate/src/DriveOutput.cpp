@@ -61,7 +61,8 @@ DriveResult writeDriveFolder(const fs::path& dir, const SumoNet& net,
 
   writeTum(dir / drive_files::kGroundTruth, rec.groundtruth);
   writeFileAtomic(dir / drive_files::kPoseEdges, poseEdgesCsv(rec));
-  writeOdometryCsv(dir / drive_files::kOdometry, simulateOdometry(rec.groundtruth, cfg.drive, odometry_seed));
+  writeOdometryCsv(dir / drive_files::kOdometry,
+                   simulateOdometry(rec.groundtruth, cfg.drive, odometry_seed));
   OdometrySpec odo_spec;
   odo_spec.scale_sigma = cfg.drive.odometry_scale_sigma;
   odo_spec.speed_noise_mps = cfg.drive.odometry_speed_noise_mps;

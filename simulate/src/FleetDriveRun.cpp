@@ -19,11 +19,9 @@ std::vector<MapperToDrive> fleetMappers(const SumoNet& net, const FleetRoute& fl
                                         const DriveOptions& opts) {
   std::vector<MapperToDrive> mappers;
   for (std::size_t k = 0; k < fleet.vehicles.size(); ++k) {
-    const std::string where =
-        opts.route_file.string() + " (vehicle " + std::to_string(k) + ")";
-    mappers.push_back({FleetRoute::vehicleId(k),
-                       drivableRoute(net, fleet.vehicles[k].sumo_edges, where,
-                                     opts.join_forbidden_turns)});
+    const std::string where = opts.route_file.string() + " (vehicle " + std::to_string(k) + ")";
+    mappers.push_back({FleetRoute::vehicleId(k), drivableRoute(net, fleet.vehicles[k].sumo_edges,
+                                                               where, opts.join_forbidden_turns)});
   }
   return mappers;
 }
@@ -69,8 +67,8 @@ FleetDriveResult runFleetDrive(const DriveOptions& opts, const Config& cfg) {
         vehicleSensorPoses(rec.groundtruth, world, cfg.drive.body, spec.mount_height_m);
     const fs::path dir = staging.path() / FleetDriveInfo::folderName(k);
     fs::create_directories(dir);
-    res.vehicles.push_back(writeDriveFolder(dir, net, mappers[k].edges, rec, world, cfg, spec,
-                                            opts, fleetOdometrySeed(opts.seed, k)));
+    res.vehicles.push_back(writeDriveFolder(dir, net, mappers[k].edges, rec, world, cfg, spec, opts,
+                                            fleetOdometrySeed(opts.seed, k)));
     res.info.vehicles.push_back(fleetEntry(res.vehicles.back(), mappers[k].id, k));
   }
   res.info.write(staging.path());

@@ -37,7 +37,6 @@ struct ColumnPose {
         dt(dt_s) {}
 };
 
-
 /// Boxes in range of the sweep and the columns that can see each, from the sensor poses at the
 /// sweep's start and end (the sensor turns and moves little within one sweep).
 std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3& T_start,
@@ -62,7 +61,8 @@ std::vector<BoxCull> cullBoxes(const std::vector<VehicleBox>& boxes, const Pose3
       double lo = 0, hi = 0;
       bool all = false;
       for (int k = 0; k < 16; ++k) {
-        const Eigen::Vector2d xy = bc.box.c.head<2>() + bc.box.u * bc.box.half.x() * ((k & 1) ? 1 : -1) +
+        const Eigen::Vector2d xy = bc.box.c.head<2>() +
+                                   bc.box.u * bc.box.half.x() * ((k & 1) ? 1 : -1) +
                                    bc.box.v * bc.box.half.y() * ((k & 2) ? 1 : -1);
         const double z = bc.box.c.z() + bc.box.half.z() * ((k & 4) ? 1 : -1);
         const Vec3 p = T_sw[k >> 3] * Vec3(xy.x(), xy.y(), z);
@@ -140,7 +140,8 @@ bool returnOf(const LidarSpec& spec, const LidarConfig& cfg, const World& world,
 
 Lidar::Lidar(const LidarConfig& cfg, std::uint64_t seed)
     : cfg_(cfg), spec_(resolveLidarSpec(cfg)), seed_(seed) {
-  if (!(cfg.range_sigma_m >= 0)) throw std::invalid_argument("simulate.lidar: range_sigma_m must be >= 0");
+  if (!(cfg.range_sigma_m >= 0))
+    throw std::invalid_argument("simulate.lidar: range_sigma_m must be >= 0");
   if (!(cfg.dropout_prob >= 0 && cfg.dropout_prob < 1))
     throw std::invalid_argument("simulate.lidar: dropout_prob must be in [0, 1)");
   if (!(cfg.sweep_period_s > 0 && cfg.sweep_period_s <= 1))
@@ -157,8 +158,8 @@ Lidar::Lidar(const LidarConfig& cfg, std::uint64_t seed)
 
 double Lidar::elevationRad(int ring) const {
   const double up = spec_.vfov_up_deg, down = spec_.vfov_down_deg;
-  const double deg = spec_.channels == 1 ? 0.5 * (up + down)
-                                         : down + (up - down) * ring / (spec_.channels - 1);
+  const double deg =
+      spec_.channels == 1 ? 0.5 * (up + down) : down + (up - down) * ring / (spec_.channels - 1);
   return deg * M_PI / 180.0;
 }
 

@@ -18,10 +18,13 @@ LidarSpec resolveLidarSpec(const LidarConfig& cfg) {
   if (o.mount_height_m != def.mount_height_m) s.mount_height_m = o.mount_height_m;
   auto bad = [](const std::string& m) { throw std::invalid_argument("simulate.lidar: " + m); };
   if (s.channels < 1 || s.channels > 1024) bad("channels must be in [1, 1024]");
-  if (s.horizontal_samples < 1 || s.horizontal_samples > 100000) bad("horizontal_samples must be in [1, 100000]");
-  if (s.channels > 1 && !(s.vfov_up_deg > s.vfov_down_deg)) bad("vfov_up_deg must exceed vfov_down_deg");
+  if (s.horizontal_samples < 1 || s.horizontal_samples > 100000)
+    bad("horizontal_samples must be in [1, 100000]");
+  if (s.channels > 1 && !(s.vfov_up_deg > s.vfov_down_deg))
+    bad("vfov_up_deg must exceed vfov_down_deg");
   if (s.vfov_up_deg > 90 || s.vfov_down_deg < -90) bad("vertical field outside [-90, 90] deg");
-  if (!(s.min_range_m >= 0) || !(s.max_range_m > s.min_range_m)) bad("need 0 <= min_range_m < max_range_m");
+  if (!(s.min_range_m >= 0) || !(s.max_range_m > s.min_range_m))
+    bad("need 0 <= min_range_m < max_range_m");
   return s;
 }
 

@@ -27,7 +27,8 @@ OnlineVehicles::OnlineVehicles(SumoSession& session, double speed_factor) : sess
 void OnlineVehicles::add(const std::string& id, const std::string& first, double depart_s) {
   session_.guard("adding explorer " + id, [&] {
     libsumo::Route::add(id + "_route", {first});
-    libsumo::Vehicle::add(id, id + "_route", kType, std::to_string(depart_s), "best", "base", "max");
+    libsumo::Vehicle::add(id, id + "_route", kType, std::to_string(depart_s), "best", "base",
+                          "max");
     // Strategic and cooperative lane changes only: the vehicle keeps to the lanes of its turn.
     libsumo::Vehicle::setLaneChangeMode(id, 0b011001000101);
   });
@@ -47,8 +48,8 @@ void OnlineVehicles::step() {
     const auto arrived = libsumo::Simulation::getArrivedIDList();
     for (std::size_t i = 0; i < ids_.size(); ++i) {
       if (contains(teleports, ids_[i]))
-        throw std::runtime_error("SUMO teleported explorer " + ids_[i] + " at t=" +
-                                 std::to_string(session_.time()) + " s");
+        throw std::runtime_error("SUMO teleported explorer " + ids_[i] +
+                                 " at t=" + std::to_string(session_.time()) + " s");
       if (contains(departed, ids_[i])) departed_[i] = true;
       if (contains(arrived, ids_[i]))
         throw std::runtime_error("explorer " + ids_[i] + " reached the end of its route at t=" +

@@ -22,10 +22,12 @@ struct Parts {
 
 namespace {
 Parts readParts(const fs::path& dir) {
-  if (!fs::is_directory(dir)) throw std::runtime_error("drive folder " + dir.string() + " does not exist");
+  if (!fs::is_directory(dir))
+    throw std::runtime_error("drive folder " + dir.string() + " does not exist");
   Parts p;
   p.gt = readTum(dir / drive_files::kGroundTruth);
-  if (p.gt.empty()) throw std::runtime_error((dir / drive_files::kGroundTruth).string() + ": no poses");
+  if (p.gt.empty())
+    throw std::runtime_error((dir / drive_files::kGroundTruth).string() + ": no poses");
   p.wf = readDriveWorldFile(dir);
   const fs::path sensor = dir / drive_files::kSensor;
   if (!fs::exists(sensor)) throw std::runtime_error(sensor.string() + " is missing");
@@ -35,7 +37,8 @@ Parts readParts(const fs::path& dir) {
     throw std::runtime_error(sensor.string() + ": " + e.what());
   }
   const fs::path traffic = dir / kTrafficFile;
-  p.traffic = fs::exists(traffic) ? readTrafficCsv(traffic, p.gt.size()) : TrafficFrames(p.gt.size());
+  p.traffic =
+      fs::exists(traffic) ? readTrafficCsv(traffic, p.gt.size()) : TrafficFrames(p.gt.size());
   return p;
 }
 

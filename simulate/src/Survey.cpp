@@ -16,9 +16,9 @@
 #include "RecordingSession.hpp"
 #include "SurveyInternal.hpp"
 #include "slamroute/core/AtomicFile.hpp"
-#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/DriveGraph.hpp"
 #include "slamroute/core/Log.hpp"
+#include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoNet.hpp"
 #include "slamroute/simulate/SumoSession.hpp"
 #include "slamroute/simulate/Traffic.hpp"
@@ -83,7 +83,8 @@ struct SurveyRecord {
 };
 
 void addSurveyVehicles(SumoSession& sim, const DriveGraph& dg,
-                       const std::vector<std::vector<std::size_t>>& routes, const SurveyConfig& sc) {
+                       const std::vector<std::vector<std::size_t>>& routes,
+                       const SurveyConfig& sc) {
   sim.guard("adding survey vehicles", [&] {
     for (std::size_t i = 0; i < routes.size(); ++i) {
       std::vector<std::string> edges;

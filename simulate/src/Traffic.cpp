@@ -45,7 +45,8 @@ TrafficFrames readTrafficCsv(const std::filesystem::path& path, std::size_t min_
     auto bad = [&](const std::string& why) {
       throw std::runtime_error(path.string() + ":" + std::to_string(lineno) + ": " + why);
     };
-    if (f.size() != 10) bad("expected 10 columns (frame,t,id,x,y,z,heading_deg,length,width,height)");
+    if (f.size() != 10)
+      bad("expected 10 columns (frame,t,id,x,y,z,heading_deg,length,width,height)");
     VehicleBox b;
     std::size_t frame = 0;
     try {

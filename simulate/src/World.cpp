@@ -15,9 +15,9 @@
 namespace slamroute::simulate {
 
 const char* surfaceKindName(SurfaceKind k) {
-  static const char* names[] = {"ground", "road", "sidewalk", "deck", "pillar", "parapet",
-                                "building", "wall", "pole", "tree", "vehicle", "furniture",
-                                "parked_car", "fence"};
+  static const char* names[] = {"ground",  "road",      "sidewalk",   "deck", "pillar",
+                                "parapet", "building",  "wall",       "pole", "tree",
+                                "vehicle", "furniture", "parked_car", "fence"};
   return names[static_cast<int>(k)];
 }
 
@@ -34,10 +34,12 @@ void validate(const WorldConfig& c) {
   if (c.rich_share < 0 || c.wall_share < 0 || c.rich_share + c.wall_share > 1.0)
     bad("rich_share and wall_share must be >= 0 and sum to <= 1");
   if (c.frontage_min_m <= 0 || c.frontage_max_m < c.frontage_min_m) bad("frontage range");
-  if (c.building_depth_min_m <= 0 || c.building_depth_max_m < c.building_depth_min_m) bad("depth range");
+  if (c.building_depth_min_m <= 0 || c.building_depth_max_m < c.building_depth_min_m)
+    bad("depth range");
   if (c.height_min_m <= 0 || c.height_max_m < c.height_min_m) bad("height range");
   if (c.setback_min_m < 0 || c.setback_max_m < c.setback_min_m) bad("setback range");
-  if (c.pole_spacing_m <= 0 || c.tree_spacing_m <= 0 || c.open_pole_spacing_m <= 0) bad("spacing <= 0");
+  if (c.pole_spacing_m <= 0 || c.tree_spacing_m <= 0 || c.open_pole_spacing_m <= 0)
+    bad("spacing <= 0");
   if (c.elevated_min_m <= 0) bad("elevated_min_m must be > 0");
   if (c.road_camber_pct < 0 || c.road_camber_pct > 10) bad("road_camber_pct must be in [0, 10]");
   if (c.undulation_m < 0 || c.undulation_m > 0.2) bad("undulation_m must be in [0, 0.2]");
@@ -111,7 +113,9 @@ void measureStreets(const World& w, const SumoNet& net, const WorldConfig& cfg,
                     std::unordered_map<std::string, StreetInfo>& out) {
   std::unordered_map<std::string, bool> pair;
   for (const auto& e : net.edges) pair[e.from + "\x1f" + e.to] = true;
-  struct Acc { double len = 0, cov = 0, var = 0; };
+  struct Acc {
+    double len = 0, cov = 0, var = 0;
+  };
   std::unordered_map<std::string, Acc> acc;
   for (const auto& e : net.edges) {
     if (e.lanes.empty() || e.lanes.front().shape.size() < 2) continue;
@@ -174,8 +178,9 @@ World World::build(const SumoNet& net, const WorldConfig& cfg, std::uint64_t see
   if (!cfg.poly_file.empty()) {
     // with real buildings the class follows what was measured
     for (auto& [id, info] : w.impl_->streets)
-      info.kind = info.richness > 0.45 ? StreetKind::Rich
-                  : info.richness > 0.15 ? StreetKind::Wall : StreetKind::Open;
+      info.kind = info.richness > 0.45   ? StreetKind::Rich
+                  : info.richness > 0.15 ? StreetKind::Wall
+                                         : StreetKind::Open;
   }
   const auto& s = w.impl_->stats;
   logInfo("world: " + std::to_string(s.triangles) + " triangles, " + std::to_string(s.buildings) +
@@ -231,7 +236,8 @@ StreetKind World::streetKind(const std::string& e) const {
 double World::streetRichness(const std::string& e) const {
   const auto it = impl_->streets.find(e);
   if (it == impl_->streets.end())
-    throw std::invalid_argument("World::streetRichness: '" + e + "' is not an edge of the world's net");
+    throw std::invalid_argument("World::streetRichness: '" + e +
+                                "' is not an edge of the world's net");
   return it->second.richness;
 }
 
@@ -261,8 +267,8 @@ RayHit World::castRay(const Point3& origin, const Vec3& dir_in, double max_range
   for (const auto& b : boxes) {
     double tb;
     Vec3 nb;
-    if (detail::intersectBox(detail::prepareBox(b), origin, dir,
-                             out.hit ? out.range_m : max_range, &tb, &nb)) {
+    if (detail::intersectBox(detail::prepareBox(b), origin, dir, out.hit ? out.range_m : max_range,
+                             &tb, &nb)) {
       out.hit = true;
       out.range_m = tb;
       out.normal = nb;

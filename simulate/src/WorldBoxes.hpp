@@ -10,9 +10,9 @@ namespace slamroute::simulate::detail {
 
 /// A vehicle box prepared for ray tests: centre, length/width axes in the xy plane, half extents.
 struct PreparedBox {
-  Eigen::Vector3d c;       ///< box centre (not bottom) [m]
-  Eigen::Vector2d u, v;    ///< unit length axis, unit width axis
-  Eigen::Vector3d half;    ///< half length, half width, half height
+  Eigen::Vector3d c;     ///< box centre (not bottom) [m]
+  Eigen::Vector2d u, v;  ///< unit length axis, unit width axis
+  Eigen::Vector3d half;  ///< half length, half width, half height
 };
 
 inline PreparedBox prepareBox(const VehicleBox& b) {
@@ -27,8 +27,9 @@ inline PreparedBox prepareBox(const VehicleBox& b) {
 
 /// Slab test in the box frame. Returns true and sets t (< tmax) and the world normal (facing
 /// the origin) on a hit in front of the origin (origin inside the box: no hit).
-inline bool intersectBox(const PreparedBox& b, const Eigen::Vector3d& org, const Eigen::Vector3d& dir,
-                         double tmax, double* t, Eigen::Vector3d* normal) {
+inline bool intersectBox(const PreparedBox& b, const Eigen::Vector3d& org,
+                         const Eigen::Vector3d& dir, double tmax, double* t,
+                         Eigen::Vector3d* normal) {
   const Eigen::Vector3d r = org - b.c;
   const double o[3] = {b.u.dot(r.head<2>()), b.v.dot(r.head<2>()), r.z()};
   const double d[3] = {b.u.dot(dir.head<2>()), b.v.dot(dir.head<2>()), dir.z()};
@@ -57,9 +58,12 @@ inline bool intersectBox(const PreparedBox& b, const Eigen::Vector3d& org, const
   if (axis < 0) return false;  // origin inside
   *t = t0;
   Eigen::Vector3d n;
-  if (axis == 0) n << b.u * sign, 0;
-  else if (axis == 1) n << b.v * sign, 0;
-  else n << 0, 0, sign;
+  if (axis == 0)
+    n << b.u * sign, 0;
+  else if (axis == 1)
+    n << b.v * sign, 0;
+  else
+    n << 0, 0, sign;
   *normal = n;
   return true;
 }

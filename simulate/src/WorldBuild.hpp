@@ -24,8 +24,8 @@ struct BuildContext {
   KeepOutGrid roads{25.0};         ///< lanes + sidewalks (+ clearance) and junction areas
   KeepOutGrid ground_roads{25.0};  ///< lanes and junctions at ground level (pillars avoid them)
   KeepOutGrid placed{25.0};        ///< buildings, walls and tree crowns placed so far
-  std::unordered_map<std::string, StreetKind> street_kind;  ///< by street key
-  std::unordered_map<std::string, std::string> edge_street; ///< edge id -> street key
+  std::unordered_map<std::string, StreetKind> street_kind;   ///< by street key
+  std::unordered_map<std::string, std::string> edge_street;  ///< edge id -> street key
   Relief relief;
 
   BuildContext(const SumoNet& n, const WorldConfig& c, std::uint64_t s)
@@ -55,9 +55,9 @@ void buildPavement(BuildContext& ctx, const SumoEdge& e, std::size_t k, const Ed
 /// Junction area (convex hull at height z), subdivided so the relief shows on it.
 void buildJunctionSurface(BuildContext& ctx, const Polygon2& hull, double z);
 
-void buildRoads(BuildContext& ctx);      ///< lanes, decks, sidewalks, parapets, junctions, pillars
-void buildGround(BuildContext& ctx);     ///< ground plane under everything
-void buildStreetside(BuildContext& ctx); ///< street classes, buildings, walls, poles, trees
+void buildRoads(BuildContext& ctx);       ///< lanes, decks, sidewalks, parapets, junctions, pillars
+void buildGround(BuildContext& ctx);      ///< ground plane under everything
+void buildStreetside(BuildContext& ctx);  ///< street classes, buildings, walls, poles, trees
 void buildPolyBuildings(BuildContext& ctx, const std::string& poly_file);
 
 }  // namespace slamroute::simulate::detail

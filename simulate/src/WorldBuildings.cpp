@@ -140,9 +140,12 @@ void buildStreetside(BuildContext& ctx) {
                                                              : StreetKind::Open;
   }
   for (const auto& [key, kind] : ctx.street_kind) {
-    if (kind == StreetKind::Rich) ++ctx.stats.streets_rich;
-    else if (kind == StreetKind::Wall) ++ctx.stats.streets_wall;
-    else ++ctx.stats.streets_open;
+    if (kind == StreetKind::Rich)
+      ++ctx.stats.streets_rich;
+    else if (kind == StreetKind::Wall)
+      ++ctx.stats.streets_wall;
+    else
+      ++ctx.stats.streets_open;
   }
   if (!c.poly_file.empty()) return;  // buildings come from the polygon file instead
   // Placement in net order (deterministic); each side has its own random stream.
@@ -161,9 +164,12 @@ void buildStreetside(BuildContext& ctx) {
     for (std::size_t k = 0; k < sides.size(); ++k) {
       std::mt19937_64 rng(hashSeed(ctx.seed, "side:" + e.id + ":" + std::to_string(k)));
       SidePlacer placer(ctx, rng, sides[k]);
-      if (kind == StreetKind::Rich) placer.rich();
-      else if (kind == StreetKind::Wall) placer.wall();
-      else placer.open();
+      if (kind == StreetKind::Rich)
+        placer.rich();
+      else if (kind == StreetKind::Wall)
+        placer.wall();
+      else
+        placer.open();
     }
   }
 }

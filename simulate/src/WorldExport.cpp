@@ -1,7 +1,7 @@
 // World export: PLY (binary little endian), OBJ, and a top-down height-coloured PNG.
+#include <tbb/parallel_for.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +25,8 @@ void put(std::string& buf, T v) {  // little endian on x86-64
 
 void World::writePly(const std::filesystem::path& path) const {
   const auto& m = impl_->mesh;
-  std::string buf = "ply\nformat binary_little_endian 1.0\ncomment slamroute world mesh (net frame, metres)\n";
+  std::string buf =
+      "ply\nformat binary_little_endian 1.0\ncomment slamroute world mesh (net frame, metres)\n";
   buf += "element vertex " + std::to_string(m.vertices.size()) +
          "\nproperty float x\nproperty float y\nproperty float z\n";
   buf += "element face " + std::to_string(m.triangles.size()) +

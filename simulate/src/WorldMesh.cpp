@@ -59,7 +59,8 @@ void MeshBuilder::slabSides(const std::vector<Point3>& left, const std::vector<P
     quad(vertex(right[i]), vertex(rb[i]), vertex(rb[i + 1]), vertex(right[i + 1]), sides);
     quad(vertex(left[i + 1]), vertex(lb[i + 1]), vertex(lb[i]), vertex(left[i]), sides);
   }
-  if (thickness[0] > 1e-3) quad(vertex(left[0]), vertex(lb[0]), vertex(rb[0]), vertex(right[0]), sides);
+  if (thickness[0] > 1e-3)
+    quad(vertex(left[0]), vertex(lb[0]), vertex(rb[0]), vertex(right[0]), sides);
   if (thickness[n - 1] > 1e-3)
     quad(vertex(right[n - 1]), vertex(rb[n - 1]), vertex(lb[n - 1]), vertex(left[n - 1]), sides);
 }
@@ -275,8 +276,10 @@ std::vector<std::pair<long, long>> KeepOutGrid::cellsOf(const Polygon2& p) const
     y1 = std::max(y1, q.y());
   }
   std::vector<std::pair<long, long>> out;
-  for (long ix = static_cast<long>(std::floor(x0 / cell_)); ix <= static_cast<long>(std::floor(x1 / cell_)); ++ix)
-    for (long iy = static_cast<long>(std::floor(y0 / cell_)); iy <= static_cast<long>(std::floor(y1 / cell_)); ++iy)
+  for (long ix = static_cast<long>(std::floor(x0 / cell_));
+       ix <= static_cast<long>(std::floor(x1 / cell_)); ++ix)
+    for (long iy = static_cast<long>(std::floor(y0 / cell_));
+         iy <= static_cast<long>(std::floor(y1 / cell_)); ++iy)
       out.emplace_back(ix, iy);
   return out;
 }

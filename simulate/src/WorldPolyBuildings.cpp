@@ -1,5 +1,6 @@
 // World build step: buildings from a SUMO polygon file (polyconvert output:
-// <poly id=".." type="building" shape="x,y x,y ..."> with optional <param key="height"/"building:levels">).
+// <poly id=".." type="building" shape="x,y x,y ..."> with optional <param
+// key="height"/"building:levels">).
 #include <pugixml.hpp>
 
 #include <cmath>
@@ -30,9 +31,11 @@ Polygon2 parseShape(const std::string& shape) {
 void buildPolyBuildings(BuildContext& ctx, const std::string& poly_file) {
   pugi::xml_document doc;
   const auto res = doc.load_file(poly_file.c_str());
-  if (!res) throw std::invalid_argument("world.poly_file '" + poly_file + "': " + res.description());
+  if (!res)
+    throw std::invalid_argument("world.poly_file '" + poly_file + "': " + res.description());
   const auto root = doc.child("additional");
-  if (!root) throw std::invalid_argument("world.poly_file '" + poly_file + "': no <additional> root");
+  if (!root)
+    throw std::invalid_argument("world.poly_file '" + poly_file + "': no <additional> root");
   std::size_t dropped = 0;
   for (const auto& poly : root.children("poly")) {
     const std::string type = poly.attribute("type").as_string();
@@ -57,16 +60,17 @@ void buildPolyBuildings(BuildContext& ctx, const std::string& poly_file) {
       if (k == "building:levels" && height <= 0) height = 3.0 * p.attribute("value").as_double();
     }
     if (height <= 0) {
-      std::mt19937_64 rng(hashSeed(ctx.seed, std::string("poly:") + poly.attribute("id").as_string()));
-      height = ctx.cfg.height_min_m +
-               (ctx.cfg.height_max_m - ctx.cfg.height_min_m) *
-                   (static_cast<double>(rng() >> 11) / 9007199254740992.0);
+      std::mt19937_64 rng(
+          hashSeed(ctx.seed, std::string("poly:") + poly.attribute("id").as_string()));
+      height = ctx.cfg.height_min_m + (ctx.cfg.height_max_m - ctx.cfg.height_min_m) *
+                                          (static_cast<double>(rng() >> 11) / 9007199254740992.0);
     }
     ctx.placed.add(convexHull(fp));
     ctx.mb.prism(fp, ctx.ground_z - kFoundation_m, ctx.ground_z + height, SurfaceKind::Building);
     ++ctx.stats.buildings;
   }
-  if (dropped) logInfo("world: dropped " + std::to_string(dropped) + " polygon buildings overlapping roads");
+  if (dropped)
+    logInfo("world: dropped " + std::to_string(dropped) + " polygon buildings overlapping roads");
 }
 
 }  // namespace slamroute::simulate::detail

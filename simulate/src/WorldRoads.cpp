@@ -20,8 +20,8 @@ bool pedestrianOnly(const SumoLane& l) {
 
 Polygon2 segmentQuad(const std::vector<Point3>& left, const std::vector<Point3>& right,
                      std::size_t i) {
-  return convexHull({left[i].head<2>(), left[i + 1].head<2>(), right[i + 1].head<2>(),
-                     right[i].head<2>()});
+  return convexHull(
+      {left[i].head<2>(), left[i + 1].head<2>(), right[i + 1].head<2>(), right[i].head<2>()});
 }
 
 /// Adds the keep-out quads of a strip between two borders (grown by `grow` metres).
@@ -133,10 +133,10 @@ void buildJunctions(BuildContext& ctx) {
       }
     }
     // keep-out: the junction area grown by the clearance (a disc-like square for points)
-    Polygon2 keep = has_area ? hull
-                             : orientedRect(j.pos.head<2>(), 0.0, 2.0, 2.0);
+    Polygon2 keep = has_area ? hull : orientedRect(j.pos.head<2>(), 0.0, 2.0, 2.0);
     ctx.roads.add(inflateConvex(keep, c.junction_clearance_m));
-    if (ctx.elevation(Point3(0, 0, z)) < c.elevated_min_m) ctx.ground_roads.add(inflateConvex(keep, 0.5));
+    if (ctx.elevation(Point3(0, 0, z)) < c.elevated_min_m)
+      ctx.ground_roads.add(inflateConvex(keep, 0.5));
   }
 }
 
@@ -238,8 +238,10 @@ void buildGround(BuildContext& ctx) {
   }
   if (x0 > x1) x0 = y0 = -100, x1 = y1 = 100;
   const double m = ctx.cfg.ground_margin_m, z = ctx.ground_z - kBasePlaneBelow_m;
-  const int a = ctx.mb.vertex(Point3(x0 - m, y0 - m, z)), b = ctx.mb.vertex(Point3(x1 + m, y0 - m, z)),
-            cc = ctx.mb.vertex(Point3(x1 + m, y1 + m, z)), d = ctx.mb.vertex(Point3(x0 - m, y1 + m, z));
+  const int a = ctx.mb.vertex(Point3(x0 - m, y0 - m, z)),
+            b = ctx.mb.vertex(Point3(x1 + m, y0 - m, z)),
+            cc = ctx.mb.vertex(Point3(x1 + m, y1 + m, z)),
+            d = ctx.mb.vertex(Point3(x0 - m, y1 + m, z));
   ctx.mb.quad(a, b, cc, d, SurfaceKind::Ground);
   buildRoughGround(ctx);
 }

@@ -69,26 +69,29 @@ TEST(BadInputCli, OutputPathsThatCannotBeWritten) {
 TEST(BadInputCli, NumbersNoFileCanHold) {
   const auto dir = test::cliTempDir("bad_numbers");
   put(dir / "g.json", R"({"nodes":[{"id":0,"x":1e400,"y":0}],"edges":[]})");
-  test::expectCleanFailure("plan --graph " + (dir / "g.json").string() + " --out " +
-                               (dir / "r.json").string(),
-                           "g.json: not valid JSON (number overflow parsing '1e400')", dir, 1);
+  test::expectCleanFailure(
+      "plan --graph " + (dir / "g.json").string() + " --out " + (dir / "r.json").string(),
+      "g.json: not valid JSON (number overflow parsing '1e400')", dir, 1);
   put(dir / "dup.tum", "0 0 0 0 0 0 0 1\n0.1 1 0 0 0 0 0 1\n0.1 2 0 0 0 0 0 1\n");
-  test::expectCleanFailure("compare " + (dir / "dup.tum").string() + " " + (dir / "dup.tum").string(),
-                           "dup.tum:3: time 0.100000 s is not later than the pose before", dir, 2);
+  test::expectCleanFailure(
+      "compare " + (dir / "dup.tum").string() + " " + (dir / "dup.tum").string(),
+      "dup.tum:3: time 0.100000 s is not later than the pose before", dir, 2);
   put(dir / "far.tum", "0 0 0 0 0 0 0 1\n0.1 1e300 0 0 0 0 0 1\n");
-  test::expectCleanFailure("compare " + (dir / "far.tum").string() + " " + (dir / "dup.tum").string(),
-                           "far.tum:2: coordinates must be finite and within 10,000 km", dir, 3);
+  test::expectCleanFailure(
+      "compare " + (dir / "far.tum").string() + " " + (dir / "dup.tum").string(),
+      "far.tum:2: coordinates must be finite and within 10,000 km", dir, 3);
   put(dir / "zero.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n0 0 0 1 0 0 0 0 0 0 0 0\n");
-  test::expectCleanFailure("compare " + (dir / "zero.txt").string() + " " + (dir / "dup.tum").string(),
-                           "zero.txt:2: the 3x3 part is not a rotation matrix", dir, 4);
+  test::expectCleanFailure(
+      "compare " + (dir / "zero.txt").string() + " " + (dir / "dup.tum").string(),
+      "zero.txt:2: the 3x3 part is not a rotation matrix", dir, 4);
   // A shape point 100,000 km out used to make survey's world builder loop for ever.
   std::string net = readFile(kGrid);
   const auto shape = net.find("shape=\"", net.find("<edge id=\"g00_g01\"")) + 7;
   net.insert(shape, "1e8,0 ");
   put(dir / "far.net.xml", net);
-  test::expectCleanFailure("survey --net " + (dir / "far.net.xml").string() + " --out " +
-                               (dir / "survey").string(),
-                           "far.net.xml: edge 'g00_g01': bad shape point '1e8,0'", dir, 5);
+  test::expectCleanFailure(
+      "survey --net " + (dir / "far.net.xml").string() + " --out " + (dir / "survey").string(),
+      "far.net.xml: edge 'g00_g01': bad shape point '1e8,0'", dir, 5);
 }
 
 TEST(BadInputCli, PlanReplacesRouteJsonAndRouXmlTogether) {
@@ -99,9 +102,8 @@ TEST(BadInputCli, PlanReplacesRouteJsonAndRouXmlTogether) {
                                   " --planner postman --out " + (dir / "r.json").string());
   ASSERT_EQ(first.code, 0) << first.out;
   ASSERT_TRUE(fs::exists(dir / "r.rou.xml"));
-  put(dir / "g.json",
-      R"({"nodes":[{"id":0,"x":0,"y":0},{"id":1,"x":100,"y":0}],"edges":[)"
-      R"({"id":0,"u":0,"v":1,"length":100},{"id":1,"u":1,"v":0,"length":100}]})");
+  put(dir / "g.json", R"({"nodes":[{"id":0,"x":0,"y":0},{"id":1,"x":100,"y":0}],"edges":[)"
+                      R"({"id":0,"u":0,"v":1,"length":100},{"id":1,"u":1,"v":0,"length":100}]})");
   const auto second = test::runCli("--log-level warn plan --graph " + (dir / "g.json").string() +
                                    " --planner postman --out " + (dir / "r.json").string());
   ASSERT_EQ(second.code, 0) << second.out;

@@ -1,8 +1,8 @@
 #pragma once
 // Runs the slamroute binary in a shell and captures its output and exit code.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include "TestTmp.hpp"
 
 #include <array>
 #include <chrono>

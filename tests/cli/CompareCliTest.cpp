@@ -1,7 +1,7 @@
 // `slamroute compare`: metrics for two trajectory files, one-line errors on bad input.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include "TestTmp.hpp"
 
 #include <array>
 #include <cmath>
@@ -29,7 +29,8 @@ fs::path tmp() {
 CmdRun runCompare(const std::string& args) {
   // One file per test: ctest runs the tests of this file in parallel processes.
   const fs::path err =
-      tmp() / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".stderr");
+      tmp() /
+      (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".stderr");
   const std::string cmd = std::string(SLAMROUTE_BINARY) + " " + args + " 2>" + err.string();
   CmdRun r;
   FILE* p = popen(cmd.c_str(), "r");
@@ -61,7 +62,8 @@ int lines(const std::string& s) {
 
 TEST(CompareCli, JsonOfAStretchedCopy) {
   const fs::path gt = writeTum("gt.tum", 1.0), est = writeTum("est.tum", 1.02);
-  const CmdRun r = runCompare("compare " + est.string() + " " + gt.string() + " --json --segment 50");
+  const CmdRun r =
+      runCompare("compare " + est.string() + " " + gt.string() + " --json --segment 50");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["rpe_trans_pct"].get<double>(), 2.0, 1e-3);
@@ -81,7 +83,8 @@ TEST(CompareCli, IdenticalFilesGiveZeroTextReport) {
 
 TEST(CompareCli, MissingFileIsAOneLineError) {
   const fs::path gt = writeTum("gt3.tum", 1.0);
-  const CmdRun r = runCompare("compare " + (tmp() / "does_not_exist.tum").string() + " " + gt.string());
+  const CmdRun r =
+      runCompare("compare " + (tmp() / "does_not_exist.tum").string() + " " + gt.string());
   EXPECT_NE(r.code, 0);
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("does_not_exist.tum"), std::string::npos) << r.err;

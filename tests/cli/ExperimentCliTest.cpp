@@ -31,15 +31,17 @@ TEST(ExperimentCli, PaperTablesOnThePlusNetAndResume) {
   const auto dir = test::cliTempDir("experiment_plus");
   std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\n";
   const std::string net = std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml";
-  const std::string cmd = "--seed 42 --config " + (dir / "fast.yaml").string() + " experiment paper --net " + net +
-                          " --seeds 1 --sizes 20,30 --status-every 0 --out " + (dir / "out").string();
+  const std::string cmd =
+      "--seed 42 --config " + (dir / "fast.yaml").string() + " experiment paper --net " + net +
+      " --seeds 1 --sizes 20,30 --status-every 0 --out " + (dir / "out").string();
   const auto r = test::runCli(cmd);
   ASSERT_EQ(r.code, 0) << r.out;
   const fs::path out = dir / "out";
   const std::string tables = readFile(out / "paper_tables.md");
   // The command line reproduces the tables: net, config, seeds and sizes are all in it.
   EXPECT_NE(tables.find("Command: `slamroute --seed 42 --config " + (dir / "fast.yaml").string() +
-                        " experiment paper --net " + net + " --out " + out.string() + " --seeds 1 --sizes 20,30`"),
+                        " experiment paper --net " + net + " --out " + out.string() +
+                        " --seeds 1 --sizes 20,30`"),
             std::string::npos)
       << tables;
   EXPECT_NE(tables.find("(mean ± std over 1 seed)"), std::string::npos);
@@ -60,7 +62,8 @@ TEST(ExperimentCli, PaperTablesOnThePlusNetAndResume) {
   // Table 3: each planner on each size.
   for (const char* p : {"qlearning", "tsp", "postman"})
     for (const char* n : {" | 20 | ", " | 30 | "})
-      EXPECT_NE(tables.find(std::string("| ") + p + n), std::string::npos) << p << n << "\n" << tables;
+      EXPECT_NE(tables.find(std::string("| ") + p + n), std::string::npos) << p << n << "\n"
+                                                                           << tables;
 
   // --resume keeps all eleven steps (survey, graph, three plans, drives, SLAM runs) and writes
   // the same tables.

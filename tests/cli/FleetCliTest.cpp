@@ -28,18 +28,27 @@ TEST(FleetCli, ARouteWithAnUnknownEdgeNamesTheVehicleAndWritesNothing) {
 TEST(FleetCli, AFleetFolderWithAMissingVehicleFolderIsNamed) {
   const auto dir = test::cliTempDir("fleet_bad_folder");
   fs::create_directories(dir / "drive" / "vehicle_0");
-  const nlohmann::json fleet = {
-      {"net", kGrid},
-      {"seed", 1},
-      {"vehicles",
-       {{{"id", "mapper_0"}, {"folder", "vehicle_0"}, {"route_length_m", 1.0},
-         {"driven_m", 1.0}, {"depart_s", 0.0}, {"arrive_s", 1.0}, {"frames", 10}},
-        {{"id", "mapper_1"}, {"folder", "vehicle_1"}, {"route_length_m", 1.0},
-         {"driven_m", 1.0}, {"depart_s", 0.0}, {"arrive_s", 1.0}, {"frames", 10}}}}};
+  const nlohmann::json fleet = {{"net", kGrid},
+                                {"seed", 1},
+                                {"vehicles",
+                                 {{{"id", "mapper_0"},
+                                   {"folder", "vehicle_0"},
+                                   {"route_length_m", 1.0},
+                                   {"driven_m", 1.0},
+                                   {"depart_s", 0.0},
+                                   {"arrive_s", 1.0},
+                                   {"frames", 10}},
+                                  {{"id", "mapper_1"},
+                                   {"folder", "vehicle_1"},
+                                   {"route_length_m", 1.0},
+                                   {"driven_m", 1.0},
+                                   {"depart_s", 0.0},
+                                   {"arrive_s", 1.0},
+                                   {"frames", 10}}}}};
   std::ofstream(dir / "drive" / "fleet.json") << fleet.dump();
-  test::expectCleanFailure("evaluate --drive " + (dir / "drive").string() + " --out " +
-                               (dir / "eval").string(),
-                           "fleet.json: vehicle folder 'vehicle_1' does not exist", dir, 1);
+  test::expectCleanFailure(
+      "evaluate --drive " + (dir / "drive").string() + " --out " + (dir / "eval").string(),
+      "fleet.json: vehicle folder 'vehicle_1' does not exist", dir, 1);
 }
 
 }  // namespace

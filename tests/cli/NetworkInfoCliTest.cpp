@@ -23,9 +23,9 @@ TEST(NetworkInfoCli, BolognaJson) {
 TEST(NetworkInfoCli, ExportsWrittenWhenAsked) {
   const auto dir = test::cliTempDir("netinfo_export");
   const auto r = test::runCli("network-info " + std::string(SLAMROUTE_SOURCE_DIR) +
-                              "/networks/test/plus.net.xml --geojson " + (dir / "g.geojson").string() +
-                              " --graphml " + (dir / "g.graphml").string() + " --png " +
-                              (dir / "g.png").string());
+                              "/networks/test/plus.net.xml --geojson " +
+                              (dir / "g.geojson").string() + " --graphml " +
+                              (dir / "g.graphml").string() + " --png " + (dir / "g.png").string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir / "g.geojson"));
   EXPECT_TRUE(std::filesystem::exists(dir / "g.graphml"));
@@ -41,13 +41,16 @@ void expectOneLineError(const std::string& args, const std::string& fragment) {
 
 TEST(NetworkInfoCli, BadInputs) {
   const auto dir = test::cliTempDir("netinfo_bad");
-  expectOneLineError("network-info " + (dir / "none.net.xml").string(), "none.net.xml: file not found");
+  expectOneLineError("network-info " + (dir / "none.net.xml").string(),
+                     "none.net.xml: file not found");
   std::ofstream(dir / "junk.net.xml") << "junk";
   expectOneLineError("network-info " + (dir / "junk.net.xml").string(), "not valid XML");
   std::ofstream(dir / "r.net.xml") << "<routes/>";
   expectOneLineError("network-info " + (dir / "r.net.xml").string(), "not a SUMO network");
-  std::ofstream(dir / "empty.net.xml") << "<net><junction id=\"a\" type=\"dead_end\" x=\"0\" y=\"0\"/></net>";
-  expectOneLineError("network-info " + (dir / "empty.net.xml").string(), "no edge open to passenger cars");
+  std::ofstream(dir / "empty.net.xml")
+      << "<net><junction id=\"a\" type=\"dead_end\" x=\"0\" y=\"0\"/></net>";
+  expectOneLineError("network-info " + (dir / "empty.net.xml").string(),
+                     "no edge open to passenger cars");
   std::ofstream(dir / "t.net.xml.gz") << "\x1f\x8b\x08\x00\x00\x00\x00\x00";
   expectOneLineError("network-info " + (dir / "t.net.xml.gz").string(), "gzip");
 }
@@ -59,12 +62,15 @@ TEST(ConfigCli, DumpIsValidYamlAndRoundTrips) {
   EXPECT_NE(r.out.find("seed: 42"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("roadgraph:"), std::string::npos);
   std::ofstream(dir / "c.yaml") << r.out;
-  const auto again = test::runCli("--config " + (dir / "c.yaml").string() + " --seed 7 config --dump");
+  const auto again =
+      test::runCli("--config " + (dir / "c.yaml").string() + " --seed 7 config --dump");
   ASSERT_EQ(again.code, 0) << again.out;
   EXPECT_NE(again.out.find("seed: 7"), std::string::npos);
   std::ofstream(dir / "bad.yaml") << "roadgraph:\n  no_such_key: 1\n";
-  expectOneLineError("--config " + (dir / "bad.yaml").string() + " config --dump", "unknown key 'no_such_key'");
-  expectOneLineError("--config " + (dir / "missing.yaml").string() + " config --dump", "config file not found");
+  expectOneLineError("--config " + (dir / "bad.yaml").string() + " config --dump",
+                     "unknown key 'no_such_key'");
+  expectOneLineError("--config " + (dir / "missing.yaml").string() + " config --dump",
+                     "config file not found");
 }
 
 TEST(Cli, HelpEverywhere) {

@@ -1,6 +1,6 @@
 // Pieces of `run` / `experiment` (cli/Pipeline.hpp) that need no child process.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include "Pipeline.hpp"
 

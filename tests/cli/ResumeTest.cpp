@@ -1,6 +1,6 @@
 // `--resume` (cli/Resume.hpp): content hashes, step stamps, and which steps are kept.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -58,8 +58,17 @@ TEST(Resume, FolderHashSeesContentNamesAndNewFiles) {
 Step evaluateStep(const fs::path& dir, const std::string& seed, const std::string& level) {
   Step s;
   s.label = "evaluate p";
-  s.args = {"--seed", seed, "--log-level", level, "--config", (dir / "c.yaml").string(), "evaluate", "--drive",
-            (dir / "drive").string(), "--out", (dir / "eval").string()};
+  s.args = {"--seed",
+            seed,
+            "--log-level",
+            level,
+            "--config",
+            (dir / "c.yaml").string(),
+            "evaluate",
+            "--drive",
+            (dir / "drive").string(),
+            "--out",
+            (dir / "eval").string()};
   s.log = dir / "logs" / "evaluate-p.log";
   s.output = dir / "eval" / "metrics.json";
   return s;

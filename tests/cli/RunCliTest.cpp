@@ -24,7 +24,8 @@ namespace {
 pid_t spawnCli(const std::string& args, const std::filesystem::path& log) {
   const pid_t pid = ::fork();
   if (pid == 0) {
-    const std::string cmd = "exec " + std::string(SLAMROUTE_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+    const std::string cmd =
+        "exec " + std::string(SLAMROUTE_BINARY) + " " + args + " > " + log.string() + " 2>&1";
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
@@ -61,11 +62,13 @@ void expectEveryPlannersOutputs(const std::filesystem::path& out) {
     EXPECT_TRUE(std::filesystem::exists(out / "drives" / p / "groundtruth.tum")) << p;
     EXPECT_TRUE(std::filesystem::exists(out / "eval" / p / "estimate.tum")) << p;
     const auto m = nlohmann::json::parse(readFile(out / "eval" / p / "metrics.json"));
-    for (const char* k : {"ate_rmse_m", "ate_mean_m", "ate_max_m", "rpe_trans_pct", "coverage_edge_pct",
-                          "route_length_m", "loop_closures"})
+    for (const char* k : {"ate_rmse_m", "ate_mean_m", "ate_max_m", "rpe_trans_pct",
+                          "coverage_edge_pct", "route_length_m", "loop_closures"})
       EXPECT_TRUE(m.contains(k)) << p << " lacks " << k;
-    // The yaw prior scales with the drive's gyro (odometry.yaml) against the reference 0.1 / 0.05 deg/s.
-    EXPECT_NEAR(m.value("odometry_prior_sigma_deg", 0.0), 0.02 * std::hypot(0.2, 0.05) / std::hypot(0.1, 0.05), 1e-9)
+    // The yaw prior scales with the drive's gyro (odometry.yaml) against the reference 0.1 / 0.05
+    // deg/s.
+    EXPECT_NEAR(m.value("odometry_prior_sigma_deg", 0.0),
+                0.02 * std::hypot(0.2, 0.05) / std::hypot(0.1, 0.05), 1e-9)
         << p;
     const auto route = nlohmann::json::parse(readFile(out / "routes" / (p + ".json")));
     EXPECT_GT(route["length_m"].get<double>(), 100.0) << p;
@@ -74,7 +77,8 @@ void expectEveryPlannersOutputs(const std::filesystem::path& out) {
     const std::string pcd = readFile(out / "eval" / p / "map.pcd");
     const auto n = m["map_points"].get<std::size_t>();
     EXPECT_GT(n, 1000u) << p;
-    EXPECT_NE(pcd.find("\nPOINTS " + std::to_string(n) + "\nDATA binary\n"), std::string::npos) << p;
+    EXPECT_NE(pcd.find("\nPOINTS " + std::to_string(n) + "\nDATA binary\n"), std::string::npos)
+        << p;
     EXPECT_EQ(pcd.size(), pcd.find("DATA binary\n") + 12 + 12 * n) << p;
     EXPECT_TRUE(m["map_median_dist_m"].is_number()) << p;
   }
@@ -99,10 +103,11 @@ void expectBudgetAndDirectedCoverage(const std::filesystem::path& out) {
 /// report.md: the tables of every planner and step, and the map accuracy cell.
 void expectReportTables(const std::filesystem::path& out) {
   const std::string report = readFile(out / "report.md");
-  for (const char* s : {"| qlearning |", "| random |", "| postman |", "Spearman", "report/graph_weights.png",
-                        "| node recall | ", "| survey | value | meaning |", "| streets driven | ",
-                        "| sumo_mapping | value | meaning |", "| turns forbidden | ",
-                        "| noise correlation time | 2.0 s | ", "| directed SUMO edges [%] |"})
+  for (const char* s :
+       {"| qlearning |", "| random |", "| postman |", "Spearman", "report/graph_weights.png",
+        "| node recall | ", "| survey | value | meaning |", "| streets driven | ",
+        "| sumo_mapping | value | meaning |", "| turns forbidden | ",
+        "| noise correlation time | 2.0 s | ", "| directed SUMO edges [%] |"})
     EXPECT_NE(report.find(s), std::string::npos) << s;
   EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
   // Map accuracy: the median distance and the share beyond the 2 m clamp, from metrics.json (a
@@ -129,7 +134,8 @@ void expectReportTables(const std::filesystem::path& out) {
 void expectResumeKeepsEveryStep(const std::string& cmd, const std::filesystem::path& out) {
   // --resume: every step left its stamp, so a second run keeps all eleven (survey, graph, three
   // plans, drives and SLAM runs) and only writes the report again.
-  for (const std::string step : {"survey", "build-graph", "plan-random", "drive-postman", "evaluate-qlearning"})
+  for (const std::string step :
+       {"survey", "build-graph", "plan-random", "drive-postman", "evaluate-qlearning"})
     EXPECT_TRUE(std::filesystem::exists(out / "logs" / (step + ".done"))) << step;
   const std::string metrics_q = readFile(out / "eval" / "qlearning" / "metrics.json");
   const auto again = test::runCli(cmd + " --resume");
@@ -138,9 +144,12 @@ void expectResumeKeepsEveryStep(const std::string& cmd, const std::filesystem::p
   EXPECT_EQ(count(again.out, "  started  "), 0) << again.out;
   EXPECT_EQ(readFile(out / "eval" / "qlearning" / "metrics.json"), metrics_q);
   const std::string report2 = readFile(out / "report.md");
-  EXPECT_NE(report2.find("| evaluate postman | kept from an earlier run |"), std::string::npos) << report2;
+  EXPECT_NE(report2.find("| evaluate postman | kept from an earlier run |"), std::string::npos)
+      << report2;
   EXPECT_NE(report2.find("--resume"), std::string::npos);
-  EXPECT_NE(report2.find("s (this run; 11 of 11 steps kept from an earlier one)"), std::string::npos) << report2;
+  EXPECT_NE(report2.find("s (this run; 11 of 11 steps kept from an earlier one)"),
+            std::string::npos)
+      << report2;
 }
 
 /// A resumed run that must redo the SLAM, stopped by SIGTERM, then resumed to the end.
@@ -155,7 +164,8 @@ void expectSigtermStopsTheSlamAndResumeFinishes(const std::string& cmd,
   const auto log = dir / "interrupted.log";
   const pid_t pid = spawnCli(cmd + " --resume", log);
   ASSERT_GT(pid, 0);
-  for (int i = 0; i < 3000 && readText(log).find("  started  evaluate") == std::string::npos; ++i) ::usleep(10000);
+  for (int i = 0; i < 3000 && readText(log).find("  started  evaluate") == std::string::npos; ++i)
+    ::usleep(10000);
   ::usleep(200000);  // the SLAM runs are under way
   ::kill(pid, SIGTERM);
   int status = 0;
@@ -176,16 +186,19 @@ void expectSigtermStopsTheSlamAndResumeFinishes(const std::string& cmd,
   EXPECT_EQ(count(redo.out, "  started  "), 3 - finished) << redo.out;
   for (const std::string p : {"qlearning", "random", "postman"})
     EXPECT_TRUE(std::filesystem::exists(out / "eval" / p / "metrics.json")) << p;
-  EXPECT_EQ(readFile(out / "eval" / "qlearning" / "estimate.tum"), estimate_q);  // same seed, same output
+  EXPECT_EQ(readFile(out / "eval" / "qlearning" / "estimate.tum"),
+            estimate_q);  // same seed, same output
 }
 
 TEST(RunCli, WholePipelineOnThePlusNet) {
   const auto dir = test::cliTempDir("run_plus");
   // A gyro twice as noisy as the default: evaluate must take its figures from odometry.yaml.
-  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\nsimulate:\n  drive:\n    gyro_noise_deg_s: 0.2\n";
+  std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\nsimulate:\n  "
+                                      "drive:\n    gyro_noise_deg_s: 0.2\n";
   const std::string cmd = "--config " + (dir / "fast.yaml").string() + " run --net " +
                           std::string(SLAMROUTE_SOURCE_DIR) + "/networks/test/plus.net.xml --out " +
-                          (dir / "out").string() + " --status-every 0.2 --planners qlearning,random,postman";
+                          (dir / "out").string() +
+                          " --status-every 0.2 --planners qlearning,random,postman";
   const auto r = test::runCli(cmd);
   ASSERT_EQ(r.code, 0) << r.out;
   // While steps run, their progress is quoted from their logs now and then (here every 0.2 s):
@@ -202,7 +215,8 @@ TEST(RunCli, WholePipelineOnThePlusNet) {
 
 TEST(RunCli, BadNetIsAOneLineErrorAndWritesNothing) {
   const auto dir = test::cliTempDir("run_bad");
-  const auto r = test::runCli("run --net " + (dir / "missing.net.xml").string() + " --out " + (dir / "out").string());
+  const auto r = test::runCli("run --net " + (dir / "missing.net.xml").string() + " --out " +
+                              (dir / "out").string());
   EXPECT_NE(r.code, 0);
   EXPECT_EQ(test::countLines(r.out), 1) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));

@@ -51,8 +51,8 @@ void expectFleetReport(const fs::path& out) {
   for (const char* s :
        {"## Fleet: 2 vehicles share the streets", "report/route_fleet.png", "| makespan / bound |",
         "| single postman route from the depot, L1 [km] |",
-        "| this run's postman route (after the legal repair) [km] |", "| mapper_0 |", "| mapper_1 |",
-        "| merged map |", "### Fleet: SLAM per vehicle and the merged map",
+        "| this run's postman route (after the legal repair) [km] |", "| mapper_0 |",
+        "| mapper_1 |", "| merged map |", "### Fleet: SLAM per vehicle and the merged map",
         "s for the single postman route", "| street facades covered by the merged map [%] |",
         "eval/fleet/merged_map_error_top.png", "| postman |"})
     EXPECT_NE(report.find(s), std::string::npos) << s << "\n" << report;

@@ -33,5 +33,6 @@ TEST(Scripts, TestScriptRunsCtestOnTheBuildFolder) {
   EXPECT_NE(text.find("bash scripts/build.sh"), std::string::npos);
   EXPECT_NE(text.find("ctest --test-dir build"), std::string::npos);
   const std::string ci = readFile(fs::path(SLAMROUTE_SOURCE_DIR) / ".ci" / "run");
-  EXPECT_NE(ci.find("bash scripts/test.sh"), std::string::npos) << ".ci/run must call the README's test command";
+  EXPECT_NE(ci.find("bash scripts/test.sh"), std::string::npos)
+      << ".ci/run must call the README's test command";
 }

@@ -20,8 +20,9 @@ std::filesystem::path writeLog(const std::string& name, const std::string& text)
 }
 
 TEST(Subprocess, LastLogLineSkipsBlankLinesAndKeepsTheLastProgressUpdate) {
-  const auto p = writeLog("a.log", "world: 10 buildings\nevaluate: SLAM  10.0% (1/10) 0.5 s\r"
-                                   "evaluate: SLAM  20.0% (2/10) 1.0 s\n  \n\n");
+  const auto p = writeLog("a.log",
+                          "world: 10 buildings\nevaluate: SLAM  10.0% (1/10) 0.5 s\r"
+                          "evaluate: SLAM  20.0% (2/10) 1.0 s\n  \n\n");
   EXPECT_EQ(lastLogLine(p), "evaluate: SLAM  20.0% (2/10) 1.0 s");
 }
 

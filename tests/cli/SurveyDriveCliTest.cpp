@@ -58,11 +58,13 @@ TEST(SurveyDriveCli, EvaluateRejectsABadOdometrySpecAndWritesNothing) {
   const auto dir = test::cliTempDir("evaluate_bad_spec");
   ASSERT_TRUE(shortDrive(dir));
   std::ofstream(dir / "drive/odometry.yaml") << "gyro_noise_deg_s: -0.1\n";
-  const auto r = test::runCli("--log-level warn evaluate --drive " + (dir / "drive").string() + " --out " +
-                              (dir / "eval").string());
+  const auto r = test::runCli("--log-level warn evaluate --drive " + (dir / "drive").string() +
+                              " --out " + (dir / "eval").string());
   EXPECT_NE(r.code, 0) << r.out;
   EXPECT_EQ(test::countLines(r.out), 1) << r.out;
-  EXPECT_NE(r.out.find("odometry.yaml: 'gyro_noise_deg_s' must be a number >= 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("odometry.yaml: 'gyro_noise_deg_s' must be a number >= 0"),
+            std::string::npos)
+      << r.out;
   EXPECT_FALSE(fs::exists(dir / "eval"));
 }
 
@@ -71,9 +73,10 @@ TEST(SurveyDriveCli, EvaluateRejectsABadMapTileSizeAtOnce) {
   const fs::path cfg = dir / "tile.yaml";
   std::ofstream(cfg) << "evaluate:\n  output:\n    map_tile_m: 0\n";
   // The drive need not exist: the config is checked before anything is read.
-  test::expectCleanFailure("--config " + cfg.string() + " evaluate --drive " + (dir / "drive").string() + " --out " +
-                         (dir / "eval").string(),
-                     cfg.string() + ": evaluate.output.map_tile_m must be >= 10 (got 0)", dir, 1);
+  test::expectCleanFailure("--config " + cfg.string() + " evaluate --drive " +
+                               (dir / "drive").string() + " --out " + (dir / "eval").string(),
+                           cfg.string() + ": evaluate.output.map_tile_m must be >= 10 (got 0)", dir,
+                           1);
 }
 
 TEST(SurveyDriveCli, AFailedEvaluateLeavesNoHalfOutput) {
@@ -84,8 +87,8 @@ TEST(SurveyDriveCli, AFailedEvaluateLeavesNoHalfOutput) {
   const auto dir = test::cliTempDir("evaluate_late_failure");
   ASSERT_TRUE(shortDrive(dir));
   auto evaluate = [&](const std::string& out) {
-    return test::runCli("--log-level warn evaluate --scan-stride 10 --drive " + (dir / "drive").string() +
-                        " --out " + (dir / out).string());
+    return test::runCli("--log-level warn evaluate --scan-stride 10 --drive " +
+                        (dir / "drive").string() + " --out " + (dir / out).string());
   };
   const std::string pose_edges = readFile(dir / "drive/pose_edges.csv");
   const auto good = evaluate("eval");
@@ -124,8 +127,8 @@ TEST(SurveyDriveCli, DriveWithStrictTurnsRejectsATurnSumoDoesNotAllow) {
   const auto dir = test::cliTempDir("drive_bad_turn");
   const auto route = writeRoute(dir, "route.json", R"({"sumo_edges":["g00_g01","g10_g11"]})");
   test::expectCleanFailure("drive --strict-turns --net " + kGrid + " --route " + route.string() +
-                         " --out " + (dir / "out").string(),
-                     "'g00_g01' -> 'g10_g11'", dir, 1);
+                               " --out " + (dir / "out").string(),
+                           "'g00_g01' -> 'g10_g11'", dir, 1);
 }
 
 TEST(SurveyDriveCli, DriveJoinsATurnSumoDoesNotAllowWithAWarning) {
@@ -156,8 +159,8 @@ TEST(SurveyDriveCli, DriveAndSurveyRejectAnUnknownNet) {
   const auto dir = test::cliTempDir("unknown_net");
   const auto route = writeRoute(dir, "route.json", R"(["g00_g01"])");
   test::expectCleanFailure("drive --net " + (dir / "nowhere.net.xml").string() + " --route " +
-                         route.string() + " --out " + (dir / "out").string(),
-                     "nowhere.net.xml", dir, 1);
+                               route.string() + " --out " + (dir / "out").string(),
+                           "nowhere.net.xml", dir, 1);
   test::expectCleanFailure(
       "survey --net " + (dir / "nowhere.net.xml").string() + " --out " + (dir / "out").string(),
       "nowhere.net.xml", dir, 1);

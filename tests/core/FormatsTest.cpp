@@ -19,7 +19,8 @@ TEST(Trajectory, TumAndKittiRoundTrip) {
   for (int i = 0; i < 5; ++i) {
     StampedPose p;
     p.t = 0.1 * i;
-    p.T_world_body = Eigen::Translation3d(i, 2.0 * i, 0.5) * Eigen::AngleAxisd(0.3 * i, Vec3::UnitZ());
+    p.T_world_body =
+        Eigen::Translation3d(i, 2.0 * i, 0.5) * Eigen::AngleAxisd(0.3 * i, Vec3::UnitZ());
     t.push_back(p);
   }
   writeTum(dir / "a.tum", t);
@@ -77,7 +78,8 @@ TEST(Scan, KittiRoundTripAndRings) {
   const double step = (spec.vfov_up_deg - spec.vfov_down_deg) / (spec.channels - 1);
   for (int r = 0; r < spec.channels; ++r) {
     const double el = (spec.vfov_down_deg + r * step) * M_PI / 180.0;
-    s.points.push_back({static_cast<float>(20 * std::cos(el)), 0.f, static_cast<float>(20 * std::sin(el)), 0.5f, r});
+    s.points.push_back({static_cast<float>(20 * std::cos(el)), 0.f,
+                        static_cast<float>(20 * std::sin(el)), 0.5f, r});
   }
   std::filesystem::create_directories(dir / "scans");
   writeKittiScan(dir / "scans" / "000000.bin", s);
@@ -86,7 +88,8 @@ TEST(Scan, KittiRoundTripAndRings) {
   ASSERT_EQ(src.size(), 1u);
   const Scan back = src.scan(0);
   ASSERT_EQ(back.points.size(), s.points.size());
-  for (std::size_t i = 0; i < s.points.size(); ++i) EXPECT_EQ(back.points[i].ring, s.points[i].ring);
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    EXPECT_EQ(back.points[i].ring, s.points[i].ring);
   EXPECT_THROW(lidarPreset("nope"), std::invalid_argument);
   test::writeText(dir / "bad.bin", "abc");
   EXPECT_THROW(readKittiScan(dir / "bad.bin"), std::runtime_error);
@@ -129,7 +132,8 @@ TEST(ConfigIO, DumpLoadAndUnknownKeys) {
     config::loadYaml(YAML::Load("inner:\n  a_mm: 7\n"), part, "x.yaml");
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("x.yaml:inner: unknown key 'a_mm'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("x.yaml:inner: unknown key 'a_mm'"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(config::loadYaml(YAML::Load("n: lots\n"), part, "x.yaml"), std::invalid_argument);
 }

@@ -35,7 +35,8 @@ TEST(Odometry, FullCircleClosesAndQuarterHasTheRadius) {
   const double r = 10.0 / w;
   EXPECT_NEAR(quarter.translation().x(), r, 1e-3 * r);
   EXPECT_NEAR(quarter.translation().y(), r, 1e-3 * r);
-  EXPECT_NEAR(std::atan2(quarter.rotation()(1, 0), quarter.rotation()(0, 0)), std::numbers::pi / 2, 1e-9);
+  EXPECT_NEAR(std::atan2(quarter.rotation()(1, 0), quarter.rotation()(0, 0)), std::numbers::pi / 2,
+              1e-9);
   EXPECT_NEAR(o.yawRate(3.33), w, 1e-12);
 }
 
@@ -105,7 +106,8 @@ TEST(Odometry, ImuRollAndPitchRoundTripAndAreOptional) {
   EXPECT_NEAR(r.attitude(0.05)->pitch_rad, -0.02, 1e-7);
   // Without the two columns there is no attitude; a line with only one of them is an error.
   EXPECT_FALSE(constant(1.0, 0.0, 0.1, 3).attitude(0.1).has_value());
-  test::writeText(dir / "half.csv", "t,speed_mps,yaw_rate_rad_s,roll_rad,pitch_rad\n0,1,0,0.1,0.2\n0.1,1,0,0.1\n");
+  test::writeText(dir / "half.csv",
+                  "t,speed_mps,yaw_rate_rad_s,roll_rad,pitch_rad\n0,1,0,0.1,0.2\n0.1,1,0,0.1\n");
   try {
     readOdometryCsv(dir / "half.csv");
     FAIL();
@@ -139,10 +141,10 @@ TEST(Odometry, GyroBiasFromStandstill) {
   EXPECT_GT(r.standstill_s, 3.0);
   EXPECT_LT(r.standstill_s, 4.0);
   const auto& c = r.odometry.samples();
-  EXPECT_NEAR(c[10].yaw_rate_rad_s, bias, 1e-12);   // t = 1 s: no standstill seen yet
-  EXPECT_NEAR(c[75].yaw_rate_rad_s, bias, 1e-12);   // t = 7.5 s: not yet 2 s confirmed
-  EXPECT_NEAR(c[90].yaw_rate_rad_s, 0.0, 1e-12);    // t = 9 s: corrected
-  EXPECT_NEAR(c[150].yaw_rate_rad_s, 0.1, 1e-12);   // the turn keeps its true rate
+  EXPECT_NEAR(c[10].yaw_rate_rad_s, bias, 1e-12);  // t = 1 s: no standstill seen yet
+  EXPECT_NEAR(c[75].yaw_rate_rad_s, bias, 1e-12);  // t = 7.5 s: not yet 2 s confirmed
+  EXPECT_NEAR(c[90].yaw_rate_rad_s, 0.0, 1e-12);   // t = 9 s: corrected
+  EXPECT_NEAR(c[150].yaw_rate_rad_s, 0.1, 1e-12);  // the turn keeps its true rate
   const Pose3 m = r.odometry.motion(10.0, 20.0);
   EXPECT_NEAR(Eigen::AngleAxisd(m.rotation()).angle(), 1.0, 1e-9);
   // No standstill at all: nothing changes.

@@ -114,8 +114,8 @@ TEST(AtomicFileSet, ReplacesAllFilesOrNone) {
     writeFileAtomic(dir / "folder.json", "x");
     FAIL() << "wrote over a folder";
   } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), (dir / "folder.json").string() +
-                                         ": is a folder; give a file name to write");
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "folder.json").string() + ": is a folder; give a file name to write");
   }
 }
 

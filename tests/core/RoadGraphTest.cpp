@@ -87,7 +87,8 @@ TEST(RoadGraph, BadJsonIsRejectedWithTheFileName) {
   const auto dir = test::tempDir("roadgraph_bad");
   test::writeText(dir / "a.json", "{not json");
   EXPECT_THROW(RoadGraph::readJson(dir / "a.json"), std::invalid_argument);
-  test::writeText(dir / "b.json", R"({"nodes":[{"id":0,"x":0,"y":0}],"edges":[{"id":0,"u":0,"v":5,"length":1}]})");
+  test::writeText(dir / "b.json",
+                  R"({"nodes":[{"id":0,"x":0,"y":0}],"edges":[{"id":0,"u":0,"v":5,"length":1}]})");
   try {
     RoadGraph::readJson(dir / "b.json");
     FAIL();

@@ -143,17 +143,20 @@ TEST(SumoNet, BadInputsGiveOneLineErrors) {
   expectError(dir / "missing.net.xml", "not found");
   test::writeText(dir / "text.net.xml", "this is not xml <<<");
   expectError(dir / "text.net.xml", "not valid XML");
-  test::writeText(dir / "other.net.xml", "<?xml version=\"1.0\"?><routes><vehicle id=\"a\"/></routes>");
+  test::writeText(dir / "other.net.xml",
+                  "<?xml version=\"1.0\"?><routes><vehicle id=\"a\"/></routes>");
   expectError(dir / "other.net.xml", "not a SUMO network");
-  test::writeText(dir / "walk.net.xml",
-                  "<net><edge id=\"w\" from=\"a\" to=\"b\"><lane id=\"w_0\" index=\"0\" speed=\"2\" "
-                  "length=\"10\" allow=\"pedestrian\" shape=\"0,0 10,0\"/></edge>"
-                  "<junction id=\"a\" type=\"dead_end\" x=\"0\" y=\"0\"/>"
-                  "<junction id=\"b\" type=\"dead_end\" x=\"10\" y=\"0\"/></net>");
+  test::writeText(
+      dir / "walk.net.xml",
+      "<net><edge id=\"w\" from=\"a\" to=\"b\"><lane id=\"w_0\" index=\"0\" speed=\"2\" "
+      "length=\"10\" allow=\"pedestrian\" shape=\"0,0 10,0\"/></edge>"
+      "<junction id=\"a\" type=\"dead_end\" x=\"0\" y=\"0\"/>"
+      "<junction id=\"b\" type=\"dead_end\" x=\"10\" y=\"0\"/></net>");
   expectError(dir / "walk.net.xml", "no edge open to passenger cars");
-  test::writeText(dir / "shape.net.xml",
-                  "<net><edge id=\"e\" from=\"a\" to=\"b\"><lane id=\"e_0\" index=\"0\" speed=\"2\" "
-                  "length=\"10\" shape=\"0,0 ten,0\"/></edge></net>");
+  test::writeText(
+      dir / "shape.net.xml",
+      "<net><edge id=\"e\" from=\"a\" to=\"b\"><lane id=\"e_0\" index=\"0\" speed=\"2\" "
+      "length=\"10\" shape=\"0,0 ten,0\"/></edge></net>");
   expectError(dir / "shape.net.xml", "bad shape point");
 }
 

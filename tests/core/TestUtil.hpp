@@ -1,9 +1,9 @@
 #pragma once
 // Helpers shared by the core tests: temp folders and small files.
-#include "TestTmp.hpp"
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "TestTmp.hpp"
 
 namespace slamroute::test {
 

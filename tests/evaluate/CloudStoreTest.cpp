@@ -1,7 +1,7 @@
 // Keyframe clouds in memory or in an unnamed file (evaluate/CloudStore.hpp), and the disk an
 // evaluation needs for them and map.pcd.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <cstring>
 #include <filesystem>
@@ -21,7 +21,8 @@ Cloud randomCloud(std::mt19937& rng, std::size_t n) {
 }
 
 bool sameBits(const Cloud& a, const Cloud& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Eigen::Vector3f)) == 0;
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(Eigen::Vector3f)) == 0;
 }
 
 TEST(CloudStore, OnDiskGivesBackEveryCloudBitForBitAndLeavesNoFile) {

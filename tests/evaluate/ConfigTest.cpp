@@ -25,8 +25,9 @@ TEST(EvaluateConfig, DefaultsAreValid) { EXPECT_NO_THROW(Config{}.validate()); }
 
 TEST(EvaluateConfig, SectionsLoad) {
   Config c;
-  config::loadYaml(YAML::Load("odometry: {use_wheel_odometry: false}\nloop: {enabled: false, radius_m: 4}\n"),
-                   c, "f.yaml");
+  config::loadYaml(
+      YAML::Load("odometry: {use_wheel_odometry: false}\nloop: {enabled: false, radius_m: 4}\n"), c,
+      "f.yaml");
   EXPECT_FALSE(c.odometry.use_wheel_odometry);
   EXPECT_FALSE(c.loop.enabled);
   EXPECT_EQ(c.loop.radius_m, 4.0);
@@ -48,12 +49,16 @@ TEST(EvaluateConfig, EveryFlatKeyOfEarlierFilesIsMapped) {
 }
 
 TEST(EvaluateConfig, ValuesThatCannotWorkAreRefusedByName) {
-  EXPECT_EQ(loadError("input: {scan_stride: 0}\n"), "f.yaml: input.scan_stride must be in [1, 100] (got 0)");
-  EXPECT_NE(loadError("metrics: {plot_size_px: 200000}\n").find("metrics.plot_size_px"), std::string::npos);
+  EXPECT_EQ(loadError("input: {scan_stride: 0}\n"),
+            "f.yaml: input.scan_stride must be in [1, 100] (got 0)");
+  EXPECT_NE(loadError("metrics: {plot_size_px: 200000}\n").find("metrics.plot_size_px"),
+            std::string::npos);
   EXPECT_NE(loadError("metrics: {assoc_max_dt_s: -1}\n").find("assoc_max_dt_s"), std::string::npos);
-  EXPECT_NE(loadError("metrics: {map_accuracy_max_m: 0}\n").find("map_accuracy_max_m"), std::string::npos);
+  EXPECT_NE(loadError("metrics: {map_accuracy_max_m: 0}\n").find("map_accuracy_max_m"),
+            std::string::npos);
   EXPECT_NE(loadError("mapping: {huber_m: .nan}\n").find("mapping.huber_m"), std::string::npos);
-  EXPECT_NE(loadError("loop: {ambiguity_along_m: [3, -1]}\n").find("ambiguity_along_m"), std::string::npos);
+  EXPECT_NE(loadError("loop: {ambiguity_along_m: [3, -1]}\n").find("ambiguity_along_m"),
+            std::string::npos);
 }
 
 TEST(EvaluateConfig, AConfigBuiltInCodeNamesTheSectionOfTheBadValue) {

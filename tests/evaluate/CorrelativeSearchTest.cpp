@@ -31,7 +31,8 @@ Cloud street(double period_m) {
     for (double z = 0.5; z < 8; z += 0.5)
       for (const double side : {-1.0, 1.0}) {
         const std::size_t k = building(x);
-        const double setback = period_m > 0 ? 0.0 : std::fmod(k * 0.37 + (side > 0 ? 0.5 : 0.0), 1.5);
+        const double setback =
+            period_m > 0 ? 0.0 : std::fmod(k * 0.37 + (side > 0 ? 0.5 : 0.0), 1.5);
         const bool window = std::abs(x - marks[k]) < 1.0 && z > 2 && z < 5;
         pts.emplace_back(float(x), float(side * (8.0 + setback + (window ? 0.6 : 0.0))), float(z));
       }
@@ -69,7 +70,8 @@ TEST(CorrelativeSearch, FindsAUniquePlaceFromAStartMetresOff) {
   const Pose3 truth = at(80, 1.0, 0.02);
   CorrelativeOptions o;
   o.window_m = 10;
-  const CorrelativeResult r = correlativeSearch(target(world), seenFrom(world, truth), at(84.5, 0.0, 0.05), o);
+  const CorrelativeResult r =
+      correlativeSearch(target(world), seenFrom(world, truth), at(84.5, 0.0, 0.05), o);
   EXPECT_LT((r.best.translation() - truth.translation()).norm(), 0.3);
   EXPECT_LT(std::abs(yawOfPose(r.best) - 0.02), 0.02);
   EXPECT_GT(r.score, 0.6);
@@ -81,7 +83,8 @@ TEST(CorrelativeSearch, ALookAlikeOnePeriodAlongIsARival) {
   const Pose3 truth = at(80, 1.0, 0.0);
   CorrelativeOptions o;
   o.window_m = 15;
-  const CorrelativeResult r = correlativeSearch(target(world), seenFrom(world, truth), at(83, 1.0, 0.0), o);
+  const CorrelativeResult r =
+      correlativeSearch(target(world), seenFrom(world, truth), at(83, 1.0, 0.0), o);
   EXPECT_GE(r.runner_up, 0.9 * r.score);
   EXPECT_NEAR(std::abs(r.runner_up_offset.x()), 12.0, 0.5);
 }

@@ -22,7 +22,8 @@ LidarSpec smallSpec() {
 /// Scans a moving sensor (1 m per scan along +x); index `missing` throws like a lost file.
 class StreetSource : public ScanSource {
  public:
-  StreetSource(test::Scene scene, int n, int missing) : scene_(std::move(scene)), n_(n), missing_(missing) {}
+  StreetSource(test::Scene scene, int n, int missing)
+      : scene_(std::move(scene)), n_(n), missing_(missing) {}
   std::size_t size() const override { return static_cast<std::size_t>(n_); }
   double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
   Scan scan(std::size_t i) const override {
@@ -30,7 +31,9 @@ class StreetSource : public ScanSource {
     return test::scanScene(scene_, pose(i), smallSpec(), time(i));
   }
   LidarSpec spec() const override { return smallSpec(); }
-  static Pose3 pose(std::size_t i) { return test::poseXYZYaw(-20.0 + 1.0 * static_cast<double>(i), 0.3, 1.8, 0.0); }
+  static Pose3 pose(std::size_t i) {
+    return test::poseXYZYaw(-20.0 + 1.0 * static_cast<double>(i), 0.3, 1.8, 0.0);
+  }
 
  private:
   test::Scene scene_;
@@ -58,8 +61,12 @@ TEST(Degenerate, EmptyAndNaNScansArePredicted) {
   const SlamResult r = slam.finish();
   ASSERT_EQ(r.trajectory.size(), 6u);
   // the constant-velocity prediction bridged the gap and registration recovered
-  EXPECT_LT((r.trajectory[5].T_world_body.translation() - StreetSource::pose(5).translation()).norm(), 0.05);
-  EXPECT_LT((r.trajectory[2].T_world_body.translation() - StreetSource::pose(2).translation()).norm(), 0.05);
+  EXPECT_LT(
+      (r.trajectory[5].T_world_body.translation() - StreetSource::pose(5).translation()).norm(),
+      0.05);
+  EXPECT_LT(
+      (r.trajectory[2].T_world_body.translation() - StreetSource::pose(2).translation()).norm(),
+      0.05);
   const auto rel = reliabilityJson(r);
   EXPECT_EQ(rel["unreliable_scans"], 2);
   EXPECT_EQ(rel["stretches"].size(), 1u);
@@ -76,7 +83,9 @@ TEST(Degenerate, MissingScanFileIsSkipped) {
   const SlamResult r = runSlam(src, cfg, StreetSource::pose(0));
   ASSERT_EQ(r.trajectory.size(), 5u);
   EXPECT_EQ(r.status[2], FrameStatus::Missing);
-  EXPECT_LT((r.trajectory[4].T_world_body.translation() - StreetSource::pose(4).translation()).norm(), 0.05);
+  EXPECT_LT(
+      (r.trajectory[4].T_world_body.translation() - StreetSource::pose(4).translation()).norm(),
+      0.05);
 }
 
 TEST(Degenerate, FeaturePoorSceneIsFlagged) {

@@ -22,7 +22,8 @@ Scan movingWallScan(double v, double w, int n = 200) {
     // Sensor pose at dt (constant speed along the arc, small angles: exact for w = 0).
     Pose3 T = Pose3::Identity();
     T.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
-    T.translation() = w == 0 ? Vec3(v * dt, 0, 0) : Vec3(v / w * std::sin(yaw), v / w * (1 - std::cos(yaw)), 0);
+    T.translation() =
+        w == 0 ? Vec3(v * dt, 0, 0) : Vec3(v / w * std::sin(yaw), v / w * (1 - std::cos(yaw)), 0);
     const Vec3 world(10.0, -5.0 + 10.0 * k / n, 0.5 + 0.01 * k);
     const Vec3 local = T.inverse() * world;
     ScanPoint p;
@@ -39,7 +40,8 @@ Pose3 sweepMotion(double v, double w) {
   Pose3 M = Pose3::Identity();
   const double yaw = w * 0.1;
   M.linear() = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
-  M.translation() = w == 0 ? Vec3(v * 0.1, 0, 0) : Vec3(v / w * std::sin(yaw), v / w * (1 - std::cos(yaw)), 0);
+  M.translation() =
+      w == 0 ? Vec3(v * 0.1, 0, 0) : Vec3(v / w * std::sin(yaw), v / w * (1 - std::cos(yaw)), 0);
   return M;
 }
 

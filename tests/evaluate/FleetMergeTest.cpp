@@ -56,10 +56,9 @@ TEST(FleetMerge, FindsClosuresBetweenVehiclesAndJoinsAnOffsetEstimate) {
   const FleetResult r = mergeFleet(vs, Config{}, opt);
   ASSERT_GE(r.closures.size(), 5u);
   for (const auto& c : r.closures) {
-    const Pose3 truth = a.groundTruth()[static_cast<std::size_t>(std::lround(c.t_a / 0.1))]
-                            .T_world_body.inverse() *
-                        b.groundTruth()[static_cast<std::size_t>(std::lround(c.t_b / 0.1))]
-                            .T_world_body;
+    const Pose3 truth =
+        a.groundTruth()[static_cast<std::size_t>(std::lround(c.t_a / 0.1))].T_world_body.inverse() *
+        b.groundTruth()[static_cast<std::size_t>(std::lround(c.t_b / 0.1))].T_world_body;
     EXPECT_LT((c.T_a_b.translation() - truth.translation()).norm(), 0.3);
   }
   // Vehicle a alone is exact; under one common alignment b's offset shows, and the merge

@@ -1,6 +1,6 @@
 // Loop closure on a synthetic loop around a city block: it fires and lowers the ATE.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -19,7 +19,7 @@ using LoopSource = test::LoopScanSource;
 TEST(LoopClosure, FiresOnALoopAndLowersAte) {
   const LoopSource src;
   Config cfg;
-  cfg.input.scan_stride = 1;  // every scan of the synthetic lap
+  cfg.input.scan_stride = 1;       // every scan of the synthetic lap
   cfg.loop.min_time_gap_s = 10.0;  // the synthetic lap takes 20 s
   // The synthetic path enters its corners with an instant yaw-rate step (0 -> 8.6 deg per scan),
   // which no car does; let the plausibility gate accept it.
@@ -30,10 +30,11 @@ TEST(LoopClosure, FiresOnALoopAndLowersAte) {
   cfg.loop.enabled = true;
   const SlamResult closed = runSlam(src, cfg, src.pose(0));
   EXPECT_EQ(open.loops.size(), 0u);
-  std::printf("loop candidates %d, closures %zu, unreliable open %zu\n", closed.loop_candidates,
-              closed.loops.size(),
-              static_cast<std::size_t>(std::count_if(open.status.begin(), open.status.end(),
-                                                     [](FrameStatus s) { return s != FrameStatus::Ok; })));
+  std::printf(
+      "loop candidates %d, closures %zu, unreliable open %zu\n", closed.loop_candidates,
+      closed.loops.size(),
+      static_cast<std::size_t>(std::count_if(open.status.begin(), open.status.end(),
+                                             [](FrameStatus s) { return s != FrameStatus::Ok; })));
 
   ASSERT_GE(closed.loops.size(), 1u);
   EXPECT_LT(closed.loops[0].fitness_m2, cfg.loop.fitness_m2);
@@ -64,7 +65,9 @@ TEST(LoopClosure, KeyframeCloudsOnDiskGiveTheSameRunBitForBit) {
   }
   ASSERT_EQ(disk.trajectory.size(), memory.trajectory.size());
   for (std::size_t i = 0; i < memory.trajectory.size(); ++i)
-    EXPECT_TRUE(disk.trajectory[i].T_world_body.matrix() == memory.trajectory[i].T_world_body.matrix()) << i;
+    EXPECT_TRUE(disk.trajectory[i].T_world_body.matrix() ==
+                memory.trajectory[i].T_world_body.matrix())
+        << i;
   ASSERT_EQ(disk.map.size(), memory.map.size());
   EXPECT_TRUE(std::equal(disk.map.begin(), disk.map.end(), memory.map.begin()));
   EXPECT_TRUE(std::filesystem::is_empty(dir));  // the clouds' file had no name
@@ -81,7 +84,8 @@ TEST(PoseGraph, LoopEdgeDistributesDrift) {
     PoseGraphEdge e;
     e.from = i;
     e.to = i + 1;
-    e.T_from_to = poses[static_cast<std::size_t>(i)].inverse() * poses[static_cast<std::size_t>(i + 1)];
+    e.T_from_to =
+        poses[static_cast<std::size_t>(i)].inverse() * poses[static_cast<std::size_t>(i + 1)];
     edges.push_back(e);
   }
   PoseGraphEdge loop;

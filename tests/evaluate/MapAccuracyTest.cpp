@@ -1,6 +1,6 @@
 // World mesh (PLY) reading, map-to-surface distances and the PCD writer.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -23,9 +23,10 @@ fs::path tmpDir() {
 
 /// A 20 x 20 m square at z = 0 as two triangles, binary little-endian PLY.
 void writeSquarePly(const fs::path& p) {
-  std::string s = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
-                  "property float y\nproperty float z\nelement face 1\n"
-                  "property list uchar int vertex_indices\nend_header\n";
+  std::string s =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
   const float v[12] = {-10, -10, 0, 10, -10, 0, 10, 10, 0, -10, 10, 0};
   s.append(reinterpret_cast<const char*>(v), sizeof(v));
   s.push_back(4);  // one quad, fanned into two triangles
@@ -59,7 +60,8 @@ TEST(MapAccuracy, PartByPartGivesTheSameAsTheWholeMap) {
   const Mesh mesh = readPly(p);
   Cloud map;
   for (int i = 0; i < 300; ++i)
-    map.push_back({-12.0f + 0.08f * static_cast<float>(i), 0.05f * static_cast<float>(i % 40) - 1.0f,
+    map.push_back({-12.0f + 0.08f * static_cast<float>(i),
+                   0.05f * static_cast<float>(i % 40) - 1.0f,
                    0.01f * static_cast<float>(i % 37) - 0.1f});
   const MapAccuracy whole = mapAccuracy(map, mesh, 2.0);
   Eigen::AlignedBox3f bounds;
@@ -76,7 +78,8 @@ TEST(MapAccuracy, PartByPartGivesTheSameAsTheWholeMap) {
   EXPECT_EQ(parts.clamped_share, whole.clamped_share);
   EXPECT_GT(whole.clamped_share, 0.0);  // points beyond x = 12 m are off the square
   // A point outside the bounds the meter was made for counts as far (clamped).
-  MapAccuracyMeter small(mesh, 2.0, Eigen::AlignedBox3f(Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1)));
+  MapAccuracyMeter small(
+      mesh, 2.0, Eigen::AlignedBox3f(Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1)));
   small.add({{0.0f, 0.0f, 0.5f}, {8.0f, 8.0f, 0.0f}});
   const MapAccuracy s = small.result();
   EXPECT_NEAR(s.mean_m, (0.5 + 2.0) / 2.0, 1e-6);
@@ -119,7 +122,7 @@ TEST(Output, TopViewFrameCentresTheBox) {
   EXPECT_TRUE(f.pixel(500.0, 50.0).isApprox(Eigen::Vector2d(500.0, 500.0)));
   EXPECT_NEAR(f.pixel(0.0, 50.0).x(), 40.0, 1e-9);
   EXPECT_NEAR(f.pixel(1000.0, 50.0).x(), 960.0, 1e-9);
-  EXPECT_NEAR(f.pixel(500.0, 0.0).y(), 546.0, 1e-9);    // south is down
+  EXPECT_NEAR(f.pixel(500.0, 0.0).y(), 546.0, 1e-9);  // south is down
   EXPECT_NEAR(f.pixel(500.0, 100.0).y(), 454.0, 1e-9);
   const TopViewFrame dot({5.0, 5.0}, {5.0, 5.0}, 400, 40);  // a single point: 1 m spans the image
   EXPECT_DOUBLE_EQ(dot.scale, 320.0);
@@ -164,14 +167,16 @@ TEST(Output, PcdWriterGivesTheFileWritePcdGives) {
 
 TEST(MapAccuracy, AsciiPlyAndBadFiles) {
   const fs::path p = tmpDir() / "tri.ply";
-  std::ofstream(p) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  std::ofstream(p)
+      << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   const Mesh m = readPly(p);
   EXPECT_EQ(m.faces.size(), 1u);
   EXPECT_THROW(readPly(tmpDir() / "nope.ply"), std::runtime_error);
   const fs::path bad = tmpDir() / "bad.ply";
-  std::ofstream(bad) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n";
+  std::ofstream(bad)
+      << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n";
   EXPECT_THROW(readPly(bad), std::runtime_error);
 }
 

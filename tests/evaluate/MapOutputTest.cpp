@@ -1,7 +1,7 @@
 // MapOutput: the map streamed into map.pcd and measured against the world mesh as built and
 // after the estimate's alignment onto the ground truth.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 // The SLAM map built tile by tile (MapTiles.hpp) must hold exactly the points voxelFilter gives
 // for every keyframe's cloud at its pose joined: same voxels, same float sums, tile by tile.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +52,8 @@ Cloud joined(const Drive& d) {
 
 std::vector<MapKeyframe> store(const Drive& d, CloudStore& clouds) {
   std::vector<MapKeyframe> kfs;
-  for (std::size_t k = 0; k < d.clouds.size(); ++k) kfs.push_back({clouds.add(d.clouds[k]), d.poses[k]});
+  for (std::size_t k = 0; k < d.clouds.size(); ++k)
+    kfs.push_back({clouds.add(d.clouds[k]), d.poses[k]});
   return kfs;
 }
 
@@ -96,7 +97,10 @@ TEST(MapTiles, TilesHoldExactlyTheVoxelFilterOfAllCloudsJoined) {
     EXPECT_GT(sink.parts.size(), 4u) << "tile " << tile;
     Cloud got;
     const auto per_tile = static_cast<std::int64_t>(std::llround(tile / 0.5));  // whole voxels
-    const auto tileOf = [&](float v) { return static_cast<std::int64_t>(std::floor(static_cast<double>(voxelIndex(v, 2.0f)) / static_cast<double>(per_tile))); };
+    const auto tileOf = [&](float v) {
+      return static_cast<std::int64_t>(
+          std::floor(static_cast<double>(voxelIndex(v, 2.0f)) / static_cast<double>(per_tile)));
+    };
     for (const Cloud& part : sink.parts) {
       for (const auto& p : part) {  // one tile per part, inside the announced bounds
         EXPECT_EQ(tileOf(p.x()), tileOf(part[0].x()));
@@ -112,7 +116,8 @@ TEST(MapTiles, TilesHoldExactlyTheVoxelFilterOfAllCloudsJoined) {
 
 TEST(MapTiles, OneTileIsVoxelFilterInItsOrderAndDiskGivesTheSame) {
   Drive d = randomDrive(9, 12);
-  for (auto& T : d.poses) T.translation() += Eigen::Vector3d(500.0, 500.0, 0.0);  // all in tile (0, 0)
+  for (auto& T : d.poses)
+    T.translation() += Eigen::Vector3d(500.0, 500.0, 0.0);  // all in tile (0, 0)
   const Cloud want = voxelFilter(joined(d), 0.2);
   CloudStore memory;
   CollectedMap one;

@@ -21,7 +21,8 @@ Trajectory winding(int n) {
   Trajectory t;
   for (int i = 0; i < n; ++i) {
     const double s = i * 1.0;
-    t.push_back({0.1 * i, pose(s, 20.0 * std::sin(s / 50.0), 0.5 * std::sin(s / 30.0), std::cos(s / 50.0) * 0.4)});
+    t.push_back({0.1 * i, pose(s, 20.0 * std::sin(s / 50.0), 0.5 * std::sin(s / 30.0),
+                               std::cos(s / 50.0) * 0.4)});
   }
   return t;
 }

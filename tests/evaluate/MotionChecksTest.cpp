@@ -10,7 +10,8 @@ namespace {
 
 Pose3 pose(double x, double y, double yaw_deg) {
   Pose3 T = Pose3::Identity();
-  T.linear() = Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  T.linear() =
+      Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
   T.translation() = Vec3(x, y, 0.0);
   return T;
 }
@@ -44,8 +45,9 @@ TEST(MotionChecks, WithOdometryOnlyItsSmallErrorsMayBeCorrected) {
   const Pose3 jump = pred * pose(0, 0, -8.7);
   EXPECT_TRUE(plausible(pred, jump, cfg, 0.2, 5.6));
   EXPECT_FALSE(plausibleWithOdometry(pred, jump, cfg, 0.2));
-  EXPECT_TRUE(plausibleWithOdometry(pred, pred * pose(0.3, -0.2, 0.8), cfg, 0.2));  // within 2x slack
-  EXPECT_FALSE(plausibleWithOdometry(pred, pred * pose(0.6, 0, 0), cfg, 0.2));       // slid 0.6 m
+  EXPECT_TRUE(
+      plausibleWithOdometry(pred, pred * pose(0.3, -0.2, 0.8), cfg, 0.2));      // within 2x slack
+  EXPECT_FALSE(plausibleWithOdometry(pred, pred * pose(0.6, 0, 0), cfg, 0.2));  // slid 0.6 m
   // Roll and pitch are the planes' business: a 3 deg pitch change is not an odometry conflict.
   Pose3 pitched = pred;
   pitched.linear() = pred.rotation() * Eigen::AngleAxisd(0.05, Vec3::UnitY()).toRotationMatrix();
@@ -81,7 +83,7 @@ TEST(MotionChecks, LoopCorrectionIsBoundedByTheDriftSinceTheLastClosure) {
   EXPECT_FALSE(plausibleLoopCorrection(3.0, 50.0, cfg));   // a 3 m jump 50 m after a closure
   EXPECT_TRUE(plausibleLoopCorrection(3.0, 1500.0, cfg));  // ... after 1.5 km it may be drift
   EXPECT_FALSE(plausibleLoopCorrection(3.0, 900.0, cfg));
-  cfg.loop.max_correction_m = -1.0;                         // no bound
+  cfg.loop.max_correction_m = -1.0;  // no bound
   EXPECT_TRUE(plausibleLoopCorrection(100.0, 0.0, cfg));
 }
 
@@ -90,7 +92,8 @@ TEST(MotionChecks, YawPriorFollowsTheGyroSpecOfTheDrive) {
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, std::nullopt), 0.02);
   // The simulated default gyro is the reference: the tuned sigma exactly.
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, OdometrySpec{0.01, 0.05, 0.05, 0.1}), 0.02);
-  // A noise-free gyro is trusted down to the floor; a ten times noisier one gets ~ten times the sigma.
+  // A noise-free gyro is trusted down to the floor; a ten times noisier one gets ~ten times the
+  // sigma.
   EXPECT_DOUBLE_EQ(yawPriorSigmaDeg(cfg, OdometrySpec{}), 0.0002);
   EXPECT_NEAR(yawPriorSigmaDeg(cfg, OdometrySpec{0, 0, 0.5, 1.0}), 0.2, 1e-12);
   Config off = cfg;  // the prior switched off stays off

@@ -15,7 +15,8 @@ namespace {
 Pose3 forward(double x, double yaw_deg = 0.0) {
   Pose3 T = Pose3::Identity();
   T.translation() = Vec3(x, 0, 0);
-  T.linear() = Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  T.linear() =
+      Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
   return T;
 }
 
@@ -84,7 +85,8 @@ TEST(MotionModel, WithoutOdometryTheTurnRateFollowsOnlyATurnTwoRegistrationsAgre
     m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(0.5), 0.1);
     EXPECT_NEAR(m.turnRateDegPerS(), 0.0, 1e-9);
     for (int k = 0; k < 5; ++k) {
-      m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(0.5, steps_deg[k]), 0.1);
+      m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(),
+               forward(0.5, steps_deg[k]), 0.1);
       const double want = accel > 0 ? bounded[k] : std::abs(10.0 * steps_deg[k]);
       EXPECT_NEAR(m.turnRateDegPerS(), want, 1e-6) << "accel " << accel << " step " << k;
     }
@@ -105,7 +107,8 @@ TEST(MotionModel, ARegisteredStepSetsTheVelocityButNotAnImpossibleTurnRate) {
   slam::MotionModel m(cfg, Pose3::Identity());
   m.recordFrame(0.0, Pose3::Identity());
   // 1 m and 45 deg in 0.1 s: 450 deg/s, far beyond a car at 10 m/s.
-  m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(1.0, 45.0), 0.1);
+  m.update(slam::MotionModel::Outcome::Registered, true, Pose3::Identity(), forward(1.0, 45.0),
+           0.1);
   EXPECT_TRUE(m.hasVelocity());
   const double rate = m.turnRateDegPerS();
   EXPECT_NEAR(rate, maxTurnRate(cfg, 10.0) * 180.0 / std::numbers::pi, 1e-6);
@@ -121,7 +124,8 @@ TEST(MotionModel, AFailedStepKeepsTheSpeedAndLetsTheTurnFade) {
   m.update(slam::MotionModel::Outcome::Failed, false, Pose3::Identity(), forward(9.0, 90.0), 0.1);
   EXPECT_NEAR(m.turnRateDegPerS(), before * cfg.odometry.failed_turn_decay, 1e-9);
   EXPECT_NEAR(m.predictStep(0.1).speed_mps, 10.0, 1e-9);
-  m.update(slam::MotionModel::Outcome::Relocalised, false, Pose3::Identity(), forward(9.0, 90.0), 0.1);
+  m.update(slam::MotionModel::Outcome::Relocalised, false, Pose3::Identity(), forward(9.0, 90.0),
+           0.1);
   EXPECT_NEAR(m.turnRateDegPerS(), 0.0, 1e-9);
 }
 
@@ -145,7 +149,8 @@ TEST(MotionModel, TheOdometryPriorWeighsYawOnlyByDefault) {
   m.setOdometry(WheelOdometry({{0.0, 5.0, 0.0}, {10.0, 5.0, 0.0}}));
   m.addOdometryPrior(o, p);
   const double sigma = cfg.odometry.prior_sigma_deg * std::numbers::pi / 180.0;
-  EXPECT_NEAR(o.prior_weight(2), std::pow(cfg.odometry.prior_registration_sigma_m / sigma, 2), 1e-6);
+  EXPECT_NEAR(o.prior_weight(2), std::pow(cfg.odometry.prior_registration_sigma_m / sigma, 2),
+              1e-6);
   EXPECT_EQ(o.prior_weight(3), 0.0);
 }
 

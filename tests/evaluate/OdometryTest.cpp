@@ -18,7 +18,8 @@ TEST(Odometry, RecoversKnownRigidMotion) {
   const LidarSpec spec;  // 64 x 1800, the paper's sensor
   const Pose3 T1 = test::poseXYZYaw(-10.0, 0.5, 1.8, 0.02);
   Pose3 delta = test::poseXYZYaw(0.8, 0.15, 0.02, 2.0 * std::numbers::pi / 180.0);
-  delta.linear() = delta.linear() * Eigen::AngleAxisd(0.004, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  delta.linear() =
+      delta.linear() * Eigen::AngleAxisd(0.004, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Pose3 T2 = T1 * delta;
   Config cfg;
   cfg.loop.enabled = false;

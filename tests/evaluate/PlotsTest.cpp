@@ -1,7 +1,7 @@
 // The evaluation's plots read by a person: the estimate on top of the ground truth, coloured by
 // its error; the error along the distance with gridlines at round values.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -64,7 +64,8 @@ TEST(Plots, ErrorAlongDistanceHasGridlinesAtRoundValues) {
   // most eight intervals). A vertical gridline is light grey over most of the plot's height.
   auto greyRows = [&](int col) {
     int n = 0;
-    for (int r = 30; r < img.rows - 40; ++r) n += img.at<cv::Vec3b>(r, col) == cv::Vec3b(225, 225, 225);
+    for (int r = 30; r < img.rows - 40; ++r)
+      n += img.at<cv::Vec3b>(r, col) == cv::Vec3b(225, 225, 225);
     return n;
   };
   const int plot_rows = img.rows - 70;

@@ -49,7 +49,7 @@ TEST(RangeImage, WallIsNotGroundAndFormsACluster) {
   EXPECT_GT(wall_clustered, wall * 95 / 100);
   EXPECT_GE(img.clusters, 1);
   const FeatureSet f = extractFeatures(img, cfg);
-  EXPECT_GT(f.flat.size(), 100u);      // from the ground
+  EXPECT_GT(f.flat.size(), 100u);  // from the ground
   EXPECT_GT(f.less_flat.size(), 100u);
   // sharp points exist at the wall's vertical edges (|y| close to 10)
   int at_edges = 0;

@@ -28,14 +28,16 @@ TEST(KdTree, NearestNeighboursEqualABruteForceSearch) {
     std::sort(all.begin(), all.end());
     for (int i = 0; i < 5; ++i) {
       EXPECT_FLOAT_EQ(d2[static_cast<std::size_t>(i)], all[static_cast<std::size_t>(i)]);
-      EXPECT_FLOAT_EQ((pts[static_cast<std::size_t>(idx[static_cast<std::size_t>(i)])] - query).squaredNorm(),
-                      all[static_cast<std::size_t>(i)]);
+      EXPECT_FLOAT_EQ(
+          (pts[static_cast<std::size_t>(idx[static_cast<std::size_t>(i)])] - query).squaredNorm(),
+          all[static_cast<std::size_t>(i)]);
     }
   }
   KdTree empty;
   empty.build({});
   EXPECT_EQ(empty.knn(Eigen::Vector3f::Zero(), 5, idx, d2), 0);
-  EXPECT_EQ(tree.knn(Eigen::Vector3f::Zero(), 5000, idx, d2), 2000);  // asks for more than there are
+  EXPECT_EQ(tree.knn(Eigen::Vector3f::Zero(), 5000, idx, d2),
+            2000);  // asks for more than there are
 }
 
 /// A street corner as features: vertical edges (building corners, poles) and planar points on
@@ -43,14 +45,17 @@ TEST(KdTree, NearestNeighboursEqualABruteForceSearch) {
 FeatureMap corner(Cloud& edges, Cloud& planes) {
   for (int k = 0; k < 12; ++k)
     for (double z = 0.2; z < 6.0; z += 0.2)
-      edges.emplace_back(static_cast<float>(-15.0 + 3.0 * k), static_cast<float>(k % 2 ? 8.0 : -8.0),
-                         static_cast<float>(z));
+      edges.emplace_back(static_cast<float>(-15.0 + 3.0 * k),
+                         static_cast<float>(k % 2 ? 8.0 : -8.0), static_cast<float>(z));
   for (double x = -20; x <= 20; x += 0.4)
-    for (double y = -8; y <= 8; y += 0.4) planes.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.0f);
+    for (double y = -8; y <= 8; y += 0.4)
+      planes.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.0f);
   for (double x = -20; x <= 20; x += 0.4)
-    for (double z = 0.2; z < 8; z += 0.4) planes.emplace_back(static_cast<float>(x), 9.0f, static_cast<float>(z));
+    for (double z = 0.2; z < 8; z += 0.4)
+      planes.emplace_back(static_cast<float>(x), 9.0f, static_cast<float>(z));
   for (double y = -8; y <= 8; y += 0.4)
-    for (double z = 0.2; z < 8; z += 0.4) planes.emplace_back(21.0f, static_cast<float>(y), static_cast<float>(z));
+    for (double z = 0.2; z < 8; z += 0.4)
+      planes.emplace_back(21.0f, static_cast<float>(y), static_cast<float>(z));
   FeatureMap map;
   map.build(edges, planes);
   return map;
@@ -69,13 +74,15 @@ TEST_P(AlignFeatures, RecoversKnownRigidMotion) {
   const FeatureMap map = corner(edges, planes);
   // The source is the map seen from a pose T_true; start the registration from identity.
   Pose3 T_true = Pose3::Identity();
-  T_true.linear() = Eigen::AngleAxisd(3.0 * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  T_true.linear() =
+      Eigen::AngleAxisd(3.0 * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
   T_true.translation() = Vec3(0.4, -0.25, 0.05);
   const Pose3 T_src = T_true.inverse();
   AlignOptions opt;
   opt.iterations = 30;
   opt.reassociate_every = GetParam();
-  const AlignResult r = alignFeatures(map, moved(edges, T_src), moved(planes, T_src), Pose3::Identity(), opt);
+  const AlignResult r =
+      alignFeatures(map, moved(edges, T_src), moved(planes, T_src), Pose3::Identity(), opt);
   const Pose3 err = T_true.inverse() * r.T_target_source;
   EXPECT_LT(err.translation().norm(), 0.01) << err.translation().transpose();
   EXPECT_LT(Eigen::AngleAxisd(err.rotation()).angle() * 180.0 / std::numbers::pi, 0.1);
@@ -89,7 +96,8 @@ INSTANTIATE_TEST_SUITE_P(ReassociateEvery, AlignFeatures, ::testing::Values(1, 2
 /// A street between two long walls (planes y = +-8) and the ground: nothing fixes x.
 FeatureMap corridor(Cloud& planes) {
   for (double x = -30; x <= 30; x += 0.4)
-    for (double y = -8; y <= 8; y += 0.4) planes.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.0f);
+    for (double y = -8; y <= 8; y += 0.4)
+      planes.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.0f);
   for (double x = -30; x <= 30; x += 0.4)
     for (double z = 0.2; z < 8; z += 0.4) {
       planes.emplace_back(static_cast<float>(x), 8.0f, static_cast<float>(z));
@@ -133,8 +141,8 @@ TEST(AlignFeaturesPrior, AWeakPriorDoesNotMoveAConstrainedResult) {
   opt.iterations = 30;
   opt.prior = Pose3::Identity();  // a prior 0.47 m off
   opt.prior_weight << 0, 0, 1, 1, 1, 0;
-  const AlignResult r = alignFeatures(map, moved(edges, T_true.inverse()), moved(planes, T_true.inverse()),
-                                      Pose3::Identity(), opt);
+  const AlignResult r = alignFeatures(map, moved(edges, T_true.inverse()),
+                                      moved(planes, T_true.inverse()), Pose3::Identity(), opt);
   EXPECT_LT((r.T_target_source.translation() - T_true.translation()).norm(), 0.01);
 }
 
@@ -153,7 +161,8 @@ Cloud streetWithPillars(const std::vector<double>& pillars_x) {
     for (double z = 0.2; z < 6; z += 0.4)
       for (double side : {1.0, -1.0}) {
         for (double x = px - 1.0; x <= px + 1.0; x += 0.4) add(x, side * 7.0, z);  // front face
-        for (double y = 7.0; y < 8.0; y += 0.4) add(px - 1.0, side * y, z), add(px + 1.0, side * y, z);
+        for (double y = 7.0; y < 8.0; y += 0.4)
+          add(px - 1.0, side * y, z), add(px + 1.0, side * y, z);
       }
   return c;
 }
@@ -180,7 +189,8 @@ TEST(IcpAmbiguity, AMatchStuckOnTheWrongPillarsHasABetterOneWhereItBelongs) {
   const IcpTarget target(world);
   const Cloud source = near(world);
   const IcpAmbiguity amb = alongTheStreet();
-  const IcpResult wrong = target.align(source, test::poseXYZYaw(6.0, 0.0, 0.0, 0.0), amb.iterations, amb.max_corr_m);
+  const IcpResult wrong =
+      target.align(source, test::poseXYZYaw(6.0, 0.0, 0.0, 0.0), amb.iterations, amb.max_corr_m);
   ASSERT_TRUE(amb.accept(wrong));
   ASSERT_GT(wrong.T_target_source.translation().norm(), 5.0);
   // Started 6 m back, ICP finds the true pose, which fits better.
@@ -192,7 +202,8 @@ TEST(IcpAmbiguity, AMatchStuckOnTheWrongPillarsHasABetterOneWhereItBelongs) {
 TEST(IcpAmbiguity, TheTrueMatchHasNoBetterOne) {
   std::vector<double> periodic;  // equal pillars every 8 m: the other fits are no better
   for (double x = -56; x <= 56; x += 8) periodic.push_back(x);
-  for (const auto& pillars : {std::vector<double>{-47, -31, -26, -12, -4, 5, 9, 21, 32, 35, 50}, periodic}) {
+  for (const auto& pillars :
+       {std::vector<double>{-47, -31, -26, -12, -4, 5, 9, 21, 32, 35, 50}, periodic}) {
     const Cloud world = streetWithPillars(pillars);
     const IcpTarget target(world);
     const Cloud source = near(world);

@@ -29,13 +29,13 @@ TEST(StridedScanSource, EveryNthScan) {
 }
 
 TEST(StridedScanSource, TimeWindow) {
-  const Counting base;  // times 0.0 ... 0.6
+  const Counting base;                             // times 0.0 ... 0.6
   const StridedScanSource w(base, 2, 0.15, 0.55);  // scans 2..5, every second: 2, 4
   ASSERT_EQ(w.size(), 2u);
   EXPECT_DOUBLE_EQ(w.time(0), 0.2);
   EXPECT_EQ(w.scan(1).points.size(), 4u);
-  EXPECT_EQ(StridedScanSource(base, 1, 0.3).size(), 4u);     // to the end: 3..6
-  EXPECT_EQ(StridedScanSource(base, 1, 1.0).size(), 0u);     // window after the drive
+  EXPECT_EQ(StridedScanSource(base, 1, 0.3).size(), 4u);  // to the end: 3..6
+  EXPECT_EQ(StridedScanSource(base, 1, 1.0).size(), 0u);  // window after the drive
 }
 
 }  // namespace

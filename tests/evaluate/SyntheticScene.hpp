@@ -59,8 +59,10 @@ inline Scan scanScene(const Scene& scene, const Pose3& T_world_sensor, const Lid
   for (int r = 0; r < spec.channels; ++r) {
     const double el = (spec.vfov_down_deg + r * vstep) * std::numbers::pi / 180.0;
     for (int c = 0; c < spec.horizontal_samples; ++c) {
-      const double az = -std::numbers::pi + (c + 0.5) * 2.0 * std::numbers::pi / spec.horizontal_samples;
-      const Eigen::Vector3d ds(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+      const double az =
+          -std::numbers::pi + (c + 0.5) * 2.0 * std::numbers::pi / spec.horizontal_samples;
+      const Eigen::Vector3d ds(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                               std::sin(el));
       double range = scene.cast(o, R * ds);
       if (!(range <= spec.max_range_m)) continue;
       if (noise_m > 0) range += noise_m * nd(rng);
@@ -88,7 +90,8 @@ inline Scene cityScene(double extent_m = 120.0) {
       const double w = 26.0 / nb;
       for (int i = 0; i < nb; ++i) {
         const double sx = x0 + i * w + 0.5, sb = u(rng) * 2.0;
-        s.boxes.push_back({{sx + sb * 0.3, y0 + sb, 0.0}, {sx + w - 1.0, y0 + 26.0 - sb, 6.0 + 20.0 * u(rng)}});
+        s.boxes.push_back(
+            {{sx + sb * 0.3, y0 + sb, 0.0}, {sx + w - 1.0, y0 + 26.0 - sb, 6.0 + 20.0 * u(rng)}});
       }
       // a pole at the block corner
       s.boxes.push_back({{x0 - 2.0, y0 - 2.0, 0.0}, {x0 - 1.7, y0 - 1.7, 5.0}});

@@ -36,7 +36,9 @@ class UTurnSource : public ScanSource {
     }
     return test::poseXYZYaw(x0 + 2 * v - v * (t - 4.0), 2 * r, 1.8, std::numbers::pi);
   }
-  Scan scan(std::size_t i) const override { return test::scanScene(scene_, pose(i), spec_, time(i), 0.02, 7 + i); }
+  Scan scan(std::size_t i) const override {
+    return test::scanScene(scene_, pose(i), spec_, time(i), 0.02, 7 + i);
+  }
   LidarSpec spec() const override { return spec_; }
 
  private:
@@ -55,7 +57,8 @@ TEST(Turn, FixedStrideTakesHalfTheScans) {
   cfg.loop.enabled = false;
   cfg.input.dense_turn_rate_deg_s = 0;  // off
   cfg.input.dense_after_failure_s = 0;
-  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {}, UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
+  const SlamResult r = runSlam(src, cfg, UTurnSource::pose(0), {},
+                               UTurnSource::pose(0).inverse() * UTurnSource::pose(1));
   EXPECT_EQ(r.trajectory.size(), 30u);
 }
 
@@ -105,11 +108,13 @@ TEST_P(UTurnInTheCity, TakesEveryScanOfTheTurnAndKeepsTheHeading) {
   EXPECT_EQ(in_turn, 20);
   EXPECT_LT(r.trajectory.size(), 58u);
   EXPECT_LT(finalYawErrorDeg(r), 1.0);
-  const Vec3 d = r.trajectory.back().T_world_body.translation() - UTurnSource::pose(59).translation();
+  const Vec3 d =
+      r.trajectory.back().T_world_body.translation() - UTurnSource::pose(59).translation();
   EXPECT_LT(d.norm(), 0.3) << d.transpose();
 }
 
-INSTANTIATE_TEST_SUITE_P(Turn, UTurnInTheCity, ::testing::Values(kLidarOnly, kWithOdometry), caseName);
+INSTANTIATE_TEST_SUITE_P(Turn, UTurnInTheCity, ::testing::Values(kLidarOnly, kWithOdometry),
+                         caseName);
 
 // An open field: the LiDAR sees only the flat ground, which fixes height, roll and pitch but
 // nothing of x, y and yaw. Without odometry (or with use_wheel_odometry: false) the estimate
@@ -124,8 +129,9 @@ TEST_P(UTurnInAnOpenField, TurnsOnlyWithTheWheelOdometry) {
   }
   EXPECT_LT(finalYawErrorDeg(r), 1.0);
   const auto& last = r.trajectory.back();  // scan 58 or 59 (stride 2 on the straight)
-  const Vec3 d = last.T_world_body.translation() -
-                 UTurnSource::pose(static_cast<std::size_t>(std::lround(last.t / 0.1))).translation();
+  const Vec3 d =
+      last.T_world_body.translation() -
+      UTurnSource::pose(static_cast<std::size_t>(std::lround(last.t / 0.1))).translation();
   EXPECT_LT(d.norm(), 0.2) << d.transpose();
 }
 

@@ -43,7 +43,8 @@ TEST(VoxelCells, CentroidsAreTheVoxelFilterOfWhatWasAdded) {
 
 TEST(VoxelCells, TakingACloudOutLeavesTheOthersCentroids) {
   VoxelCells cells(0.4);
-  const Cloud a = randomCloud(2000, 1, 0.0F), b = randomCloud(2000, 2, 2.0F), c = randomCloud(500, 3, 4.0F);
+  const Cloud a = randomCloud(2000, 1, 0.0F), b = randomCloud(2000, 2, 2.0F),
+              c = randomCloud(500, 3, 4.0F);
   cells.add(a);
   cells.add(b);
   cells.add(c);

@@ -8,9 +8,9 @@ namespace {
 
 TEST(Dbscan, TwoBlobsAndANoisePoint) {
   std::vector<Point2> pts;
-  for (int i = 0; i < 5; ++i) pts.emplace_back(i * 1.0, 0.0);         // a line, 1 m apart
+  for (int i = 0; i < 5; ++i) pts.emplace_back(i * 1.0, 0.0);           // a line, 1 m apart
   for (int i = 0; i < 4; ++i) pts.emplace_back(100.0 + i * 1.5, 50.0);  // 1.5 m apart
-  pts.emplace_back(-50.0, -50.0);                                      // alone
+  pts.emplace_back(-50.0, -50.0);                                       // alone
   const DbscanResult r = dbscan(pts, 2.0, 3);
   EXPECT_EQ(r.clusters, 2);
   for (int i = 0; i < 5; ++i) EXPECT_EQ(r.label[static_cast<std::size_t>(i)], 0);

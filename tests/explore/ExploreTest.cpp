@@ -90,7 +90,8 @@ TEST(Explore, PlusNetIsExploredToTheEndWithDeadReckonedMapPoses) {
   for (std::size_t i = 0; i < truth.grid.size(); ++i) differ += truth.grid[i] != slam.grid[i];
   EXPECT_GT(differ, 20u);
   EXPECT_GT(slam.streets_known, 0);
-  EXPECT_EQ(nlohmann::json::parse(slurp(test::testTmp() / "slam/explore.json"))["map_poses"], "slam");
+  EXPECT_EQ(nlohmann::json::parse(slurp(test::testTmp() / "slam/explore.json"))["map_poses"],
+            "slam");
 }
 
 TEST(Explore, SameSeedSameSummaryBytes) {

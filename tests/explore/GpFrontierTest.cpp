@@ -22,7 +22,7 @@ TEST(GpFrontier, LocalKernelIsTheMaternKernelOverCellOffsets) {
   GpConfig cfg;
   const GpFrontierMap gp(grid, cfg);
   ASSERT_EQ(gp.kernel().size(), 121u);
-  EXPECT_NEAR(gp.kernel()[60], cfg.signal_var, 1e-12);  // centre: r = 0
+  EXPECT_NEAR(gp.kernel()[60], cfg.signal_var, 1e-12);             // centre: r = 0
   const double a = std::sqrt(3.0) * 5.0 / cfg.length_scale_cells;  // (5, 0) cells off centre
   EXPECT_NEAR(gp.kernel()[55], cfg.signal_var * (1 + a) * std::exp(-a), 1e-12);
 }

@@ -52,7 +52,8 @@ TEST(MapCompleteness, UnknownAndFrontierShareNearTheStreets) {
   const MapCompleteness m = mapCompleteness(part, mask, GpConfig{});
   ASSERT_GT(m.cells, 0u);
   const double disc_cells = M_PI * 20.0 * 20.0 / (gc.cell_m * gc.cell_m);
-  EXPECT_NEAR(1.0 - m.unknown_share, disc_cells / static_cast<double>(m.cells), 0.1 * disc_cells / m.cells);
+  EXPECT_NEAR(1.0 - m.unknown_share, disc_cells / static_cast<double>(m.cells),
+              0.1 * disc_cells / m.cells);
   EXPECT_GT(m.frontier_share, 0.0);
   EXPECT_GT(m.mean_frontier_probability, 0.0);
   // seen everywhere: nothing unknown, no frontier
@@ -65,7 +66,8 @@ TEST(MapCompleteness, UnknownAndFrontierShareNearTheStreets) {
   // poses at times no scan has: nothing to map
   Trajectory late = atCentre(2);
   for (auto& p : late) p.t += 100.0;
-  EXPECT_THROW(occupancyFromScans(GroundDiscScans(2, 5.0), late, g, gc, 0.0), std::invalid_argument);
+  EXPECT_THROW(occupancyFromScans(GroundDiscScans(2, 5.0), late, g, gc, 0.0),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ struct GridNet {
   RoadGraph g = RoadGraph::fromSumoNet(net);
   rl::PlanGraph pg = rl::PlanGraph::build(g);
   std::string sumo(int e) const {
-    return g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])].sumo_edges.front();
+    return g.edges[static_cast<std::size_t>(pg.edge_orig[static_cast<std::size_t>(e)])]
+        .sumo_edges.front();
   }
 };
 
@@ -25,7 +26,8 @@ struct GridNet {
 std::vector<int> seeDisc(OccupancyGrid& grid, const Point2& centre, double radius) {
   std::vector<int> changed;
   for (int i = 0; i < static_cast<int>(grid.size()); ++i)
-    if ((grid.centre(i) - centre).norm() <= radius && grid.mark(i, Cell::Ground)) changed.push_back(i);
+    if ((grid.centre(i) - centre).norm() <= radius && grid.mark(i, Cell::Ground))
+      changed.push_back(i);
   grid.updateFrontiers(changed);
   return changed;
 }
@@ -69,7 +71,10 @@ TEST(KnownPaths, PlanOnlyOverKnownStreets) {
   const auto p = all.pathTo(e01_02);
   ASSERT_TRUE(p);
   EXPECT_EQ(p->edges, (std::vector<int>{e11_01, e01_02}));
-  EXPECT_NEAR(p->length_m, n.pg.len[static_cast<std::size_t>(e11_01)] + n.pg.len[static_cast<std::size_t>(e01_02)], 1e-9);
+  EXPECT_NEAR(
+      p->length_m,
+      n.pg.len[static_cast<std::size_t>(e11_01)] + n.pg.len[static_cast<std::size_t>(e01_02)],
+      1e-9);
   // without g11_g01 known the way round is longer (at least 4 edges)
   const KnownPaths partial(n.pg, e10_11, [&](int e) { return e != e11_01; });
   ASSERT_TRUE(partial.pathTo(e01_02));

@@ -18,7 +18,8 @@ TEST(JsonFile, MissingIsEmptyBrokenIsAnErrorNamingTheFile) {
     readJsonIfPresent(dir / "broken.json");
     FAIL() << "a broken file must be an error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("broken.json: not valid JSON"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("broken.json: not valid JSON"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -24,8 +24,7 @@ std::string mpirunSweep(int ranks, bool recovery, const fs::path& spec, const fs
   return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,tcp "
          "OMPI_MCA_btl_tcp_if_include=lo mpirun --oversubscribe " +
          std::string(recovery ? "--enable-recovery " : "") + "-n " + std::to_string(ranks) + " " +
-         SLAMROUTE_BINARY + " sweep " + spec.string() + " --out " + out.string() +
-         " " + extra;
+         SLAMROUTE_BINARY + " sweep " + spec.string() + " --out " + out.string() + " " + extra;
 }
 
 /// Why the MPI tests cannot run here; empty when they can.
@@ -45,7 +44,8 @@ TEST(SweepMpi, TwoRanksGiveTheRowsOfALocalSweep) {
   const auto mpi = test::runCommand(mpirunSweep(2, false, spec, dir / "mpi", ""));
   ASSERT_EQ(mpi.code, 0) << mpi.out;
   EXPECT_NE(mpi.out.find("on rank 1"), std::string::npos) << "rank 1 ran no task:\n" << mpi.out;
-  const auto local = test::runCli("sweep " + spec.string() + " --out " + (dir / "local").string() + " --jobs 2");
+  const auto local =
+      test::runCli("sweep " + spec.string() + " --out " + (dir / "local").string() + " --jobs 2");
   ASSERT_EQ(local.code, 0) << local.out;
   const auto a = csvLines(dir / "mpi" / "results.csv"), b = csvLines(dir / "local" / "results.csv");
   ASSERT_EQ(a.size(), 3u) << readText(dir / "mpi" / "results.csv");  // header + 2 rows
@@ -58,10 +58,12 @@ TEST(SweepMpi, TwoRanksGiveTheRowsOfALocalSweep) {
   EXPECT_NE(summary.find("| plus / fast / qlearning | 1 |"), std::string::npos) << summary;
   EXPECT_TRUE(fs::exists(dir / "mpi" / "summary" / "ate_rmse_m.png"));
   // --resume keeps every task: all 8 stamped.
-  const auto again = test::runCli("sweep " + spec.string() + " --out " + (dir / "local").string() + " --resume");
+  const auto again =
+      test::runCli("sweep " + spec.string() + " --out " + (dir / "local").string() + " --resume");
   ASSERT_EQ(again.code, 0) << again.out;
   EXPECT_NE(again.out.find("8 tasks on 1 rank(s)"), std::string::npos) << again.out;
-  EXPECT_NE(readText(dir / "local" / "summary.md").find("8 kept from an earlier sweep"), std::string::npos);
+  EXPECT_NE(readText(dir / "local" / "summary.md").find("8 kept from an earlier sweep"),
+            std::string::npos);
   EXPECT_EQ(csvLines(dir / "local" / "results.csv"), b);
 }
 
@@ -70,7 +72,8 @@ TEST(SweepMpi, AKilledWorkersTaskIsRequeued) {
   const auto dir = test::cliTempDir("sweep_kill");
   const fs::path spec = writeSpec(dir), out = dir / "out";
   const fs::path log = dir / "sweep.log";
-  const std::string cmd = mpirunSweep(2, true, spec, out, "--worker-timeout 3") + " > " + log.string() + " 2>&1";
+  const std::string cmd =
+      mpirunSweep(2, true, spec, out, "--worker-timeout 3") + " > " + log.string() + " 2>&1";
   std::thread sweep([&] { EXPECT_EQ(std::system(cmd.c_str()), 0) << readText(log); });
   // Once rank 1 runs a task, kill it (SIGKILL: no goodbye; rank 0 notices the silence).
   bool killed = false;

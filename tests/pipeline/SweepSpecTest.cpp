@@ -27,11 +27,15 @@ std::string specError(const fs::path& file, const std::string& yaml) {
 TEST(SweepSpec, GridAndExplicitRows) {
   const auto dir = test::testTmp();
   writeFileAtomic(dir / "fast.yaml", "evaluate:\n  input:\n    scan_stride: 5\n");
-  writeFileAtomic(dir / "s.yaml", "nets: [" + kNets + "plus.net.xml, " + kNets +
-                                      "ring.net.xml]\nplanners: [qlearning, random]\nseeds: [1, 2]\n"
-                                      "variants:\n  - {name: fast, config: fast.yaml}\nrows:\n"
-                                      "  - {net: " + kNets + "plus.net.xml, planner: postman, seed: 7, variant: fast}\n"
-                                      "  - {net: " + kNets + "plus.net.xml, planner: random, seed: 1, variant: fast}\n");
+  writeFileAtomic(dir / "s.yaml",
+                  "nets: [" + kNets + "plus.net.xml, " + kNets +
+                      "ring.net.xml]\nplanners: [qlearning, random]\nseeds: [1, 2]\n"
+                      "variants:\n  - {name: fast, config: fast.yaml}\nrows:\n"
+                      "  - {net: " +
+                      kNets +
+                      "plus.net.xml, planner: postman, seed: 7, variant: fast}\n"
+                      "  - {net: " +
+                      kNets + "plus.net.xml, planner: random, seed: 1, variant: fast}\n");
   const SweepSpec s = SweepSpec::readYaml(dir / "s.yaml");
   const auto rows = s.expand();
   ASSERT_EQ(rows.size(), 2u * 2u * 2u + 1u);  // the second explicit row is in the grid already
@@ -46,8 +50,10 @@ TEST(SweepSpec, BadSpecsAreOneLineErrorsNamingTheFile) {
   EXPECT_EQ(specError(f, "nets: [x.net.xml]\nplanners: [random]\nseeds: [1]\n"),
             f.string() + ": net 'x.net.xml' not found");
   EXPECT_EQ(specError(f, "planners: [random]\nseed: [1]\n"), f.string() + ": unknown key 'seed'");
-  EXPECT_EQ(specError(f, "planners: [random]\n"), f.string() + ": no runs: give nets, planners and seeds, or rows");
-  EXPECT_EQ(specError(f, "rows:\n  - {net: " + kNets + "plus.net.xml, planner: random, seed: 1, variant: v}\n"),
+  EXPECT_EQ(specError(f, "planners: [random]\n"),
+            f.string() + ": no runs: give nets, planners and seeds, or rows");
+  EXPECT_EQ(specError(f, "rows:\n  - {net: " + kNets +
+                             "plus.net.xml, planner: random, seed: 1, variant: v}\n"),
             f.string() + ": unknown variant 'v'");
 }
 
@@ -61,7 +67,8 @@ TEST(SweepTasks, OneSurveyAndGraphPerNetVariantAndSeedSharedByThePlanners) {
   // Per seed: survey, graph, 2 plans, 2 drives, 2 evaluations.
   ASSERT_EQ(tasks.size(), 16u);
   auto find = [&](const std::string& name) {
-    const auto it = std::find_if(tasks.begin(), tasks.end(), [&](const auto& t) { return t.name == name; });
+    const auto it =
+        std::find_if(tasks.begin(), tasks.end(), [&](const auto& t) { return t.name == name; });
     EXPECT_NE(it, tasks.end()) << name;
     return static_cast<std::size_t>(it - tasks.begin());
   };

@@ -1,6 +1,6 @@
 // `slamroute plan` end to end (skipped when the CLI is not built): files and one-line errors.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -25,8 +25,11 @@ CmdResult runCli(const std::string& args) {
   fs::create_directories(dir);
   // One log per test: ctest runs the tests of this file in parallel processes.
   const std::string log =
-      (dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log")).string();
-  const int rc = std::system((std::string(SLAMROUTE_BINARY) + " " + args + " > " + log + " 2>&1").c_str());
+      (dir /
+       (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log"))
+          .string();
+  const int rc =
+      std::system((std::string(SLAMROUTE_BINARY) + " " + args + " > " + log + " 2>&1").c_str());
   std::ifstream in(log);
   std::stringstream ss;
   ss << in.rdbuf();
@@ -80,7 +83,8 @@ TEST_F(PlanCli, BadInputGivesOneLineErrors) {
   r = runCli("plan --graph " + graph.string() + " --planner nope --out " + out.string());
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.output.find("unknown planner 'nope'"), std::string::npos) << r.output;
-  r = runCli("plan --graph " + graph.string() + " --planner postman --start 77 --out " + out.string());
+  r = runCli("plan --graph " + graph.string() + " --planner postman --start 77 --out " +
+             out.string());
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.output.find("start node 77"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));

@@ -1,6 +1,6 @@
 // plan(): bad input and graph preparation (largest legally drivable part).
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <algorithm>
 

@@ -47,7 +47,8 @@ TEST(HeldKarp, EqualsBruteForceOnRandomAsymmetricInstances) {
       for (int k = 1; k < n; ++k) recomputed += d[order[k - 1]][order[k]];
       if (closed) recomputed += d[order.back()][start];
       EXPECT_NEAR(cost, recomputed, 1e-9) << "seed " << seed;
-      EXPECT_NEAR(cost, bruteForce(d, start, closed), 1e-9) << "seed " << seed << " closed " << closed;
+      EXPECT_NEAR(cost, bruteForce(d, start, closed), 1e-9)
+          << "seed " << seed << " closed " << closed;
     }
   }
 }

@@ -13,8 +13,7 @@ namespace {
 
 /// Length driven by following the guide from state s until an edge with is_new is driven.
 template <class IsNew>
-double followGuide(detail::UncoveredGuide& guide, const PlanGraph& pg, int s,
-                   const IsNew& is_new) {
+double followGuide(detail::UncoveredGuide& guide, const PlanGraph& pg, int s, const IsNew& is_new) {
   double length = 0.0;
   for (int step = 0; step <= pg.m; ++step) {
     const int e = guide.toward(s, is_new);

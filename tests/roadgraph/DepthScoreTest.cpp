@@ -1,7 +1,7 @@
 // Depth-image spread score (paper §3.1 step 4, eqs. 3-4): known answers on rendered synthetic
 // depth images, and the fallback for missing / corrupt frames.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -36,7 +36,8 @@ DepthImage render(const std::vector<Plane>& planes) {
         const double t = p.d / den;  // z of the hit (r has z = 1)
         if (t > 0.1 && t < best) best = t;
       }
-      if (best < 60.0) img.mm[static_cast<std::size_t>(v) * 800 + u] = static_cast<std::uint16_t>(best * 1000.0);
+      if (best < 60.0)
+        img.mm[static_cast<std::size_t>(v) * 800 + u] = static_cast<std::uint16_t>(best * 1000.0);
     }
   return img;
 }
@@ -82,13 +83,13 @@ TEST(DepthScore, EmptyImageScoresZeroAndDoesNotThrow) {
 TEST(DepthScore, WeightsAreMeanFrameScoresWithFallbackForBadFrames) {
   const fs::path dir = slamroute::test::testTmp() / "roadgraph" / "depth";
   fs::create_directories(dir);
-  const auto corner =
-      render({{Vec3(0, 1, 0), 1.5}, {Vec3(-1, 0, 0), 3.0}, {Vec3(0, 0, 1), 15.0}});
+  const auto corner = render({{Vec3(0, 1, 0), 1.5}, {Vec3(-1, 0, 0), 3.0}, {Vec3(0, 0, 1), 15.0}});
   writeDepthPng(dir / "good.png", corner);
   std::ofstream(dir / "corrupt.png") << "this is not a png";
   // Graph: street 0 along x (two edges), street 1 along y.
   RoadGraph g;
-  for (int i = 0; i < 3; ++i) g.nodes.push_back({i, Point3(i == 1 ? 100 : 0, i == 2 ? 100 : 0, 0), ""});
+  for (int i = 0; i < 3; ++i)
+    g.nodes.push_back({i, Point3(i == 1 ? 100 : 0, i == 2 ? 100 : 0, 0), ""});
   g.edges.push_back({0, 0, 1, 100, 1, {Point3(0, 0, 0), Point3(100, 0, 0)}, {}, 0});
   g.edges.push_back({1, 1, 0, 100, 1, {Point3(100, 0, 0), Point3(0, 0, 0)}, {}, 0});
   g.edges.push_back({2, 0, 2, 100, 1, {Point3(0, 0, 0), Point3(0, 100, 0)}, {}, 1});
@@ -128,8 +129,7 @@ DepthImage crop(const DepthImage& img, int w, int h) {
 TEST(DepthScore, FramesOfAnotherSizeAndFramesThatMeasureNothingAreNotUsed) {
   const fs::path dir = slamroute::test::testTmp() / "roadgraph" / "depth_sizes";
   fs::create_directories(dir);
-  const auto corner =
-      render({{Vec3(0, 1, 0), 1.5}, {Vec3(-1, 0, 0), 3.0}, {Vec3(0, 0, 1), 15.0}});
+  const auto corner = render({{Vec3(0, 1, 0), 1.5}, {Vec3(-1, 0, 0), 3.0}, {Vec3(0, 0, 1), 15.0}});
   writeDepthPng(dir / "a.png", corner);
   writeDepthPng(dir / "b.png", corner);
   writeDepthPng(dir / "small.png", crop(corner, 40, 30));  // a stray frame of another camera

@@ -106,7 +106,8 @@ TEST(GraphBuilder, CornerNoVehicleDroveRoundKeepsItsStreetsConnected) {
   int corner = -1;
   for (std::size_t n = 0; n < r.graph.nodes.size(); ++n) {
     int deg = 0;
-    for (const auto& e : r.graph.edges) deg += (e.u == static_cast<int>(n)) + (e.v == static_cast<int>(n));
+    for (const auto& e : r.graph.edges)
+      deg += (e.u == static_cast<int>(n)) + (e.v == static_cast<int>(n));
     if (r.node_is_end[n] && deg == 4) corner = static_cast<int>(n);
   }
   ASSERT_GE(corner, 0) << "the corner node joins two two-way streets";
@@ -292,9 +293,8 @@ TEST(GraphBuilder, OverpassStreetPassesUnderTheBridge) {
     const double a = std::abs(y);
     bridge.emplace_back(0, y, a <= 40 ? 7.0 : (a >= 100 ? 0.0 : 7.0 * (100 - a) / 60.0));
   }
-  const std::vector<Road> roads = {{line({-150, 0, 0}, {250, 0, 0})},
-                                   {bridge},
-                                   {line({120, -100, 0}, {120, 100, 0})}};
+  const std::vector<Road> roads = {
+      {line({-150, 0, 0}, {250, 0, 0})}, {bridge}, {line({120, -100, 0}, {120, 100, 0})}};
   const auto r = graphFromTraces(makeTraces(roads, 0.5, 5), Config{});
   EXPECT_EQ(r.stats.intersections, 1u);
   // Bridge (isolated, 2 dead ends), west street to the junction (1 dead end), 3 other arms.

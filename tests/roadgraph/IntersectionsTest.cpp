@@ -41,8 +41,8 @@ Traces multiLane(const std::vector<Road>& roads, int lanes, double noise, std::u
                  int passes) {
   Traces all;
   for (int l = 0; l < lanes; ++l) {
-    const Traces t = makeTraces(roads, noise, seed + static_cast<std::uint64_t>(l), 1.0, passes,
-                                1.6 + 3.2 * l);
+    const Traces t =
+        makeTraces(roads, noise, seed + static_cast<std::uint64_t>(l), 1.0, passes, 1.6 + 3.2 * l);
     const int base = static_cast<int>(all.vehicles.size());
     all.vehicles.insert(all.vehicles.end(), t.vehicles.begin(), t.vehicles.end());
     for (auto p : t.points) {
@@ -94,9 +94,8 @@ TEST(Intersections, OverpassIsNotANode) {
     const double z = a <= 40 ? 7.0 : (a >= 100 ? 0.0 : 7.0 * (100 - a) / 60.0);
     bridge.emplace_back(0, y, z);
   }
-  const std::vector<Road> roads = {{line({-150, 0, 0}, {250, 0, 0})},
-                                   {bridge},
-                                   {line({120, -100, 0}, {120, 100, 0})}};
+  const std::vector<Road> roads = {
+      {line({-150, 0, 0}, {250, 0, 0})}, {bridge}, {line({120, -100, 0}, {120, 100, 0})}};
   const auto r = detect(makeTraces(roads));
   ASSERT_EQ(r.nodes.size(), 1u);
   EXPECT_NEAR(r.nodes[0].x(), 120.0, 1.5);
@@ -163,7 +162,8 @@ TEST(Intersections, FourLaneAvenueEndingAtAStreetIsOneNodeAtItsCentre) {
     ASSERT_EQ(r.nodes.size(), 1u) << "seed " << seed;
     // With the travel axes the centre is within 0.2 m; the arms' principal axes alone put it
     // 1.3-2.4 m off (measured with detect()).
-    EXPECT_LT(r.nodes[0].head<2>().norm(), 1.0) << "seed " << seed << ": " << r.nodes[0].transpose();
+    EXPECT_LT(r.nodes[0].head<2>().norm(), 1.0)
+        << "seed " << seed << ": " << r.nodes[0].transpose();
   }
 }
 
@@ -172,8 +172,10 @@ TEST(Intersections, BendOfADividedRoadIsNotANode) {
   // ring sees four clusters (two per side) but they are one road.
   const double a = 25.0 * M_PI / 180.0;
   auto road = [&](double off) {
-    return Polyline{{-200, off, 0}, {0, off, 0},
-                    {200 * std::cos(a) - off * std::sin(a), 200 * std::sin(a) + off * std::cos(a), 0}};
+    return Polyline{
+        {-200, off, 0},
+        {0, off, 0},
+        {200 * std::cos(a) - off * std::sin(a), 200 * std::sin(a) + off * std::cos(a), 0}};
   };
   Traces tr = multiLane({{road(-6.0), false}}, 3, 0.5, 3, 2);
   Polyline back = road(6.0);
@@ -214,8 +216,10 @@ TEST(Intersections, IntersectionPointsAtTheCrossingBelongToItsNode) {
 /// at the origin, with left and right turns between all carriageways.
 Traces dividedCrossing(double gap, int lanes, std::uint64_t seed) {
   const double h = 0.5 * gap, L = 150.0;
-  Traces tr = multiLane({{line({-L, -h, 0}, {L, -h, 0}), false}, {line({L, h, 0}, {-L, h, 0}), false},
-                         {line({h, -L, 0}, {h, L, 0}), false}, {line({-h, L, 0}, {-h, -L, 0}), false}},
+  Traces tr = multiLane({{line({-L, -h, 0}, {L, -h, 0}), false},
+                         {line({L, h, 0}, {-L, h, 0}), false},
+                         {line({h, -L, 0}, {h, L, 0}), false},
+                         {line({-h, L, 0}, {-h, -L, 0}), false}},
                         lanes, 0.5, seed, 2);
   // Right and left turns from each carriageway, as Bezier-like three-point paths.
   std::vector<Road> turns;
@@ -223,8 +227,9 @@ Traces dividedCrossing(double gap, int lanes, std::uint64_t seed) {
     const double a = k * M_PI / 2, c = std::cos(a), s = std::sin(a);
     auto rot = [&](double x, double y) { return Point3(c * x - s * y, s * x + c * y, 0); };
     // Arriving eastbound on y = -h from the west.
-    turns.push_back({{rot(-60, -h), rot(-h - 6, -h), rot(-h, -h - 6), rot(-h, -60)}, false});  // right
-    turns.push_back({{rot(-60, -h), rot(h - 6, -h), rot(h, -h + 6), rot(h, 60)}, false});       // left
+    turns.push_back(
+        {{rot(-60, -h), rot(-h - 6, -h), rot(-h, -h - 6), rot(-h, -60)}, false});          // right
+    turns.push_back({{rot(-60, -h), rot(h - 6, -h), rot(h, -h + 6), rot(h, 60)}, false});  // left
   }
   append(tr, makeTraces(turns, 0.5, seed + 50, 1.0, 2));
   return tr;
@@ -238,7 +243,8 @@ TEST(Intersections, CrossingOfTwoDividedRoadsIsOneNode) {
   for (std::uint64_t seed : {1u, 2u}) {
     const auto r = detectWithAxes(dividedCrossing(16.0, 2, seed));
     ASSERT_EQ(r.nodes.size(), 1u) << "seed " << seed;
-    EXPECT_LT(r.nodes[0].head<2>().norm(), 10.0) << "seed " << seed << ": " << r.nodes[0].transpose();
+    EXPECT_LT(r.nodes[0].head<2>().norm(), 10.0)
+        << "seed " << seed << ": " << r.nodes[0].transpose();
   }
 }
 

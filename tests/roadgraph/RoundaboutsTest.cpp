@@ -99,8 +99,8 @@ TEST(Roundabouts, CrossingWithTurningTrafficIsNoRoundabout) {
 TEST(Roundabouts, DisabledFindsNothing) {
   Config cfg;
   cfg.roundabouts.enabled = false;
-  EXPECT_TRUE(detect(makeTraces(roundaboutDrives(12.0, {0, 90, 180, 270}), 0.3, 5, 1.0, 2), cfg)
-                  .empty());
+  EXPECT_TRUE(
+      detect(makeTraces(roundaboutDrives(12.0, {0, 90, 180, 270}), 0.3, 5, 1.0, 2), cfg).empty());
 }
 
 TEST(Roundabouts, BadConfigThrowsClearly) {

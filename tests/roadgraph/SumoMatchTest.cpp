@@ -1,10 +1,10 @@
 // Validation against SUMO nets and the graph-edge -> SUMO-edge mapping, with traces made from the
 // nets' own lane shapes (every passenger lane driven once, junctions crossed along the
 // connections), so the known answer is the net itself.
+#include <gtest/gtest.h>
 #include "LaneTraces.hpp"
 #include "SumoToolsNets.hpp"
 #include "TestTmp.hpp"
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -39,10 +39,10 @@ void checkNet(const fs::path& p, double min_f1) {
   const SumoNet net = SumoNet::read(p);
   const auto built = graphFromTraces(test::laneTraces(net, 0.5, 42), Config{});
   const auto v = validateAgainstNet(built.graph, built.node_is_end, net, SumoMatchConfig{});
-  std::cout << p.filename() << ": node P " << v.node_precision << " R " << v.node_recall
-            << " F1 " << v.node_f1 << " (" << v.matched_nodes << "/" << v.detected_nodes << "/"
-            << v.true_intersections << "), edge P " << v.edge_precision << " R "
-            << v.edge_recall << "\n";
+  std::cout << p.filename() << ": node P " << v.node_precision << " R " << v.node_recall << " F1 "
+            << v.node_f1 << " (" << v.matched_nodes << "/" << v.detected_nodes << "/"
+            << v.true_intersections << "), edge P " << v.edge_precision << " R " << v.edge_recall
+            << "\n";
   EXPECT_GE(v.node_f1, min_f1);
   RoadGraph g = built.graph;
   const std::size_t unmapped = mapSumoEdges(g, net, SumoMatchConfig{});
@@ -76,15 +76,18 @@ nlohmann::json surveyThroughTheCli(const fs::path& net, const std::string& name)
   fs::create_directories(dir);
   const std::string bin = SLAMROUTE_BINARY, log = " >> " + (dir / "log.txt").string() + " 2>&1";
   EXPECT_EQ(std::system((bin + " --seed 42 survey --net " + net.string() + " --out " +
-                         (dir / "survey").string() + " --depth-spacing 0" + log).c_str()),
+                         (dir / "survey").string() + " --depth-spacing 0" + log)
+                            .c_str()),
             0);
   EXPECT_EQ(std::system((bin + " build-graph --survey " + (dir / "survey").string() +
                          " --no-depth --net " + net.string() + " --out " +
-                         (dir / "graph.json").string() + log).c_str()),
+                         (dir / "graph.json").string() + log)
+                            .c_str()),
             0);
   std::ifstream in(dir / "graph.json");
   auto g = nlohmann::json::parse(in);
-  if (g.at("metadata").is_string()) g["metadata"] = nlohmann::json::parse(g.at("metadata").get<std::string>());
+  if (g.at("metadata").is_string())
+    g["metadata"] = nlohmann::json::parse(g.at("metadata").get<std::string>());
   const auto& v = g.at("metadata").at("validation");
   std::cout << name << " survey: node P " << v.at("node_precision") << " R " << v.at("node_recall")
             << " F1 " << v.at("node_f1") << ", edge P " << v.at("edge_precision") << " R "
@@ -114,15 +117,16 @@ TEST(SumoMatch, BolognaSurveyThroughTheCli) {
 }
 
 // SUMO's A10KW game net (OpenStreetMap): the ring motorway A10's junction at Koenigs Wusterhausen,
-// with one four-arm roundabout whose arms are split (an entry and an exit junction per arm, eight SUMO
-// junctions on a ring of ~19 m). The known answer is the net's own <roundabout>: its junctions'
-// centroid and mean distance from it, and the sense its edges turn in.
+// with one four-arm roundabout whose arms are split (an entry and an exit junction per arm, eight
+// SUMO junctions on a ring of ~19 m). The known answer is the net's own <roundabout>: its
+// junctions' centroid and mean distance from it, and the sense its edges turn in.
 TEST(SumoMatch, SplitArmRoundaboutOfTheA10Net) {
   const fs::path net_path = slamroute::test::sumoToolsNet("game/A10KW/osm.net.xml");
   const SumoNet net = SumoNet::read(net_path);
   ASSERT_EQ(net.roundabouts.size(), 1u);
   std::vector<Point2> ring;
-  for (const auto& id : net.roundabouts[0].nodes) ring.push_back(net.findJunction(id)->pos.head<2>());
+  for (const auto& id : net.roundabouts[0].nodes)
+    ring.push_back(net.findJunction(id)->pos.head<2>());
   Point2 centre = Point2::Zero();
   for (const auto& p : ring) centre += p / static_cast<double>(ring.size());
   double radius = 0.0;
@@ -145,8 +149,9 @@ TEST(SumoMatch, SplitArmRoundaboutOfTheA10Net) {
 // node F1 0.918 / 0.912 on survey seeds 42 / 7 (a divided road's carriageway nodes are one node,
 // bench/RESULTS.md "Divided roads"); Braunschweig (23): 0.905.
 TEST(SumoMatch, HeldOutCityNetsReachTheIssueTarget) {
-  for (const auto& [name, net] : {std::pair<std::string, fs::path>{"adlershof", slamroute::test::adlershofNet()},
-                                  {"braunschweig", slamroute::test::braunschweigNet()}}) {
+  for (const auto& [name, net] :
+       {std::pair<std::string, fs::path>{"adlershof", slamroute::test::adlershofNet()},
+        {"braunschweig", slamroute::test::braunschweigNet()}}) {
     const auto g = surveyThroughTheCli(net, name);
     EXPECT_GE(g.at("metadata").at("validation").at("node_f1").get<double>(), 0.9) << name;
     // Issue 27: with divided roads as one street (place level), node F1 >= 0.85 (0.908 / 0.895).

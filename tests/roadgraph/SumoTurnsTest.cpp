@@ -1,8 +1,8 @@
 // Turn permissions of a graph from the net it was matched to (SumoTurns.cpp), on the plus net:
 // a hand-made graph whose edges are the net's own edges, so the known answer is the net's
 // <connection>s.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -19,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The plus net with some <connection from=A to=B> lines removed.
-SumoNet plusWithout(const std::vector<std::pair<std::string, std::string>>& cut, const std::string& name) {
+SumoNet plusWithout(const std::vector<std::pair<std::string, std::string>>& cut,
+                    const std::string& name) {
   std::ifstream in(fs::path(SLAMROUTE_SOURCE_DIR) / "networks/test/plus.net.xml");
   std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   for (const auto& [a, b] : cut) {
@@ -104,7 +105,8 @@ TEST(SumoTurns, EdgesWithoutSumoEdgesKeepAllButStraightBack) {
   // C_E (now unmapped) leads on to E_C only, which is straight back: forbidden.
   int c_e = -1, e_c = -1;
   for (const auto& e : g.edges)
-    if (e.sumo_edges.empty()) (g.nodes[static_cast<std::size_t>(e.u)].sumo_junction == "C" ? c_e : e_c) = e.id;
+    if (e.sumo_edges.empty())
+      (g.nodes[static_cast<std::size_t>(e.u)].sumo_junction == "C" ? c_e : e_c) = e.id;
   ASSERT_GE(c_e, 0);
   ASSERT_GE(e_c, 0);
   EXPECT_TRUE(g.allowed_next[static_cast<std::size_t>(c_e)].empty());

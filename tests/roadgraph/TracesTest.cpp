@@ -1,6 +1,6 @@
 // Trace readers: traces.csv and SUMO FCD XML, and their error messages.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -75,16 +75,17 @@ TEST(Traces, TheGraphDoesNotDependOnTheRowOrder) {
 }
 
 TEST(Traces, ReadsFcdXmlAndConvertsTheAngle) {
-  const auto p = tmpFile("fcd.xml",
-                         "<fcd-export>\n"
-                         " <timestep time=\"0.00\">\n"
-                         "  <vehicle id=\"v0\" x=\"10\" y=\"20\" z=\"3\" angle=\"0\" speed=\"5\"/>\n"
-                         "  <vehicle id=\"v1\" x=\"11\" y=\"21\" angle=\"90\" speed=\"6\"/>\n"
-                         " </timestep>\n"
-                         " <timestep time=\"0.10\">\n"
-                         "  <vehicle id=\"v0\" x=\"10\" y=\"20.5\" z=\"3\" angle=\"0\" speed=\"5\"/>\n"
-                         " </timestep>\n"
-                         "</fcd-export>\n");
+  const auto p =
+      tmpFile("fcd.xml",
+              "<fcd-export>\n"
+              " <timestep time=\"0.00\">\n"
+              "  <vehicle id=\"v0\" x=\"10\" y=\"20\" z=\"3\" angle=\"0\" speed=\"5\"/>\n"
+              "  <vehicle id=\"v1\" x=\"11\" y=\"21\" angle=\"90\" speed=\"6\"/>\n"
+              " </timestep>\n"
+              " <timestep time=\"0.10\">\n"
+              "  <vehicle id=\"v0\" x=\"10\" y=\"20.5\" z=\"3\" angle=\"0\" speed=\"5\"/>\n"
+              " </timestep>\n"
+              "</fcd-export>\n");
   const Traces tr = readTraces(p);
   ASSERT_EQ(tr.points.size(), 3u);
   // In (vehicle, time) order: v0 at 0.0 and 0.1, then v1.
@@ -116,7 +117,8 @@ TEST(Traces, BadFilesGiveMessagesNamingTheFile) {
   EXPECT_THROW(readTraces(badxml), std::invalid_argument);
   const auto empty = tmpFile("empty.csv", "");
   EXPECT_THROW(readTraces(empty), std::invalid_argument);
-  const auto nan = tmpFile("nan.csv", "t,vehicle,x,y,z,heading_deg,speed\n0,a,nan,1,0,0,0\n1,a,1,1,0,0,0\n");
+  const auto nan =
+      tmpFile("nan.csv", "t,vehicle,x,y,z,heading_deg,speed\n0,a,nan,1,0,0,0\n1,a,1,1,0,0,0\n");
   const Traces tr = readTraces(nan);
   EXPECT_THROW(checkTraces(tr, "nan.csv"), std::invalid_argument);
 }

@@ -1,9 +1,10 @@
 // Drive under the default city's overpass with --save-scans: the scans stacked with the ground
 // truth form a crisp map (every point on a world surface), the overpass is a deck above the
-// street, saved scans equal regenerated ones. Writes build/test_tmp/<this test>/drive_map_overpass.png.
+// street, saved scans equal regenerated ones. Writes build/test_tmp/<this
+// test>/drive_map_overpass.png.
+#include <gtest/gtest.h>
 #include "DriveTestUtil.hpp"
 #include "TestTmp.hpp"
-#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 // runDrive on the 3x3 grid: ground truth on the route's lanes, 10 Hz, pose edges in route order.
+#include <gtest/gtest.h>
 #include "DriveTestUtil.hpp"
 #include "TestTmp.hpp"
-#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -72,9 +72,11 @@ void expectOdometryFollowsTheGroundTruth(const Trajectory& gt, const WheelOdomet
   const Pose3 dg = gt.front().T_world_body.inverse() * gt.back().T_world_body;
   const Pose3 dm = odo.motion(gt.front().t, gt.back().t);
   EXPECT_LT((dm.translation() - dg.translation()).head<2>().norm(), 0.05 * driven_m);
-  EXPECT_LT(Eigen::AngleAxisd(dg.rotation().transpose() * dm.rotation()).angle(), 5.0 * M_PI / 180.0);
+  EXPECT_LT(Eigen::AngleAxisd(dg.rotation().transpose() * dm.rotation()).angle(),
+            5.0 * M_PI / 180.0);
   // Noise-free odometry reproduces each step of the ground truth (to a few cm: in sharp junction
-  // turns the rate-limited heading lets the sensor move slightly sideways, which wheels do not see).
+  // turns the rate-limited heading lets the sensor move slightly sideways, which wheels do not
+  // see).
   const WheelOdometry clean = simulate::simulateOdometry(gt, noiseFreeOdometry(), 5);
   for (std::size_t i = 10; i + 1 < gt.size(); i += 37) {
     const Pose3 step = gt[i].T_world_body.inverse() * gt[i + 1].T_world_body;

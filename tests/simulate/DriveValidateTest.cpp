@@ -55,7 +55,8 @@ TEST(DriveValidate, JoinsAForbiddenTurnByALegalDetourUnlessStrict) {
     simulate::drivableRoute(net, gap, "route.json", false);
     FAIL() << "strict mode accepted a forbidden turn";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("route.json: turn 'g00_g01' -> 'g10_g11'"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("route.json: turn 'g00_g01' -> 'g10_g11'"),
+              std::string::npos)
         << e.what();
   }
   // A missing edge is still an error in the joining mode, naming the file.
@@ -63,7 +64,8 @@ TEST(DriveValidate, JoinsAForbiddenTurnByALegalDetourUnlessStrict) {
     simulate::drivableRoute(net, {"g00_g01", "nowhere"}, "route.json", true);
     FAIL() << "a missing edge was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("route.json: edge 'nowhere'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("route.json: edge 'nowhere'"), std::string::npos)
+        << e.what();
   }
 }
 

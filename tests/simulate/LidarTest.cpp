@@ -79,10 +79,10 @@ TEST(Lidar, BoxAppearsWhereItShouldWithTheRightExtent) {
     EXPECT_GE(p.z, -1.8 - 1e-3);
     EXPECT_LE(p.z, -0.3 + 1e-3);
   }
-  EXPECT_NEAR(xmin, 8.0, 1e-3);           // the front face
-  EXPECT_LT(ymin, -0.9);                  // the full width is seen
+  EXPECT_NEAR(xmin, 8.0, 1e-3);  // the front face
+  EXPECT_LT(ymin, -0.9);         // the full width is seen
   EXPECT_GT(ymax, 0.9);
-  EXPECT_NEAR(zmax, -0.3, 0.15);          // roof at 1.5 m = -0.3 in the sensor frame
+  EXPECT_NEAR(zmax, -0.3, 0.15);  // roof at 1.5 m = -0.3 in the sensor frame
   // turned 90 deg, the front face is 1 m (half width) from the centre, the extent 4 m
   car.heading_deg = 90;
   const Scan t = lidar.scan(w, at(0, 0, 1.8), {car}, 0);
@@ -96,7 +96,8 @@ TEST(Lidar, BoxAppearsWhereItShouldWithTheRightExtent) {
   EXPECT_LE(ymax2, 2.0 + 1e-3);
   // a box behind a wall is hidden
   const World wall = World::fromMesh(testnet::wallAtX(5.0));
-  for (const auto& p : lidar.scan(wall, at(0, 0, 1.8), {car}, 0).points) EXPECT_NEAR(p.x, 5.0, 2e-3);
+  for (const auto& p : lidar.scan(wall, at(0, 0, 1.8), {car}, 0).points)
+    EXPECT_NEAR(p.x, 5.0, 2e-3);
 }
 
 TEST(Lidar, RingIndicesAndVerticalAnglesMatchTheSpec) {
@@ -114,8 +115,8 @@ TEST(Lidar, RingIndicesAndVerticalAnglesMatchTheSpec) {
       ASSERT_LT(p.ring, spec.channels);
       ++per_ring[static_cast<std::size_t>(p.ring)];
       const double el = std::atan2(p.z, std::hypot(p.x, p.y)) * 180.0 / M_PI;
-      const double want = spec.vfov_down_deg + (spec.vfov_up_deg - spec.vfov_down_deg) * p.ring /
-                                                   (spec.channels - 1);
+      const double want = spec.vfov_down_deg +
+                          (spec.vfov_up_deg - spec.vfov_down_deg) * p.ring / (spec.channels - 1);
       ASSERT_NEAR(el, want, 1e-3) << preset << " ring " << p.ring;
       ASSERT_EQ(ringFromElevation(spec, p.x, p.y, p.z), p.ring);
       // order: column-major, rings ascending within a column
@@ -162,7 +163,8 @@ TEST(Lidar, NoiseAndDropoutAreDeterministicPerSeedAndScan) {
   const Scan s3 = a.scan(w, Pose3::Identity(), {}, 4), s4 = other.scan(w, Pose3::Identity(), {}, 3);
   EXPECT_NE(s1.points.front().x, s3.points.front().x);
   EXPECT_NE(s1.points.front().x, s4.points.front().x);
-  // dropout share and range noise statistics (fixed seed, so these are exact checks of a known draw)
+  // dropout share and range noise statistics (fixed seed, so these are exact checks of a known
+  // draw)
   const double n_all = 64.0 * 1800.0;
   EXPECT_NEAR(s1.points.size() / n_all, 0.9, 0.01);
   const World wall = World::fromMesh(testnet::wallAtX(20.0));
@@ -204,14 +206,16 @@ TEST(Lidar, OverpassAppearsAsADeckAboveTheStreet) {
     const Vec3 q = T * Vec3(p.x, p.y, p.z);
     // the deck's side (z 6..7) and its parapet (7..8), right above the street (|y| < 5)
     if (std::abs(q.x()) < 3.6 && std::abs(q.y()) < 5 && q.z() > 5.95 && q.z() < 8.05) ++deck;
-    if (q.x() > 5 && q.x() < 40 && std::abs(q.y() + 1.6) < 1.5 && std::abs(q.z()) < 0.05) ++street_ahead;
+    if (q.x() > 5 && q.x() < 40 && std::abs(q.y() + 1.6) < 1.5 && std::abs(q.z()) < 0.05)
+      ++street_ahead;
   }
-  EXPECT_GT(deck, 20u);           // the deck, above the street
-  EXPECT_GT(street_ahead, 10u);   // and the street continues beyond it, unblocked
+  EXPECT_GT(deck, 20u);          // the deck, above the street
+  EXPECT_GT(street_ahead, 10u);  // and the street continues beyond it, unblocked
 }
 
 TEST(Lidar, ShippedOverpassAppearsAsADeckAboveTheStreet) {
-  const auto net_path = std::filesystem::path(SLAMROUTE_SOURCE_DIR) / "networks/test/overpass.net.xml";
+  const auto net_path =
+      std::filesystem::path(SLAMROUTE_SOURCE_DIR) / "networks/test/overpass.net.xml";
   ASSERT_TRUE(std::filesystem::exists(net_path)) << net_path << " missing";
   const SumoNet net = SumoNet::read(net_path);
   const World w = World::build(net, WorldConfig{}, 42);
@@ -222,7 +226,8 @@ TEST(Lidar, ShippedOverpassAppearsAsADeckAboveTheStreet) {
   std::size_t deck = 0;
   for (const auto& p : lidar.scan(w, T, {}, 0).points) {
     const Vec3 q = T * Vec3(p.x, p.y, p.z);
-    if (std::abs(q.x() - 500) < 4 && std::abs(q.y() - 500) < 6 && q.z() > 4.95 && q.z() < 7.05) ++deck;
+    if (std::abs(q.x() - 500) < 4 && std::abs(q.y() - 500) < 6 && q.z() > 4.95 && q.z() < 7.05)
+      ++deck;
   }
   EXPECT_GT(deck, 20u);
 }

@@ -1,6 +1,6 @@
 // runSurvey on the 3x3 grid: traces at 10 Hz, coverage >= 90 %, depth frames with poses.
-#include "TestTmp.hpp"
 #include <gtest/gtest.h>
+#include "TestTmp.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -36,8 +36,8 @@ TEST(World, OverpassDeckIsAboveTheStreetAndTheStreetPassesUnder) {
   // the street below is free: a ray along it at sensor height sees no pillar or wall
   for (double y : {-1.6, 1.6}) {
     const RayHit along = w.castRay(Point3(-150, y, 1.8), Vec3::UnitX(), 300);
-    EXPECT_FALSE(along.hit && along.range_m < 300) << "blocked at x = " << -150 + along.range_m
-                                                   << " by " << surfaceKindName(along.kind);
+    EXPECT_FALSE(along.hit && along.range_m < 300)
+        << "blocked at x = " << -150 + along.range_m << " by " << surfaceKindName(along.kind);
   }
   EXPECT_GT(w.stats().pillars, 0u);
 }
@@ -108,7 +108,8 @@ TEST(World, BuildingsNeverStandOnRoads) {
 }
 
 TEST(World, DefaultCityIsPlausible) {
-  const fs::path net_path = fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
+  const fs::path net_path =
+      fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml";
   ASSERT_TRUE(fs::exists(net_path)) << net_path << " missing";
   const SumoNet net = SumoNet::read(net_path);
   const World w = World::build(net, WorldConfig{}, 42);
@@ -168,8 +169,10 @@ TEST(World, WritesPlyObjAndTopDownPng) {
     if (line == "end_header") break;
   }
   EXPECT_NE(header.find("format binary_little_endian 1.0"), std::string::npos);
-  EXPECT_NE(header.find("element vertex " + std::to_string(w.mesh().vertices.size())), std::string::npos);
-  EXPECT_NE(header.find("element face " + std::to_string(w.mesh().triangles.size())), std::string::npos);
+  EXPECT_NE(header.find("element vertex " + std::to_string(w.mesh().vertices.size())),
+            std::string::npos);
+  EXPECT_NE(header.find("element face " + std::to_string(w.mesh().triangles.size())),
+            std::string::npos);
   EXPECT_EQ(fs::file_size(d / "world.ply"),
             header.size() + 12 * w.mesh().vertices.size() + 13 * w.mesh().triangles.size());
   EXPECT_GT(fs::file_size(d / "world.png"), 1000u);
@@ -190,7 +193,8 @@ TEST(World, PolyFileBuildingsAreUsed) {
   const fs::path d = tmpDir("poly");
   std::ofstream(d / "b.poly.xml")
       << "<additional>\n"
-         "<poly id=\"b1\" type=\"building\" shape=\"20,20 40,20 40,40 20,40\"><param key=\"height\" value=\"12\"/></poly>\n"
+         "<poly id=\"b1\" type=\"building\" shape=\"20,20 40,20 40,40 20,40\"><param "
+         "key=\"height\" value=\"12\"/></poly>\n"
          "<poly id=\"onroad\" type=\"building\" shape=\"-10,-5 10,-5 10,5 -10,5\"/>\n"
          "<poly id=\"park\" type=\"park\" shape=\"-60,20 -40,20 -40,40\"/>\n"
          "</additional>\n";

@@ -91,10 +91,12 @@ inline SumoNet gridNet(int n, double spacing) {
     for (int j = 0; j < n; ++j) {
       if (i + 1 < n)
         addStreet(net, id(i, j), id(i + 1, j),
-                  {Point3(i * spacing + 8, j * spacing, 0), Point3((i + 1) * spacing - 8, j * spacing, 0)});
+                  {Point3(i * spacing + 8, j * spacing, 0),
+                   Point3((i + 1) * spacing - 8, j * spacing, 0)});
       if (j + 1 < n)
         addStreet(net, id(i, j), id(i, j + 1),
-                  {Point3(i * spacing, j * spacing + 8, 0), Point3(i * spacing, (j + 1) * spacing - 8, 0)});
+                  {Point3(i * spacing, j * spacing + 8, 0),
+                   Point3(i * spacing, (j + 1) * spacing - 8, 0)});
     }
   return net;
 }

@@ -51,7 +51,8 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
   const auto& ca = clouds[static_cast<std::size_t>(a)];
   const auto& cb = clouds[static_cast<std::size_t>(b)];
   PlaceDatabase db(cfg.loop.place);
-  for (std::size_t k = 0; k < ka.size(); ++k) db.add(static_cast<int>(k), ca.descriptors[k], ka[k].pose.translation());
+  for (std::size_t k = 0; k < ka.size(); ++k)
+    db.add(static_cast<int>(k), ca.descriptors[k], ka[k].pose.translation());
   const LoopVerifyOptions vo = loopVerifyOptions(cfg.loop);
   for (std::size_t k = 0; k < kb.size(); ++k) {
     PlaceQuery q;
@@ -61,14 +62,14 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
     if (found.empty()) continue;
     const PlaceCandidate& c = found.front();
     ++candidates;
-    const IcpTarget target(submap(ca, ka, c.keyframe, opt.target_keyframes_each_side,
-                                  cfg.loop.voxel_m));
+    const IcpTarget target(
+        submap(ca, ka, c.keyframe, opt.target_keyframes_each_side, cfg.loop.voxel_m));
     const LoopVerification v = verifyLoop(target, Pose3::Identity(), cb.body[k], c, vo);
     if (!v.accepted) continue;
     if (betterIcpMatch(target, cb.body[k], v.icp, loopAmbiguity(cfg.loop))) continue;
     const auto& kfa = ka[static_cast<std::size_t>(c.keyframe)];
-    out.push_back({a, b, c.keyframe, static_cast<int>(k), kfa.t, kb[k].t,
-                   v.icp.T_target_source, v.icp.fitness_m2});
+    out.push_back({a, b, c.keyframe, static_cast<int>(k), kfa.t, kb[k].t, v.icp.T_target_source,
+                   v.icp.fitness_m2});
   }
 }
 

@@ -33,8 +33,7 @@ double pathBetween(const FleetClosure& i, const FleetClosure& j,
 
 bool agree(const FleetClosure& i, const FleetClosure& j, double path,
            const std::vector<std::vector<FleetKeyframe>>& kfs, const FleetMergeOptions& opt) {
-  const Eigen::Vector3d own =
-      (kfOf(kfs, j.vehicle_a, j.keyframe_a).pose * j.T_a_b).translation();
+  const Eigen::Vector3d own = (kfOf(kfs, j.vehicle_a, j.keyframe_a).pose * j.T_a_b).translation();
   return (predicted(i, j, kfs) - own).norm() <= opt.consistency_m + opt.consistency_per_m * path;
 }
 

@@ -35,8 +35,9 @@ std::vector<FleetKeyframe> fleetKeyframes(const Trajectory& estimate, const Scan
   double since = spacing_m, driven = 0.0;  // the first pose is a keyframe
   for (std::size_t i = 0; i < estimate.size(); ++i) {
     if (i > 0) {
-      const double step = (estimate[i].T_world_body.translation() -
-                           estimate[i - 1].T_world_body.translation()).norm();
+      const double step =
+          (estimate[i].T_world_body.translation() - estimate[i - 1].T_world_body.translation())
+              .norm();
       since += step;
       driven += step;
     }

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "FleetMap.hpp"
 #include "FleetInternal.hpp"
+#include "FleetMap.hpp"
 #include "slamroute/evaluate/KdTree.hpp"
 
 namespace slamroute::evaluate {
@@ -14,8 +14,8 @@ namespace slamroute::evaluate {
 Cloud vehicleMap(const FleetVehicleInput& v, const Trajectory& poses, int stride, double voxel_m) {
   Cloud map;
   for (std::size_t i = 0; i < v.scans->size(); i += static_cast<std::size_t>(stride)) {
-    const Cloud part = transformed(bodyCloud(*v.scans, i, voxel_m),
-                                   poseNearest(poses, v.scans->time(i)));
+    const Cloud part =
+        transformed(bodyCloud(*v.scans, i, voxel_m), poseNearest(poses, v.scans->time(i)));
     map.insert(map.end(), part.begin(), part.end());
   }
   return voxelFilter(map, voxel_m);

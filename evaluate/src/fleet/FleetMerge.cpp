@@ -44,8 +44,8 @@ void measureMaps(const std::vector<FleetVehicleInput>& vehicles, const Config& c
   const Cloud facades = streetFacades(mesh, gts, opt);
   r.facade_samples = static_cast<int>(facades.size());
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
-    const Cloud own = vehicleMap(vehicles[v], r.vehicles[v].merged, opt.map_scan_stride,
-                                 cfg.output.map_voxel_m);
+    const Cloud own =
+        vehicleMap(vehicles[v], r.vehicles[v].merged, opt.map_scan_stride, cfg.output.map_voxel_m);
     r.vehicles[v].completeness_pct = coveredPct(facades, own, opt.covered_m);
     r.map.insert(r.map.end(), own.begin(), own.end());
   }
@@ -109,7 +109,8 @@ FleetResult mergeFleet(const std::vector<FleetVehicleInput>& vehicles, const Con
   logInfo("fleet merge: " + std::to_string(r.closures.size()) + " inter-vehicle closures (" +
           std::to_string(r.candidates) + " candidates, " + std::to_string(verified.size()) +
           " verified, " + std::to_string(r.inconsistent) + " inconsistent dropped)");
-  const std::vector<Trajectory> merged = mergeFleetTrajectories(vehicles, kfs, r.closures, cfg, opt);
+  const std::vector<Trajectory> merged =
+      mergeFleetTrajectories(vehicles, kfs, r.closures, cfg, opt);
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
     FleetVehicleResult vr;
     vr.id = vehicles[v].id;

@@ -28,9 +28,9 @@ std::string closuresCsv(const FleetResult& r) {
     const Vec3 t = c.T_a_b.translation();
     const double yaw = std::atan2(c.T_a_b.linear()(1, 0), c.T_a_b.linear()(0, 0)) * 180.0 / M_PI;
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%d,%d,%.3f,%d,%d,%.3f,%.4f,%.4f,%.4f,%.3f,%.5f\n",
-                  c.vehicle_a, c.keyframe_a, c.t_a, c.vehicle_b, c.keyframe_b, c.t_b, t.x(),
-                  t.y(), t.z(), yaw, c.fitness_m2);
+    std::snprintf(buf, sizeof buf, "%d,%d,%.3f,%d,%d,%.3f,%.4f,%.4f,%.4f,%.3f,%.5f\n", c.vehicle_a,
+                  c.keyframe_a, c.t_a, c.vehicle_b, c.keyframe_b, c.t_b, t.x(), t.y(), t.z(), yaw,
+                  c.fitness_m2);
     os << buf;
   }
   return os.str();

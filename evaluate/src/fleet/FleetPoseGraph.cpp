@@ -19,8 +19,8 @@ std::vector<int> nodeOffsets(const std::vector<std::vector<FleetKeyframe>>& kfs)
 
 std::vector<PoseGraphEdge> graphEdges(const std::vector<std::vector<FleetKeyframe>>& kfs,
                                       const std::vector<int>& off,
-                                      const std::vector<FleetClosure>& closures,
-                                      const Config& cfg, const FleetMergeOptions& opt) {
+                                      const std::vector<FleetClosure>& closures, const Config& cfg,
+                                      const FleetMergeOptions& opt) {
   std::vector<PoseGraphEdge> edges;
   for (std::size_t v = 0; v < kfs.size(); ++v) {
     for (std::size_t k = 1; k < kfs[v].size(); ++k) {

@@ -30,7 +30,8 @@ Cloud capped(Cloud c, int max_n) {
   return out;
 }
 
-PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg, StageTimes& times) {
+PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg,
+                         StageTimes& times) {
   PreparedScan p;
   double t0 = cpuNow();
   RangeImage img = projectScan(scan, spec, cfg);  // 1. range image
@@ -55,8 +56,9 @@ PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& 
   // thinned to a fixed budget for speed.
   const MappingConfig& m = cfg.mapping;
   p.kf_edges = voxelFilter(p.features.less_sharp, m.edge_voxel_m);
-  p.kf_planes = m.surf_voxel_m == cfg.features.less_flat_voxel_m ? p.features.less_flat
-                                                                  : voxelFilter(p.features.less_flat, m.surf_voxel_m);
+  p.kf_planes = m.surf_voxel_m == cfg.features.less_flat_voxel_m
+                    ? p.features.less_flat
+                    : voxelFilter(p.features.less_flat, m.surf_voxel_m);
   p.src_edges = capped(p.kf_edges, m.max_source_edges);
   p.src_planes = capped(p.kf_planes, m.max_source_planes);
   times.features += cpuSince(t0);

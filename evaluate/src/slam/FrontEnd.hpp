@@ -23,7 +23,8 @@ struct PreparedScan {
 Scan deskewed(const Scan& scan, const Pose3& sweep_motion, double sweep_s);
 
 /// Steps 1-2 of the pipeline on one scan; accumulates the stage times.
-PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg, StageTimes& times);
+PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg,
+                         StageTimes& times);
 
 /// At most `max_n` points of `c`, evenly strided (voxel-sorted input: thins space uniformly).
 Cloud capped(Cloud c, int max_n);

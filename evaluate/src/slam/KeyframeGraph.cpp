@@ -6,12 +6,13 @@
 namespace slamroute::evaluate::slam {
 
 void KeyframeGraph::keepCloudsOnDisk(const std::filesystem::path& dir) {
-  if (!kfs_.empty()) throw std::logic_error("KeyframeGraph::keepCloudsOnDisk: call it before the first keyframe");
+  if (!kfs_.empty())
+    throw std::logic_error("KeyframeGraph::keepCloudsOnDisk: call it before the first keyframe");
   clouds_ = std::make_unique<CloudStore>(dir);
 }
 
-void KeyframeGraph::add(double t, int frame, const Pose3& T_world, const Cloud& edges, const Cloud& planes,
-                        const Cloud& segmented) {
+void KeyframeGraph::add(double t, int frame, const Pose3& T_world, const Cloud& edges,
+                        const Cloud& planes, const Cloud& segmented) {
   Keyframe kf;
   kf.t = t;
   kf.frame = frame;

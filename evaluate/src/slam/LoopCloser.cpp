@@ -23,8 +23,9 @@ void LoopCloser::addPlace(const KeyframeGraph& graph, const Cloud& segmented_bod
 bool LoopCloser::tryClose(KeyframeGraph& graph, StageTimes& times) {
   const double t = graph.back().t;
   if (t - last_loop_t_ < cfg_.loop.cooldown_s || t - last_attempt_t_ < 1.0) return false;
-  std::optional<LoopCandidate> c = nearbyCandidate(graph);          // the estimate: same place
-  if (!c && cfg_.loop.place_recognition && place_search_) c = placeCandidate(graph);  // the descriptor
+  std::optional<LoopCandidate> c = nearbyCandidate(graph);  // the estimate: same place
+  if (!c && cfg_.loop.place_recognition && place_search_)
+    c = placeCandidate(graph);  // the descriptor
   if (!c) return false;
   last_attempt_t_ = t;
   ++stats_.candidates;
@@ -55,11 +56,13 @@ std::optional<LoopCandidate> LoopCloser::placeCandidate(const KeyframeGraph& gra
   if (newest_kf_ != static_cast<int>(graph.size()) - 1) return std::nullopt;  // not described
   PlaceQuery q;
   q.newest_keyframe = -1;
-  for (std::size_t k = 0; k + 1 < graph.size() && cur.t - graph.at(k).t >= cfg_.loop.min_time_gap_s; ++k)
+  for (std::size_t k = 0; k + 1 < graph.size() && cur.t - graph.at(k).t >= cfg_.loop.min_time_gap_s;
+       ++k)
     q.newest_keyframe = static_cast<int>(k);
   if (q.newest_keyframe < 0) return std::nullopt;
-  const double gate = std::min(cfg_.loop.place_gate_max_m,
-                               cfg_.loop.radius_m + cfg_.loop.place_gate_per_m * graph.drivenSinceLoop());
+  const double gate =
+      std::min(cfg_.loop.place_gate_max_m,
+               cfg_.loop.radius_m + cfg_.loop.place_gate_per_m * graph.drivenSinceLoop());
   q.gate_centre = cur.T_world.translation();
   q.gate_radius_m = gate;
   const std::vector<PlaceCandidate> found = places_.query(newest_, q);
@@ -82,7 +85,8 @@ Cloud LoopCloser::submap(const KeyframeGraph& graph, int old_kf, bool structure_
   const Keyframe& cur = graph.back();
   const int n = static_cast<int>(graph.size());
   Cloud target;
-  for (int k = std::max(0, old_kf - c.submap_keyframes); k <= std::min(n - 2, old_kf + c.submap_keyframes); ++k) {
+  for (int k = std::max(0, old_kf - c.submap_keyframes);
+       k <= std::min(n - 2, old_kf + c.submap_keyframes); ++k) {
     const Keyframe& kf = graph.at(static_cast<std::size_t>(k));
     if (cur.t - kf.t < c.min_time_gap_s) continue;
     const Cloud& body = graph.clouds().get(kf.cloud);
@@ -103,20 +107,24 @@ Cloud LoopCloser::structureOf(const Cloud& body) const {
   return structureAboveRoad(body, sensor_height_m_, kStructureMinM, kStructureMaxM);
 }
 
-std::optional<Pose3> LoopCloser::uniqueStart(const KeyframeGraph& graph, const LoopCandidate& cand) {
+std::optional<Pose3> LoopCloser::uniqueStart(const KeyframeGraph& graph,
+                                             const LoopCandidate& cand) {
   const LoopConfig& c = cfg_.loop;
   CorrelativeOptions o;
   o.window_m = searchWindow(graph);
   o.yaw_window_rad = c.correlative_yaw_deg * std::numbers::pi / 180.0;
   o.separation_m = c.correlative_separation_m;
   o.prune_share = std::min(o.prune_share, c.correlative_max_ratio);
-  const Cloud source = within(structureOf(graph.clouds().get(graph.back().cloud)), Vec3::Zero(), kMatchRangeM);
-  const Cloud target = within(submap(graph, cand.keyframe, true), cand.init.translation(), kMatchRangeM + o.window_m);
+  const Cloud source =
+      within(structureOf(graph.clouds().get(graph.back().cloud)), Vec3::Zero(), kMatchRangeM);
+  const Cloud target = within(submap(graph, cand.keyframe, true), cand.init.translation(),
+                              kMatchRangeM + o.window_m);
   const CorrelativeResult r = correlativeSearch(target, source, cand.init, o);
-  logDebug("loop candidate kf " + std::to_string(cand.keyframe) + ": correlative score " + std::to_string(r.score) +
-           " rival " + std::to_string(r.runner_up) + " at " + std::to_string(r.runner_up_offset.norm()) +
-           " m, window " + std::to_string(o.window_m) + " m, moved " +
-           std::to_string((r.best.translation() - cand.init.translation()).norm()) + " m");
+  logDebug("loop candidate kf " + std::to_string(cand.keyframe) + ": correlative score " +
+           std::to_string(r.score) + " rival " + std::to_string(r.runner_up) + " at " +
+           std::to_string(r.runner_up_offset.norm()) + " m, window " + std::to_string(o.window_m) +
+           " m, moved " + std::to_string((r.best.translation() - cand.init.translation()).norm()) +
+           " m");
   if (r.runner_up >= c.correlative_max_ratio * r.score) return std::nullopt;
   return r.best;
 }
@@ -148,9 +156,9 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
   } else {
     icp = icp_target.align(source, init, c.icp_iterations, c.icp_max_corr_m);
   }
-  logDebug("loop candidate kf " + std::to_string(old_kf) + " -> " + std::to_string(n - 1) + ": fitness " +
-           std::to_string(icp.fitness_m2) + " inliers " + std::to_string(icp.inlier_ratio) +
-           (cand.place ? " (place descriptor)" : ""));
+  logDebug("loop candidate kf " + std::to_string(old_kf) + " -> " + std::to_string(n - 1) +
+           ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
+           std::to_string(icp.inlier_ratio) + (cand.place ? " (place descriptor)" : ""));
   if (!vo.accept(icp)) return std::nullopt;
   if (const auto other = betterIcpMatch(icp_target, source, icp, loopAmbiguity(c))) {
     ++stats_.ambiguous;
@@ -168,7 +176,8 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
   return icp;
 }
 
-void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp, StageTimes& times) {
+void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp,
+                        StageTimes& times) {
   const int old_kf = c.keyframe;
   const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
   const Keyframe& cur = graph.back();
@@ -180,15 +189,16 @@ void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpR
   e.sigma_m = cfg_.loop.graph_loop_sigma_m;
   e.sigma_rad = cfg_.loop.graph_loop_sigma_rad;
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
-  stats_.loops.push_back({old_kf, n - 1, old.t, cur.t, icp.fitness_m2, correction, e.T_from_to, c.place.has_value()});
+  stats_.loops.push_back(
+      {old_kf, n - 1, old.t, cur.t, icp.fitness_m2, correction, e.T_from_to, c.place.has_value()});
   last_loop_t_ = cur.t;
   const double t_cur = cur.t;
   const double t0 = cpuNow();
   graph.closeLoop(e);
   times.pose_graph += cpuSince(t0);
   logInfo("loop closure: keyframe " + std::to_string(n - 1) + " (t=" + std::to_string(t_cur) +
-          " s) matches keyframe " + std::to_string(old_kf) + ", fitness " + std::to_string(icp.fitness_m2) +
-          " m^2");
+          " s) matches keyframe " + std::to_string(old_kf) + ", fitness " +
+          std::to_string(icp.fitness_m2) + " m^2");
 }
 
 }  // namespace slamroute::evaluate::slam

@@ -72,7 +72,8 @@ class LoopCloser {
   /// The correlative search scores the source points within this range (where both scans see
   /// the same structure densely enough) against the target within it plus the window [m].
   static constexpr double kMatchRangeM = 40.0;
-  void accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp, StageTimes& times);
+  void accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp,
+              StageTimes& times);
 
   const Config& cfg_;
   double sensor_height_m_;

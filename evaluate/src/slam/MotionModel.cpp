@@ -40,7 +40,8 @@ Pose3 boundedYawRate(const Pose3& next, double dt, const Pose3& last, double las
                      double max_accel) {
   const double rate0 = yawOf(last) / last_dt;
   const double rate = std::clamp(yawOf(next) / dt, rate0 - max_accel * dt, rate0 + max_accel * dt);
-  return carMotion(rate * dt, std::copysign(next.translation().head<2>().norm(), next.translation().x()));
+  return carMotion(rate * dt,
+                   std::copysign(next.translation().head<2>().norm(), next.translation().x()));
 }
 }  // namespace
 
@@ -82,14 +83,16 @@ Prediction MotionModel::predictStep(double t) const {
 Pose3 MotionModel::motionOver(double t, double duration) const {
   if (!odometry_.empty()) {
     Pose3 m = odometry_.motion(t, t + duration);
-    if (have_velocity_) m.translation().z() = scaledMotion(velocity_, duration / velocity_dt_).translation().z();
+    if (have_velocity_)
+      m.translation().z() = scaledMotion(velocity_, duration / velocity_dt_).translation().z();
     return m;
   }
   if (!have_velocity_) return Pose3::Identity();
   return scaledMotion(velocity_, duration / velocity_dt_);
 }
 
-bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const {
+bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result,
+                                const Prediction& step) const {
   return plausible(pred, result, cfg_, step.dt, step.speed_mps) &&
          (odometry_.empty() || plausibleWithOdometry(pred, result, cfg_, step.dt));
 }
@@ -114,7 +117,8 @@ Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {
   return evaluate::levelled(T_world, a->roll_rad, a->pitch_rad, cfg_.odometry.imu_tilt_weight);
 }
 
-void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world, double dt) {
+void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
+                         const Pose3& T_world, double dt) {
   if (outcome != Outcome::Registered || !consecutive) last_rate_.reset();
   if (outcome == Outcome::Failed && have_velocity_) {
     velocity_.linear() = scaledMotion(velocity_, cfg_.odometry.failed_turn_decay).linear();
@@ -132,13 +136,15 @@ void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
     have_velocity_ = true;
     // A wrong pose must not make the prediction spin on: clamp to what a car can turn.
     const double angle = rotationAngle(velocity_);
-    const double max_angle = maxTurnRate(cfg_, velocity_.translation().norm() / velocity_dt_) * velocity_dt_;
+    const double max_angle =
+        maxTurnRate(cfg_, velocity_.translation().norm() / velocity_dt_) * velocity_dt_;
     if (angle > max_angle) velocity_.linear() = scaledMotion(velocity_, max_angle / angle).linear();
   }
 }
 
 double MotionModel::turnRateDegPerS() const {
-  if (!odometry_.empty() && started_) return std::abs(odometry_.yawRate(t_last_)) * 180.0 / std::numbers::pi;
+  if (!odometry_.empty() && started_)
+    return std::abs(odometry_.yawRate(t_last_)) * 180.0 / std::numbers::pi;
   if (!have_velocity_) return 0.0;
   return rotationAngle(velocity_) / velocity_dt_ * 180.0 / std::numbers::pi;
 }

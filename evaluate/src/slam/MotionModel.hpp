@@ -23,7 +23,8 @@ struct Prediction {
 class MotionModel {
  public:
   /// Before the first frame the model stands at `T_world_first`.
-  MotionModel(const Config& cfg, const Pose3& T_world_first) : cfg_(cfg), T_world_last_(T_world_first) {}
+  MotionModel(const Config& cfg, const Pose3& T_world_first)
+      : cfg_(cfg), T_world_last_(T_world_first) {}
 
   void setOdometry(WheelOdometry odometry) { odometry_ = std::move(odometry); }
   void setInitialMotion(const Pose3& T_first_second, double dt_s);
@@ -49,7 +50,8 @@ class MotionModel {
   /// Updates the velocity from a registered scan that directly follows the last good one
   /// (`consecutive`): T_good -> T_world over dt; a failed scan keeps the speed and lets the turn
   /// fade; a relocalised one is a correction, not motion (straight ahead at the same speed).
-  void update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world, double dt);
+  void update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world,
+              double dt);
   /// Records the pose the frame at t ended with (the next prediction starts there).
   void recordFrame(double t, const Pose3& T_world);
 

@@ -18,20 +18,23 @@ std::vector<Pose3> hypotheses(const Pose3& pred, bool have_velocity, double yaw_
     const int n = static_cast<int>(std::floor(360.0 / step + 1e-9));
     for (int k = 0; k < n; ++k) {
       Pose3 h = pred;
-      h.linear() = pred.rotation() *
-                   Eigen::AngleAxisd(k * step * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+      h.linear() =
+          pred.rotation() *
+          Eigen::AngleAxisd(k * step * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
       hyp.push_back(h);
     }
   } else {
-    for (int k : {0, -1, 1, -2, 2, -3, 3, -4, 4}) hyp.push_back(pred * Eigen::Translation3d(k * 1.0, 0.0, 0.0));
+    for (int k : {0, -1, 1, -2, 2, -3, 3, -4, 4})
+      hyp.push_back(pred * Eigen::Translation3d(k * 1.0, 0.0, 0.0));
   }
   return hyp;
 }
 
 }  // namespace
 
-std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const PreparedScan& scan, const Pose3& pred,
-                                         bool have_velocity, const AlignOptions& fine, int failed_inliers,
+std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const PreparedScan& scan,
+                                         const Pose3& pred, bool have_velocity,
+                                         const AlignOptions& fine, int failed_inliers,
                                          const Config& cfg) {
   const RelocaliseConfig& c = cfg.relocalise;
   const int cap = std::max(50, c.max_points);
@@ -56,7 +59,8 @@ std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const Prep
   // (wider basin than the failed registration) must beat that registration's inliers.
   if (best != 0 && best_inl < 1.5 * inl_ref + 20) return std::nullopt;
   const AlignResult m = alignFeatures(local_map, scan.src_edges, scan.src_planes, best_T, fine);
-  if (m.edge_matches < cfg.mapping.min_edge_features || m.plane_matches < cfg.mapping.min_plane_features)
+  if (m.edge_matches < cfg.mapping.min_edge_features ||
+      m.plane_matches < cfg.mapping.min_plane_features)
     return std::nullopt;
   if (best == 0 && m.inliers < 1.5 * failed_inliers + 20) return std::nullopt;
   logDebug("relocalised: inliers " + std::to_string(best_inl) + " vs " + std::to_string(inl_ref));

@@ -28,7 +28,8 @@ std::vector<int> ScanToMap::inReach(const KeyframeGraph& graph) const {
   std::vector<int> want;
   const int n = static_cast<int>(graph.size());
   for (int k = std::max(0, n - c.local_map_keyframes); k < n; ++k)
-    if ((graph.at(static_cast<std::size_t>(k)).T_world.translation() - here).norm() <= c.local_map_radius_m)
+    if ((graph.at(static_cast<std::size_t>(k)).T_world.translation() - here).norm() <=
+        c.local_map_radius_m)
       want.push_back(k);
   return want;
 }
@@ -81,7 +82,8 @@ Pose3 ScanToMap::coarse(const PreparedScan& scan, const Pose3& init, const Align
   o.max_nn_m = c.coarse_nn_m;
   o.iterations = cfg_.relocalise.iterations;
   o.degenerate_eig = 0;
-  const AlignResult r = alignFeatures(map_, capped(scan.src_edges, cap / 4), capped(scan.src_planes, cap), init, o);
+  const AlignResult r =
+      alignFeatures(map_, capped(scan.src_edges, cap / 4), capped(scan.src_planes, cap), init, o);
   if (r.edge_matches >= c.min_edge_features && r.plane_matches >= c.min_plane_features &&
       motion.plausibleStep(step.T_world, r.T_target_source, step))
     return r.T_target_source;

@@ -35,7 +35,8 @@ class ScanToMap {
     return alignFeatures(map_, scan.src_edges, scan.src_planes, start, fine);
   }
   /// The planar features alone (an open street: they still fix height, roll and pitch).
-  AlignResult alignPlanes(const PreparedScan& scan, const Pose3& start, const AlignOptions& o) const {
+  AlignResult alignPlanes(const PreparedScan& scan, const Pose3& start,
+                          const AlignOptions& o) const {
     return alignFeatures(map_, {}, scan.src_planes, start, o);
   }
 
@@ -49,10 +50,10 @@ class ScanToMap {
   void put(const KeyframeGraph& graph, const std::vector<int>& want);
 
   const Config& cfg_;
-  VoxelCells edge_cells_, plane_cells_;     ///< the local map's voxels (mapping.*_voxel_m)
-  std::map<int, InMap> in_map_;              ///< keyframe index -> its part of the local map
-  FeatureMap map_;                           ///< world frame
-  Vec3 built_at_ = Vec3::Constant(1e18);     ///< where the local map was last rebuilt
+  VoxelCells edge_cells_, plane_cells_;   ///< the local map's voxels (mapping.*_voxel_m)
+  std::map<int, InMap> in_map_;           ///< keyframe index -> its part of the local map
+  FeatureMap map_;                        ///< world frame
+  Vec3 built_at_ = Vec3::Constant(1e18);  ///< where the local map was last rebuilt
 };
 
 }  // namespace slamroute::evaluate::slam

@@ -19,7 +19,8 @@ void VoxelCells::add(const Cloud& pts) {
 void VoxelCells::remove(const Cloud& pts) {
   for (const auto& p : pts) {
     const auto it = cells_.find(voxelKey(p, inv_));
-    if (it == cells_.end()) throw std::logic_error("VoxelCells::remove: a point that was never added");
+    if (it == cells_.end())
+      throw std::logic_error("VoxelCells::remove: a point that was never added");
     if (--it->second.n == 0) {
       cells_.erase(it);
     } else {

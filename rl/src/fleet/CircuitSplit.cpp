@@ -20,14 +20,17 @@ struct Leg {
 
 /// Leg costs along one circuit, for the cheapest depot of each leg.
 struct LegCosts {
-  std::vector<double> prefix;       ///< prefix[i] = length of circuit[0..i)
-  std::vector<double> in, out;      ///< per position: min over depots (approach / return)
-  double cost(int a, int b) const { return in[sz(a)] + prefix[sz(b + 1)] - prefix[sz(a + 1)] + out[sz(b)]; }
+  std::vector<double> prefix;   ///< prefix[i] = length of circuit[0..i)
+  std::vector<double> in, out;  ///< per position: min over depots (approach / return)
+  double cost(int a, int b) const {
+    return in[sz(a)] + prefix[sz(b + 1)] - prefix[sz(a + 1)] + out[sz(b)];
+  }
 };
 
 LegCosts legCosts(const FleetContext& ctx, const std::vector<int>& circuit) {
   const double inf = std::numeric_limits<double>::infinity();
-  LegCosts c{{0.0}, std::vector<double>(circuit.size(), inf), std::vector<double>(circuit.size(), inf)};
+  LegCosts c{
+      {0.0}, std::vector<double>(circuit.size(), inf), std::vector<double>(circuit.size(), inf)};
   for (std::size_t i = 0; i < circuit.size(); ++i) {
     const int e = circuit[i];
     c.prefix.push_back(c.prefix.back() + ctx.pg.len[sz(e)]);
@@ -61,8 +64,10 @@ std::vector<Leg> cheapestLegs(const LegCosts& c, int k) {
   for (int it = 0; it < 60 && hi - lo > 1e-3; ++it) {
     const double mid = 0.5 * (lo + hi);
     std::vector<Leg> legs = greedyLegs(c, mid);
-    if (!legs.empty() && static_cast<int>(legs.size()) <= k) best = std::move(legs), hi = mid;
-    else lo = mid;
+    if (!legs.empty() && static_cast<int>(legs.size()) <= k)
+      best = std::move(legs), hi = mid;
+    else
+      lo = mid;
   }
   while (static_cast<int>(best.size()) < k) {  // idle vehicles take half of the longest leg
     auto longest = std::max_element(best.begin(), best.end(), [&](const Leg& x, const Leg& y) {
@@ -86,7 +91,8 @@ std::vector<int> legRoute(const FleetContext& ctx, const std::vector<int>& circu
   std::vector<int> route = to->edges;
   route.insert(route.end(), circuit.begin() + leg.first + 1, circuit.begin() + leg.last + 1);
   if (ctx.pg.v[sz(last)] != depot) {
-    const auto back = ctx.paths.toNearest(last, -1, [&](int e) { return ctx.pg.v[sz(e)] == depot; });
+    const auto back =
+        ctx.paths.toNearest(last, -1, [&](int e) { return ctx.pg.v[sz(e)] == depot; });
     if (!back) throw std::runtime_error("fleet: a leg cannot return to its depot");
     route.insert(route.end(), back->edges.begin(), back->edges.end());
   }

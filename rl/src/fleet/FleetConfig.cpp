@@ -1,6 +1,6 @@
 // FleetConfig::validate(): a fleet needs at least one vehicle and a known strategy.
-#include "slamroute/core/ConfigCheck.hpp"
 #include "slamroute/rl/FleetConfig.hpp"
+#include "slamroute/core/ConfigCheck.hpp"
 
 namespace slamroute::rl {
 

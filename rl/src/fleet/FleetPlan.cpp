@@ -50,8 +50,8 @@ std::vector<int> localDepots(const PlanGraph& pg, const Config& cfg, std::vector
                                 std::to_string(k) + " vehicles (give one, or one per vehicle)");
   std::vector<int> local;
   for (int node : nodes) {
-    const int l = node >= 0 && node < static_cast<int>(pg.node_local.size())
-                      ? pg.node_local[sz(node)] : -1;
+    const int l =
+        node >= 0 && node < static_cast<int>(pg.node_local.size()) ? pg.node_local[sz(node)] : -1;
     if (l < 0)
       throw std::invalid_argument(where + ": depot node " + std::to_string(node) +
                                   " is not in the legally drivable part of the graph");
@@ -143,8 +143,7 @@ FleetRoute planFleet(const RoadGraph& g, const Config& cfg, const std::vector<in
                           ? fleet::partitionRoutes(ctx, cfg.fleet, seed, circuit, stats)
                           : fleet::splitCircuitRoutes(ctx, circuit, stats);
   FleetRoute f = summarise(ctx, cfg, seed, routes, fleet::routeLength(pg, circuit));
-  f.planning_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  f.planning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   f.extra_json = nlohmann::json{{"makespan_before_moves_m", stats.makespan_before_moves_m},
                                 {"balance_moves", stats.balance_moves},
                                 {"legs", stats.legs},

@@ -35,12 +35,14 @@ struct Layout {
 
 Layout layoutOf(const FleetContext& ctx) {
   const PlanGraph& pg = ctx.pg;
-  Layout s{std::vector<Point2>(sz(pg.num_streets), Point2::Zero()),
-           std::vector<Point2>(sz(pg.m)), std::vector<std::vector<int>>(sz(pg.n)),
+  Layout s{std::vector<Point2>(sz(pg.num_streets), Point2::Zero()), std::vector<Point2>(sz(pg.m)),
+           std::vector<std::vector<int>>(sz(pg.n)),
            std::vector<std::vector<int>>(sz(pg.num_streets))};
   std::vector<int> count(sz(pg.num_streets), 0);
   for (int e = 0; e < pg.m; ++e) {
-    const auto pos = [&](int node) { return ctx.g.nodes[sz(pg.node_orig[sz(node)])].pos.head<2>(); };
+    const auto pos = [&](int node) {
+      return ctx.g.nodes[sz(pg.node_orig[sz(node)])].pos.head<2>();
+    };
     s.edge_midpoint[sz(e)] = 0.5 * (pos(pg.u[sz(e)]) + pos(pg.v[sz(e)]));
     s.street_midpoint[sz(pg.street[sz(e)])] += s.edge_midpoint[sz(e)];
     ++count[sz(pg.street[sz(e)])];
@@ -82,9 +84,9 @@ std::vector<int> kMeansParts(const FleetContext& ctx, const FleetConfig& cfg, st
                              const Layout& layout) {
   std::vector<double> weight(ctx.pg.street_len.begin(), ctx.pg.street_len.end());
   for (double& w : weight) w = std::max(w, 1e-3);
-  const KMeansResult km = kMeans(layout.street_midpoint, ctx.vehicles(),
-                                 {.seed = seed, .maxIterations = cfg.kmeans_iterations,
-                                  .weight = weight});
+  const KMeansResult km =
+      kMeans(layout.street_midpoint, ctx.vehicles(),
+             {.seed = seed, .maxIterations = cfg.kmeans_iterations, .weight = weight});
   std::vector<int> cluster_of_edge;
   for (int e = 0; e < ctx.pg.m; ++e) cluster_of_edge.push_back(km.label[sz(ctx.pg.street[sz(e)])]);
   const std::vector<int> cluster_of_vehicle = assignToVehicles(approachCosts(ctx, cluster_of_edge));

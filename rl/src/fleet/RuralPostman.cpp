@@ -3,9 +3,10 @@
 //     passes the depot exactly once (LEMON NetworkSimplex). The depot is one extra vertex: arcs
 //     from it to the edges leaving the depot junction, arcs to it from the edges arriving there.
 //  2. Trails of that circulation that meet at a junction are merged for free by swapping their
-//     successors where both new turns are allowed. A part still apart from the depot's part is joined by the shortest legal
-//     closed walk from it to the depot's part and back: the walk's edges become required and the
-//     circulation is solved again (a few rounds); what still stays apart gets the walk added.
+//     successors where both new turns are allowed. A part still apart from the depot's part is
+//     joined by the shortest legal closed walk from it to the depot's part and back: the walk's
+//     edges become required and the circulation is solved again (a few rounds); what still stays
+//     apart gets the walk added.
 //  3. Hierholzer's Euler circuit from the depot vertex gives the edge sequence.
 // The same line-graph circulation idea as the single-vehicle postman, with lower bounds only on
 // the required edges and a depot vertex, so a vehicle leaves its depot and comes back to it.
@@ -58,8 +59,7 @@ int turnIndex(const PlanGraph& pg, int e, int f) {
   return k;
 }
 
-Circulation cheapestCirculation(const PlanGraph& pg, const std::vector<char>& required,
-                                int depot) {
+Circulation cheapestCirculation(const PlanGraph& pg, const std::vector<char>& required, int depot) {
   using G = lemon::SmartDigraph;
   using Simplex = lemon::NetworkSimplex<G, long long, long long>;
   G lg;
@@ -87,8 +87,9 @@ Circulation cheapestCirculation(const PlanGraph& pg, const std::vector<char>& re
   Simplex ns(lg);
   ns.lowerMap(lower).upperMap(upper).costMap(cost);
   if (ns.run() != Simplex::OPTIMAL)
-    throw std::runtime_error("rural postman: the required streets cannot be driven in a legal "
-                             "round trip from the depot");
+    throw std::runtime_error(
+        "rural postman: the required streets cannot be driven in a legal "
+        "round trip from the depot");
   Circulation c{std::vector<int>(turn.size()), std::vector<int>(sz(pg.m)),
                 std::vector<int>(sz(pg.m))};
   for (std::size_t k = 0; k < turn.size(); ++k) c.turn[k] = static_cast<int>(ns.flow(turn[k]));
@@ -130,8 +131,10 @@ std::vector<Successor> successorsAt(const PlanGraph& pg, const Circulation& c,
 }
 
 void moveArc(const PlanGraph& pg, Circulation& c, int from, int to, int delta) {
-  if (to < 0) c.arrive[sz(from)] += delta;
-  else c.turn[sz(turnIndex(pg, from, to))] += delta;
+  if (to < 0)
+    c.arrive[sz(from)] += delta;
+  else
+    c.turn[sz(turnIndex(pg, from, to))] += delta;
 }
 
 /// At one junction: two trails that pass it, a -> a2 and b -> b2, become one when both a -> b2
@@ -176,9 +179,8 @@ std::vector<int> closedWalkToDepotPart(const PlanGraph& pg, const TurnPaths& pat
   for (int c = c0, tried = 0; c < pg.m && tried < 8; ++c) {
     if (!used[sz(c)] || parts.find(c) != part) continue;
     ++tried;
-    const auto there = paths.toNearest(c, -1, [&](int e) {
-      return used[sz(e)] && parts.find(e) == home;
-    });
+    const auto there =
+        paths.toNearest(c, -1, [&](int e) { return used[sz(e)] && parts.find(e) == home; });
     if (!there) continue;
     const auto back = paths.toNearest(there->edges.back(), -1, [c](int e) { return e == c; });
     if (!back || there->length_m + back->length_m >= bestLength) continue;
@@ -249,11 +251,15 @@ std::vector<int> eulerRoute(const PlanGraph& pg, Circulation c) {
     } else {
       int& k = turnPtr[sz(x)];
       while (k < pg.nextEnd(x) && c.turn[sz(k)] == 0) ++k;
-      if (k < pg.nextEnd(x)) --c.turn[sz(k)], y = pg.next[sz(k)];
-      else if (c.arrive[sz(x)] > 0) --c.arrive[sz(x)], y = depotVertex;
+      if (k < pg.nextEnd(x))
+        --c.turn[sz(k)], y = pg.next[sz(k)];
+      else if (c.arrive[sz(x)] > 0)
+        --c.arrive[sz(x)], y = depotVertex;
     }
-    if (y >= 0) stack.push_back(y);
-    else circuit.push_back(x), stack.pop_back();
+    if (y >= 0)
+      stack.push_back(y);
+    else
+      circuit.push_back(x), stack.pop_back();
   }
   for (int k : c.turn)
     if (k != 0) throw std::logic_error("rural postman: the Euler circuit left turns unused");

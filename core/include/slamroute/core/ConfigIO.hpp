@@ -106,8 +106,7 @@ class Loader {
   void moved(const char* old_key, const char* new_key) { moved_.emplace_back(old_key, new_key); }
   void checkUnknown() const {
     for (const auto& kv : node_) {
-      if (!kv.first.IsScalar())
-        throw std::invalid_argument(where_ + ": a key is not a plain name");
+      if (!kv.first.IsScalar()) throw std::invalid_argument(where_ + ": a key is not a plain name");
       const auto k = kv.first.as<std::string>();
       bool known = false;
       for (const auto& s : seen_) known = known || s == k;

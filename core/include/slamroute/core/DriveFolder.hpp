@@ -8,6 +8,6 @@ inline constexpr const char* kWorld = "world.yaml";             ///< net path, w
 inline constexpr const char* kWorldMesh = "world.ply";          ///< static world triangle mesh
 inline constexpr const char* kDriveInfo = "drive.json";         ///< route, length, teleports, …
 inline constexpr const char* kScanDir = "scans";                ///< NNNNNN.bin + times.txt
-inline constexpr const char* kOdometry = "odometry.csv";        ///< optional: t,speed_mps,yaw_rate_rad_s
-inline constexpr const char* kOdometrySpec = "odometry.yaml";   ///< optional: its noise figures
+inline constexpr const char* kOdometry = "odometry.csv";  ///< optional: t,speed_mps,yaw_rate_rad_s
+inline constexpr const char* kOdometrySpec = "odometry.yaml";  ///< optional: its noise figures
 }  // namespace slamroute::drive_files

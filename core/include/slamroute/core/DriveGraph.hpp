@@ -22,8 +22,8 @@ struct DriveEdge {
   Polyline shape;
 };
 
-using DriveBGL = boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS,
-                                       DriveVertex, DriveEdge>;
+using DriveBGL =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS, DriveVertex, DriveEdge>;
 
 struct DriveGraph {
   DriveBGL g;
@@ -53,10 +53,10 @@ struct DriveGraph {
 
 /// Summary printed by `slamroute network-info`.
 struct NetworkInfo {
-  std::size_t junctions = 0;         ///< non-internal junctions in the net
-  std::size_t passenger_edges = 0;   ///< non-internal edges open to passenger cars
+  std::size_t junctions = 0;        ///< non-internal junctions in the net
+  std::size_t passenger_edges = 0;  ///< non-internal edges open to passenger cars
   std::size_t lscc_junctions = 0, lscc_edges = 0;
-  double total_length_m = 0.0;       ///< sum of passenger edge lengths
+  double total_length_m = 0.0;  ///< sum of passenger edge lengths
   double lscc_length_m = 0.0;
 };
 NetworkInfo networkInfo(const SumoNet& net);

@@ -11,8 +11,8 @@ namespace slamroute {
 inline constexpr const char* kFleetDriveInfo = "fleet.json";
 
 struct FleetDriveVehicle {
-  std::string id;       ///< SUMO vehicle id (mapper_K)
-  std::string folder;   ///< its drive folder, relative to the fleet folder (vehicle_K)
+  std::string id;      ///< SUMO vehicle id (mapper_K)
+  std::string folder;  ///< its drive folder, relative to the fleet folder (vehicle_K)
   double route_length_m = 0.0;
   double driven_m = 0.0;
   double depart_s = 0.0, arrive_s = 0.0;  ///< simulation times, shared by the fleet

@@ -12,20 +12,20 @@
 namespace slamroute {
 
 struct FleetRoute {
-  std::string strategy;              ///< partition | postman
+  std::string strategy;  ///< partition | postman
   std::uint64_t seed = 0;
-  std::vector<Route> vehicles;       ///< one closed route per vehicle, from its depot
-  std::vector<int> depot_nodes;      ///< per vehicle: road-graph node it leaves and returns to
-  double makespan_m = 0.0;           ///< longest vehicle route
-  double total_length_m = 0.0;       ///< sum of the vehicle routes
-  double balance = 0.0;              ///< makespan / mean route length (1 = perfectly even)
-  double single_route_m = 0.0;       ///< L1: the single-vehicle postman route from depot 0
-  double longest_round_trip_m = 0.0; ///< max over edges of the shortest depot-edge-depot trip
-  double lower_bound_m = 0.0;        ///< max(L1 / K, longest_round_trip_m)
-  double edge_coverage_pct = 0.0;    ///< directed drivable edges driven by some vehicle [%]
+  std::vector<Route> vehicles;          ///< one closed route per vehicle, from its depot
+  std::vector<int> depot_nodes;         ///< per vehicle: road-graph node it leaves and returns to
+  double makespan_m = 0.0;              ///< longest vehicle route
+  double total_length_m = 0.0;          ///< sum of the vehicle routes
+  double balance = 0.0;                 ///< makespan / mean route length (1 = perfectly even)
+  double single_route_m = 0.0;          ///< L1: the single-vehicle postman route from depot 0
+  double longest_round_trip_m = 0.0;    ///< max over edges of the shortest depot-edge-depot trip
+  double lower_bound_m = 0.0;           ///< max(L1 / K, longest_round_trip_m)
+  double edge_coverage_pct = 0.0;       ///< directed drivable edges driven by some vehicle [%]
   double sumo_edge_coverage_pct = 0.0;  ///< directed SUMO edges driven by some vehicle [%]
   double planning_seconds = 0.0;
-  std::string extra_json = "{}";     ///< strategy-specific figures (JSON object)
+  std::string extra_json = "{}";  ///< strategy-specific figures (JSON object)
 
   /// True when `path` is a JSON object with a "vehicles" list (a fleet's route.json).
   static bool isFleetFile(const std::filesystem::path& path);

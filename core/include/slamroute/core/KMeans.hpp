@@ -10,10 +10,10 @@
 namespace slamroute {
 
 struct KMeansResult {
-  std::vector<int> label;        ///< per point: its cluster in [0, k)
-  std::vector<Point2> centre;    ///< per cluster: weighted mean of its points
-  double inertia = 0.0;          ///< sum of weight * squared distance to the own centre (m^2)
-  int iterations = 0;            ///< Lloyd iterations run
+  std::vector<int> label;      ///< per point: its cluster in [0, k)
+  std::vector<Point2> centre;  ///< per cluster: weighted mean of its points
+  double inertia = 0.0;        ///< sum of weight * squared distance to the own centre (m^2)
+  int iterations = 0;          ///< Lloyd iterations run
 };
 
 struct KMeansOptions {

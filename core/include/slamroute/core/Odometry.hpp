@@ -64,9 +64,9 @@ class WheelOdometry {
 /// estimate from the standstill confirmed before it subtracted (causal, as on the vehicle), once
 /// at least `min_standstill_s` of it was seen; before that the readings are kept.
 struct GyroBiasResult {
-  WheelOdometry odometry;        ///< corrected
-  double standstill_s = 0.0;     ///< standstill time seen over the whole drive [s]
-  double final_bias_rad_s = 0.0; ///< the estimate at the end [rad/s]
+  WheelOdometry odometry;         ///< corrected
+  double standstill_s = 0.0;      ///< standstill time seen over the whole drive [s]
+  double final_bias_rad_s = 0.0;  ///< the estimate at the end [rad/s]
 };
 GyroBiasResult removeStandstillGyroBias(const WheelOdometry& odo, double standstill_mps = 0.15,
                                         double min_standstill_s = 2.0, double margin_s = 0.6);

@@ -17,9 +17,11 @@ struct OdometrySpec {
 template <class V>
 void visitFields(V& v, OdometrySpec& c) {
   v.field("scale_sigma", c.scale_sigma, "wheel-speed scale error, 1 sigma (0.01 = 1 %)");
-  v.field("speed_noise_mps", c.speed_noise_mps, "wheel-speed white noise per sample, 1 sigma [m/s]");
+  v.field("speed_noise_mps", c.speed_noise_mps,
+          "wheel-speed white noise per sample, 1 sigma [m/s]");
   v.field("gyro_bias_sigma_deg_s", c.gyro_bias_sigma_deg_s, "gyro yaw-rate bias, 1 sigma [deg/s]");
-  v.field("gyro_noise_deg_s", c.gyro_noise_deg_s, "gyro white yaw-rate noise per sample, 1 sigma [deg/s]");
+  v.field("gyro_noise_deg_s", c.gyro_noise_deg_s,
+          "gyro white yaw-rate noise per sample, 1 sigma [deg/s]");
 }
 
 /// Writes odometry.yaml (atomically).

@@ -1,7 +1,8 @@
 #pragma once
 // The road graph every planner works on, and its file format graph.json:
 //   {"nodes":[{"id","x","y","z"}], "edges":[{"id","u","v","length","weight","polyline":[[x,y,z]…],
-//    "sumo_edges":[…], "street"}], "turns": {"<edge id>": [allowed next edge ids…]}, "metadata":{…}}
+//    "sumo_edges":[…], "street"}], "turns": {"<edge id>": [allowed next edge ids…]},
+//    "metadata":{…}}
 // Edges are directed (u -> v). A two-way street is two edges sharing `street`.
 // Node and edge ids equal their index in the vectors.
 // Turn permissions: when `restricted_turns` is true, allowed_next[e] lists the edges one may drive
@@ -26,12 +27,12 @@ struct RoadNode {
 
 struct RoadEdge {
   int id = 0;
-  int u = 0, v = 0;            ///< node ids, travel from u to v
+  int u = 0, v = 0;  ///< node ids, travel from u to v
   double length_m = 0.0;
-  double weight = 1.0;         ///< LiDAR matching quality score from depth images (paper R_A)
-  Polyline polyline;           ///< ordered centreline from u to v
+  double weight = 1.0;  ///< LiDAR matching quality score from depth images (paper R_A)
+  Polyline polyline;    ///< ordered centreline from u to v
   std::vector<std::string> sumo_edges;  ///< SUMO edges driven along this edge, in order
-  int street = -1;             ///< undirected street id shared by both directions
+  int street = -1;                      ///< undirected street id shared by both directions
 };
 
 struct RoadGraph {

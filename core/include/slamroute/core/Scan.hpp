@@ -12,13 +12,13 @@ namespace slamroute {
 
 /// Geometry of a spinning multi-beam LiDAR.
 struct LidarSpec {
-  int channels = 64;               ///< rings
-  double vfov_up_deg = 10.0;       ///< upper edge of the vertical field [deg]
-  double vfov_down_deg = -30.0;    ///< lower edge [deg]
-  int horizontal_samples = 1800;   ///< azimuth steps per revolution
+  int channels = 64;              ///< rings
+  double vfov_up_deg = 10.0;      ///< upper edge of the vertical field [deg]
+  double vfov_down_deg = -30.0;   ///< lower edge [deg]
+  int horizontal_samples = 1800;  ///< azimuth steps per revolution
   double max_range_m = 100.0;
   double min_range_m = 1.0;
-  double mount_height_m = 1.8;     ///< sensor above the road [m]
+  double mount_height_m = 1.8;  ///< sensor above the road [m]
 };
 template <class V>
 void visitFields(V& v, LidarSpec& c) {
@@ -36,13 +36,13 @@ LidarSpec lidarPreset(const std::string& name);
 struct ScanPoint {
   float x = 0, y = 0, z = 0;  ///< sensor frame at the point's own firing time [m]
   float intensity = 0;
-  int ring = -1;              ///< -1 when unknown (e.g. read from KITTI .bin)
-  float dt = 0;               ///< firing time after Scan::t [s] (0 for an instantaneous scan)
+  int ring = -1;  ///< -1 when unknown (e.g. read from KITTI .bin)
+  float dt = 0;   ///< firing time after Scan::t [s] (0 for an instantaneous scan)
 };
 struct Scan {
-  double t = 0.0;               ///< time of the sweep's start: the frame the scan is deskewed to [s]
+  double t = 0.0;  ///< time of the sweep's start: the frame the scan is deskewed to [s]
   std::vector<ScanPoint> points;
-  bool has_point_times = false; ///< the points carry their firing times (ScanPoint::dt)
+  bool has_point_times = false;  ///< the points carry their firing times (ScanPoint::dt)
 };
 
 class ScanSource {

@@ -14,13 +14,13 @@
 namespace slamroute {
 
 struct SumoCoverage {
-  int edges_driven = 0, edges_total = 0;          ///< drivable directed SUMO edges
-  double length_driven_m = 0.0;                   ///< their length, each edge once [m]
-  double length_total_m = 0.0;                    ///< length of every drivable edge [m]
-  double edges_pct = 0.0, length_pct = 0.0;       ///< driven / total [%]
-  double route_on_edges_m = 0.0;                  ///< route's SUMO edges, repeats counted [m]
-  double route_in_junctions_m = 0.0;              ///< internal lanes between them [m]
-  int turns_without_connection = 0;               ///< consecutive pairs SUMO does not join
+  int edges_driven = 0, edges_total = 0;     ///< drivable directed SUMO edges
+  double length_driven_m = 0.0;              ///< their length, each edge once [m]
+  double length_total_m = 0.0;               ///< length of every drivable edge [m]
+  double edges_pct = 0.0, length_pct = 0.0;  ///< driven / total [%]
+  double route_on_edges_m = 0.0;             ///< route's SUMO edges, repeats counted [m]
+  double route_in_junctions_m = 0.0;         ///< internal lanes between them [m]
+  int turns_without_connection = 0;          ///< consecutive pairs SUMO does not join
 
   double routeLengthM() const { return route_on_edges_m + route_in_junctions_m; }
 };

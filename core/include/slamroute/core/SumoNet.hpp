@@ -13,7 +13,7 @@ namespace slamroute {
 
 struct SumoJunction {
   std::string id;
-  std::string type;  ///< priority, traffic_light, dead_end, internal, ...
+  std::string type;             ///< priority, traffic_light, dead_end, internal, ...
   Point3 pos = Point3::Zero();  ///< x, y, z (z = 0 when the net has none) [m]
   std::vector<std::string> inc_lanes;
 };
@@ -34,7 +34,7 @@ struct SumoEdge {
   std::string from, to;  ///< junction ids (empty for internal edges)
   std::string function;  ///< "" (normal), internal, connector, walkingarea, crossing
   std::string type;
-  std::string name;      ///< street name (netconvert's `name`, from OSM); may be empty
+  std::string name;  ///< street name (netconvert's `name`, from OSM); may be empty
   int priority = -1;
   std::vector<SumoLane> lanes;
   Polyline shape;  ///< the centre lane's shape (travel direction)
@@ -47,8 +47,8 @@ struct SumoEdge {
 struct SumoConnection {
   std::string from, to;  ///< edge ids
   int from_lane = 0, to_lane = 0;
-  std::string dir;    ///< s, l, r, t (U-turn), L, R, invalid
-  std::string via;    ///< internal lane id, may be empty
+  std::string dir;            ///< s, l, r, t (U-turn), L, R, invalid
+  std::string via;            ///< internal lane id, may be empty
   double via_length_m = 0.0;  ///< internal lanes from `via` to the next normal edge [m]
 };
 
@@ -65,9 +65,9 @@ struct SumoLocation {
 struct SumoNet {
   std::filesystem::path source;
   SumoLocation location;
-  std::vector<SumoJunction> junctions;           ///< non-internal junctions
-  std::vector<SumoEdge> edges;                   ///< non-internal edges only
-  std::vector<SumoConnection> connections;       ///< between non-internal edges
+  std::vector<SumoJunction> junctions;      ///< non-internal junctions
+  std::vector<SumoEdge> edges;              ///< non-internal edges only
+  std::vector<SumoConnection> connections;  ///< between non-internal edges
   std::vector<SumoRoundabout> roundabouts;
   std::unordered_map<std::string, std::size_t> junction_index, edge_index;
 
@@ -86,6 +86,7 @@ struct SumoNet {
 };
 
 /// True when the vehicle class list semantics of a lane admit "passenger".
-bool passengerAllowed(const std::vector<std::string>& allow, const std::vector<std::string>& disallow);
+bool passengerAllowed(const std::vector<std::string>& allow,
+                      const std::vector<std::string>& disallow);
 
 }  // namespace slamroute

@@ -8,7 +8,7 @@
 namespace slamroute {
 
 struct StampedPose {
-  double t = 0.0;                            ///< seconds
+  double t = 0.0;  ///< seconds
   Pose3 T_world_body = Pose3::Identity();
 };
 using Trajectory = std::vector<StampedPose>;

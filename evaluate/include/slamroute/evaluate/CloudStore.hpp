@@ -4,9 +4,9 @@
 // 0.2 m cloud is ~47 kB, a 75 km drive has ~36,000 keyframes, and with the clouds on disk the
 // run's resident memory does not grow by them (the page cache serves the reads; the file
 // disappears with the process, even when it is killed).
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <cstdint>
-#include <Eigen/Geometry>
 #include <filesystem>
 #include <string>
 #include <vector>

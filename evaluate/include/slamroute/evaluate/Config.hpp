@@ -20,8 +20,8 @@ struct InputConfig {
   /// drives U-turns at up to ~90 deg/s, 18 deg between scans at 5 Hz, beyond local registration.
   double dense_turn_rate_deg_s = 10.0;
   double dense_after_failure_s = 1.0;  ///< ... and for this long after a failed scan [s]
-  double start_s = 0.0;  ///< evaluate only scans from this drive time on [s]
-  double end_s = 0.0;    ///< ... up to this drive time; 0 = to the end [s]
+  double start_s = 0.0;                ///< evaluate only scans from this drive time on [s]
+  double end_s = 0.0;                  ///< ... up to this drive time; 0 = to the end [s]
 };
 
 /// Range image, ground segmentation, clustering and features (LeGO-LOAM "imageProjection" and
@@ -31,49 +31,49 @@ struct FeaturesConfig {
   /// Move every point to the sweep's start with the predicted motion over the sweep, when the
   /// scan carries point times (a spinning LiDAR fires its columns over 0.1 s while driving).
   bool deskew = true;
-  bool use_ring_field = true;        ///< use ScanPoint.ring when >= 0, else ring from elevation
-  bool ring_zero_is_bottom = true;   ///< ring 0 is the lowest beam (KITTI/Velodyne order)
-  double min_range_m = 1.0;          ///< points closer than this are dropped [m]
-  int min_valid_points = 500;        ///< fewer valid points: the scan is unusable
+  bool use_ring_field = true;       ///< use ScanPoint.ring when >= 0, else ring from elevation
+  bool ring_zero_is_bottom = true;  ///< ring 0 is the lowest beam (KITTI/Velodyne order)
+  double min_range_m = 1.0;         ///< points closer than this are dropped [m]
+  int min_valid_points = 500;       ///< fewer valid points: the scan is unusable
   double ground_max_elevation_deg = -1.0;  ///< only beams below this elevation can be ground [deg]
-  double ground_angle_deg = 10.0;    ///< max slope between vertically adjacent points [deg]
-  double sensor_mount_angle_deg = 0.0;  ///< sensor pitch on the vehicle [deg]
-  double segment_theta_deg = 60.0;   ///< BFS joins neighbours whose beta angle exceeds this [deg]
-  int min_cluster_points = 30;       ///< clusters at least this big are kept
-  int min_line_cluster_points = 5;   ///< ... or at least this big spanning min_cluster_rings rings
-  int min_cluster_rings = 3;         ///< rings a small (pole-like) cluster must span
-  int ground_column_stride = 5;      ///< keep every n-th ground point for features (LeGO: 5)
-  int feature_sectors = 6;           ///< sectors per ring
-  int curvature_half_window = 5;     ///< neighbours on each side for the curvature
-  double edge_curvature = 0.1;       ///< curvature above this: edge candidate
-  double surf_curvature = 0.1;       ///< curvature below this: planar candidate
-  int sharp_per_sector = 2;          ///< sharpest points per sector (scan-to-scan source)
-  int less_sharp_per_sector = 20;    ///< edge points per sector (map / scan-to-scan target)
-  int flat_per_sector = 4;           ///< flattest ground points per sector (scan-to-scan source)
-  double occlusion_gap_m = 0.3;      ///< range jump marking occluded neighbours [m]
-  double less_flat_voxel_m = 0.4;    ///< voxel size for the less-flat cloud [m]
+  double ground_angle_deg = 10.0;          ///< max slope between vertically adjacent points [deg]
+  double sensor_mount_angle_deg = 0.0;     ///< sensor pitch on the vehicle [deg]
+  double segment_theta_deg = 60.0;  ///< BFS joins neighbours whose beta angle exceeds this [deg]
+  int min_cluster_points = 30;      ///< clusters at least this big are kept
+  int min_line_cluster_points = 5;  ///< ... or at least this big spanning min_cluster_rings rings
+  int min_cluster_rings = 3;        ///< rings a small (pole-like) cluster must span
+  int ground_column_stride = 5;     ///< keep every n-th ground point for features (LeGO: 5)
+  int feature_sectors = 6;          ///< sectors per ring
+  int curvature_half_window = 5;    ///< neighbours on each side for the curvature
+  double edge_curvature = 0.1;      ///< curvature above this: edge candidate
+  double surf_curvature = 0.1;      ///< curvature below this: planar candidate
+  int sharp_per_sector = 2;         ///< sharpest points per sector (scan-to-scan source)
+  int less_sharp_per_sector = 20;   ///< edge points per sector (map / scan-to-scan target)
+  int flat_per_sector = 4;          ///< flattest ground points per sector (scan-to-scan source)
+  double occlusion_gap_m = 0.3;     ///< range jump marking occluded neighbours [m]
+  double less_flat_voxel_m = 0.4;   ///< voxel size for the less-flat cloud [m]
 };
 
 /// The motion model: prediction between scans (wheel odometry + gyro, or constant velocity),
 /// scan-to-scan registration and the bounds a registration is checked against.
 struct OdometryConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
+  void validate() const;           ///< values that cannot work: std::invalid_argument (Config.cpp)
   bool use_wheel_odometry = true;  ///< predict with the drive's odometry.csv when it has one
   /// Gyro bias from the drive's stops (core removeStandstillGyroBias): wheel speed below this
   /// is standstill (3 sigma of the simulated wheel-speed noise); 0 = keep the gyro as recorded.
   double gyro_standstill_mps = 0.15;
   double gyro_min_standstill_s = 2.0;     ///< standstill needed before the bias is trusted [s]
   double gyro_standstill_margin_s = 0.6;  ///< ... counted only this long after / before motion [s]
-  bool two_step = true;         ///< planar -> z/roll/pitch, then edges -> x/y/yaw (LeGO)
-  int iterations = 15;          ///< scan-to-scan Gauss-Newton iterations per step
-  double max_nn_m = 1.5;        ///< scan-to-scan correspondence radius [m]
-  double max_step_change_m = 2.0;    ///< a registration may move the prediction at most [m]
-  double max_step_change_deg = 10.0; ///< ... and [deg] per 0.1 s; larger: a failure
+  bool two_step = true;                   ///< planar -> z/roll/pitch, then edges -> x/y/yaw (LeGO)
+  int iterations = 15;                    ///< scan-to-scan Gauss-Newton iterations per step
+  double max_nn_m = 1.5;                  ///< scan-to-scan correspondence radius [m]
+  double max_step_change_m = 2.0;         ///< a registration may move the prediction at most [m]
+  double max_step_change_deg = 10.0;      ///< ... and [deg] per 0.1 s; larger: a failure
   /// Car dynamics: the turn rate is at most this over the speed (6 m/s^2: 25 deg/s at 50 km/h);
   /// a registration turning further from the prediction is a failure (a passing car pulled a
   /// scan 14 deg off on a straight street). 0 = off [m/s^2]
   double max_lateral_accel_mps2 = 6.0;
-  double rotation_slack_deg = 1.5;   ///< allowed on top of the dynamic bound per scan [deg]
+  double rotation_slack_deg = 1.5;  ///< allowed on top of the dynamic bound per scan [deg]
   /// With wheel odometry + gyro a registration may move the odometry's prediction at most this
   /// far in x/y and yaw per 0.1 s (the gyro drifts ~0.05 deg/s, the wheels ~1 %) [m], [deg]
   double wheel_translation_slack_m = 0.25;
@@ -112,17 +112,17 @@ struct OdometryConfig {
 
 /// Scan-to-map registration against the local map of recent keyframes, and keyframe selection.
 struct MappingConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
-  int iterations = 10;           ///< scan-to-map Gauss-Newton iterations
-  int reassociate_every = 2;     ///< new neighbours / line and plane fits every n-th iteration
-  double max_nn_m = 1.0;         ///< scan-to-map correspondence radius [m]
+  void validate() const;      ///< values that cannot work: std::invalid_argument (Config.cpp)
+  int iterations = 10;        ///< scan-to-map Gauss-Newton iterations
+  int reassociate_every = 2;  ///< new neighbours / line and plane fits every n-th iteration
+  double max_nn_m = 1.0;      ///< scan-to-map correspondence radius [m]
   /// > 0: a coarse stage with this radius first when scans are more than 0.15 s apart (stride-2
   /// turns); at 10 Hz it only risks a wrong minimum after a heading jump [m]
   double coarse_nn_m = 3.0;
-  double edge_voxel_m = 0.2;     ///< voxel for edge features (source and local map) [m]
-  double surf_voxel_m = 0.4;     ///< voxel for planar features (source and local map) [m]
-  int max_source_edges = 3000;   ///< edge features per scan used for mapping (strided)
-  int max_source_planes = 6000;  ///< planar features per scan used for mapping (strided)
+  double edge_voxel_m = 0.2;         ///< voxel for edge features (source and local map) [m]
+  double surf_voxel_m = 0.4;         ///< voxel for planar features (source and local map) [m]
+  int max_source_edges = 3000;       ///< edge features per scan used for mapping (strided)
+  int max_source_planes = 6000;      ///< planar features per scan used for mapping (strided)
   double local_map_update_m = 2.0;   ///< rebuild the local map after this much motion [m]
   int local_map_keyframes = 40;      ///< recent keyframes in the local map
   double local_map_radius_m = 60.0;  ///< and only those within this radius [m]
@@ -144,18 +144,18 @@ struct MappingConfig {
 /// a junction's internal lane with heading jumps of up to ~100 deg within one scan; local
 /// registration cannot converge from there, so yaw hypotheses around the prediction are tried.
 struct RelocaliseConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
-  bool enabled = true;          ///< yaw search when scan-to-map fails (without wheel odometry)
-  double inlier_drop = 0.5;     ///< ... or when the inliers fall below this share of the recent level
-  double ref_decay = 0.8;       ///< the recent level decays by this per scan
-  double yaw_step_deg = 15.0;   ///< spacing of the yaw hypotheses over 360 deg [deg]
-  int iterations = 6;           ///< Gauss-Newton iterations per hypothesis
-  int max_points = 1500;        ///< source features per hypothesis (strided)
+  void validate() const;     ///< values that cannot work: std::invalid_argument (Config.cpp)
+  bool enabled = true;       ///< yaw search when scan-to-map fails (without wheel odometry)
+  double inlier_drop = 0.5;  ///< ... or when the inliers fall below this share of the recent level
+  double ref_decay = 0.8;    ///< the recent level decays by this per scan
+  double yaw_step_deg = 15.0;  ///< spacing of the yaw hypotheses over 360 deg [deg]
+  int iterations = 6;          ///< Gauss-Newton iterations per hypothesis
+  int max_points = 1500;       ///< source features per hypothesis (strided)
 };
 
 /// Loop closure (candidates, ICP verification, consistency checks) and the pose graph.
 struct LoopConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
+  void validate() const;          ///< values that cannot work: std::invalid_argument (Config.cpp)
   bool enabled = true;            ///< enable loop closure
   double radius_m = 7.0;          ///< search radius around the new keyframe's estimate [m]
   double min_time_gap_s = 30.0;   ///< candidate must be older than this [s]
@@ -209,15 +209,15 @@ struct LoopConfig {
   /// ICP starts at that keyframe turned by the descriptor's yaw, and the correction it finds must
   /// stay inside the gate (the odometry cannot have drifted further).
   bool place_recognition = true;
-  double place_gate_per_m = 0.02;   ///< [m/m]
-  double place_gate_max_m = 60.0;   ///< [m]
+  double place_gate_per_m = 0.02;          ///< [m/m]
+  double place_gate_max_m = 60.0;          ///< [m]
   double place_max_yaw_change_deg = 12.0;  ///< ICP may turn the descriptor's yaw at most [deg]
-  PlaceRecognitionConfig place;     ///< the descriptor and its database
+  PlaceRecognitionConfig place;            ///< the descriptor and its database
 };
 
 /// The map the SLAM writes.
 struct OutputConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
+  void validate() const;     ///< values that cannot work: std::invalid_argument (Config.cpp)
   double map_voxel_m = 0.2;  ///< voxel of the keyframe clouds and of map.pcd [m]
   /// The map is merged and written in square tiles of this size (MapTiles.hpp), so the merge
   /// holds one tile's voxels, not the whole map's. Same map points for any size [m].
@@ -229,13 +229,13 @@ struct OutputConfig {
 
 /// Trajectory and map metrics and plots.
 struct MetricsConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
-  double map_accuracy_max_m = 2.0;   ///< distances are clamped here (points off the world) [m]
-  double assoc_max_dt_s = 0.02;      ///< timestamp association tolerance [s]
+  void validate() const;            ///< values that cannot work: std::invalid_argument (Config.cpp)
+  double map_accuracy_max_m = 2.0;  ///< distances are clamped here (points off the world) [m]
+  double assoc_max_dt_s = 0.02;     ///< timestamp association tolerance [s]
   std::vector<double> rpe_lengths_m = {100, 200, 300, 400, 500, 600, 700, 800};  ///< KITTI [m]
-  double rpe_segment_m = 50.0;       ///< extra user segment length for RPE [m]
-  int rpe_step_frames = 10;          ///< start a segment every n frames (KITTI: 10)
-  int plot_size_px = 1000;           ///< plot width and height [px]
+  double rpe_segment_m = 50.0;  ///< extra user segment length for RPE [m]
+  int rpe_step_frames = 10;     ///< start a segment every n frames (KITTI: 10)
+  int plot_size_px = 1000;      ///< plot width and height [px]
 };
 
 struct Config {
@@ -259,20 +259,24 @@ const std::vector<std::pair<const char*, const char*>>& movedConfigKeys();
 template <class V>
 void visitFields(V& v, InputConfig& c) {
   v.field("scan_stride", c.scan_stride, "use every n-th scan (1 = all, 10 Hz)");
-  v.field("dense_turn_rate_deg_s", c.dense_turn_rate_deg_s, "every scan above this turn rate, 0 = off [deg/s]");
-  v.field("dense_after_failure_s", c.dense_after_failure_s, "every scan this long after a failure [s]");
+  v.field("dense_turn_rate_deg_s", c.dense_turn_rate_deg_s,
+          "every scan above this turn rate, 0 = off [deg/s]");
+  v.field("dense_after_failure_s", c.dense_after_failure_s,
+          "every scan this long after a failure [s]");
   v.field("start_s", c.start_s, "evaluate scans from this drive time on [s]");
   v.field("end_s", c.end_s, "evaluate scans up to this drive time, 0 = to the end [s]");
 }
 
 template <class V>
 void visitFields(V& v, FeaturesConfig& c) {
-  v.field("deskew", c.deskew, "move each point to the sweep start with the predicted motion (scans with point times)");
+  v.field("deskew", c.deskew,
+          "move each point to the sweep start with the predicted motion (scans with point times)");
   v.field("use_ring_field", c.use_ring_field, "use ScanPoint.ring when >= 0");
   v.field("ring_zero_is_bottom", c.ring_zero_is_bottom, "ring 0 is the lowest beam");
   v.field("min_range_m", c.min_range_m, "points closer are dropped [m]");
   v.field("min_valid_points", c.min_valid_points, "min valid points per scan");
-  v.field("ground_max_elevation_deg", c.ground_max_elevation_deg, "beams below can be ground [deg]");
+  v.field("ground_max_elevation_deg", c.ground_max_elevation_deg,
+          "beams below can be ground [deg]");
   v.field("ground_angle_deg", c.ground_angle_deg, "max slope between adjacent ground points [deg]");
   v.field("sensor_mount_angle_deg", c.sensor_mount_angle_deg, "sensor pitch [deg]");
   v.field("segment_theta_deg", c.segment_theta_deg, "clustering angle threshold [deg]");
@@ -294,37 +298,50 @@ void visitFields(V& v, FeaturesConfig& c) {
 template <class V>
 void visitFields(V& v, OdometryConfig& c) {
   v.field("use_wheel_odometry", c.use_wheel_odometry,
-          "predict the motion between scans from the drive's wheel odometry + gyro (odometry.csv) if present");
+          "predict the motion between scans from the drive's wheel odometry + gyro (odometry.csv) "
+          "if present");
   v.field("gyro_standstill_mps", c.gyro_standstill_mps,
           "gyro bias from the drive's stops: speed below this is standstill, 0 = off [m/s]");
-  v.field("gyro_min_standstill_s", c.gyro_min_standstill_s, "standstill needed before the bias is used [s]");
+  v.field("gyro_min_standstill_s", c.gyro_min_standstill_s,
+          "standstill needed before the bias is used [s]");
   v.field("gyro_standstill_margin_s", c.gyro_standstill_margin_s,
           "standstill counts only this long after stopping and before starting [s]");
   v.field("two_step", c.two_step, "LeGO two-step scan-to-scan");
   v.field("iterations", c.iterations, "scan-to-scan iterations per step");
   v.field("max_nn_m", c.max_nn_m, "scan-to-scan correspondence radius [m]");
   v.field("max_step_change_m", c.max_step_change_m, "max change of the prediction per scan [m]");
-  v.field("max_step_change_deg", c.max_step_change_deg, "max change of the prediction per scan [deg]");
-  v.field("max_lateral_accel_mps2", c.max_lateral_accel_mps2, "turn rate bound: this over the speed, 0 = off [m/s^2]");
-  v.field("rotation_slack_deg", c.rotation_slack_deg, "rotation allowed on top of the bound per scan [deg]");
+  v.field("max_step_change_deg", c.max_step_change_deg,
+          "max change of the prediction per scan [deg]");
+  v.field("max_lateral_accel_mps2", c.max_lateral_accel_mps2,
+          "turn rate bound: this over the speed, 0 = off [m/s^2]");
+  v.field("rotation_slack_deg", c.rotation_slack_deg,
+          "rotation allowed on top of the bound per scan [deg]");
   v.field("wheel_translation_slack_m", c.wheel_translation_slack_m,
           "with wheel odometry: registration may move its prediction this far per 0.1 s [m]");
   v.field("wheel_rotation_slack_deg", c.wheel_rotation_slack_deg,
           "with wheel odometry: ... and turn it this much in yaw per 0.1 s [deg]");
-  v.field("prior_sigma_m", c.prior_sigma_m, "scan-to-map prior towards the odometry, x/y sigma per 0.1 s (0 = off) [m]");
-  v.field("prior_sigma_deg", c.prior_sigma_deg, "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
+  v.field("prior_sigma_m", c.prior_sigma_m,
+          "scan-to-map prior towards the odometry, x/y sigma per 0.1 s (0 = off) [m]");
+  v.field("prior_sigma_deg", c.prior_sigma_deg,
+          "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
   v.field("prior_ref_noise_deg_s", c.prior_ref_noise_deg_s,
-          "gyro white noise the yaw sigma is tuned for; a drive's odometry.yaml scales it, 0 = off [deg/s]");
+          "gyro white noise the yaw sigma is tuned for; a drive's odometry.yaml scales it, 0 = off "
+          "[deg/s]");
   v.field("prior_ref_bias_deg_s", c.prior_ref_bias_deg_s, "... and gyro bias [deg/s]");
-  v.field("prior_min_sigma_deg", c.prior_min_sigma_deg, "... but at least this (a noise-free gyro) [deg]");
-  v.field("prior_registration_sigma_m", c.prior_registration_sigma_m, "LiDAR residual sigma for the odometry prior [m]");
+  v.field("prior_min_sigma_deg", c.prior_min_sigma_deg,
+          "... but at least this (a noise-free gyro) [deg]");
+  v.field("prior_registration_sigma_m", c.prior_registration_sigma_m,
+          "LiDAR residual sigma for the odometry prior [m]");
   v.field("imu_tilt_weight", c.imu_tilt_weight,
-          "share of the way roll/pitch move to the IMU's after each scan (odometry.csv with roll/pitch), 0 = off");
+          "share of the way roll/pitch move to the IMU's after each scan (odometry.csv with "
+          "roll/pitch), 0 = off");
   v.field("failed_turn_decay", c.failed_turn_decay, "turn rate kept per failed scan (share)");
   v.field("vehicle_motion", c.vehicle_motion,
-          "without wheel odometry, predict with forward speed and yaw rate only (false = full 6-DoF velocity)");
-  v.field("max_yaw_accel_deg_s2", c.max_yaw_accel_deg_s2,
-          "with vehicle_motion: largest change of the predicted turn rate [deg/s^2], 0 = unbounded");
+          "without wheel odometry, predict with forward speed and yaw rate only (false = full "
+          "6-DoF velocity)");
+  v.field(
+      "max_yaw_accel_deg_s2", c.max_yaw_accel_deg_s2,
+      "with vehicle_motion: largest change of the predicted turn rate [deg/s^2], 0 = unbounded");
 }
 
 template <class V>
@@ -342,7 +359,8 @@ void visitFields(V& v, MappingConfig& c) {
   v.field("local_map_radius_m", c.local_map_radius_m, "local map radius [m]");
   v.field("keyframe_distance_m", c.keyframe_distance_m, "keyframe spacing [m]");
   v.field("keyframe_angle_deg", c.keyframe_angle_deg, "keyframe rotation [deg]");
-  v.field("failed_keyframe_distance_m", c.failed_keyframe_distance_m, "keyframe distance of failed scans [m]");
+  v.field("failed_keyframe_distance_m", c.failed_keyframe_distance_m,
+          "keyframe distance of failed scans [m]");
   v.field("huber_m", c.huber_m, "robust kernel width [m]");
   v.field("plane_max_dev_m", c.plane_max_dev_m, "plane fit max neighbour deviation [m]");
   v.field("min_edge_features", c.min_edge_features, "min edge matches");
@@ -374,29 +392,39 @@ void visitFields(V& v, LoopConfig& c) {
   v.field("min_inlier_ratio", c.min_inlier_ratio, "ICP min inlier share");
   v.field("cooldown_s", c.cooldown_s, "min time between closures [s]");
   v.field("ambiguity_along_m", c.ambiguity_along_m,
-          "closure refused when ICP from these offsets along the heading finds a better match, [] = off [m]");
+          "closure refused when ICP from these offsets along the heading finds a better match, [] "
+          "= off [m]");
   v.field("ambiguity_across_m", c.ambiguity_across_m, "... and across it [m]");
-  v.field("ambiguity_separation_m", c.ambiguity_separation_m, "... at least this far from the first one [m]");
+  v.field("ambiguity_separation_m", c.ambiguity_separation_m,
+          "... at least this far from the first one [m]");
   v.field("ambiguity_inlier_margin", c.ambiguity_inlier_margin,
           "... matching this much larger a share of the points (and with a lower fitness)");
-  v.field("correlative", c.correlative, "refuse a candidate that a pose elsewhere in the window fits nearly as well");
-  v.field("window_per_m", c.window_per_m, "search window: radius_m + this x path since the last closure [m/m]");
+  v.field("correlative", c.correlative,
+          "refuse a candidate that a pose elsewhere in the window fits nearly as well");
+  v.field("window_per_m", c.window_per_m,
+          "search window: radius_m + this x path since the last closure [m/m]");
   v.field("window_max_m", c.window_max_m, "... at most this [m]");
-  v.field("correlative_yaw_deg", c.correlative_yaw_deg, "yaws searched around the estimate's [deg]");
-  v.field("correlative_separation_m", c.correlative_separation_m, "a rival pose is at least this far from the best [m]");
-  v.field("correlative_max_ratio", c.correlative_max_ratio, "refused when a rival scores this share of the best");
+  v.field("correlative_yaw_deg", c.correlative_yaw_deg,
+          "yaws searched around the estimate's [deg]");
+  v.field("correlative_separation_m", c.correlative_separation_m,
+          "a rival pose is at least this far from the best [m]");
+  v.field("correlative_max_ratio", c.correlative_max_ratio,
+          "refused when a rival scores this share of the best");
   v.field("max_correction_m", c.max_correction_m,
           "max jump of a loop closure right after another one (negative = no bound) [m]");
-  v.field("correction_per_m", c.correction_per_m, "... plus this per metre driven since the last closure [m/m]");
+  v.field("correction_per_m", c.correction_per_m,
+          "... plus this per metre driven since the last closure [m/m]");
   v.field("graph_odom_sigma_m", c.graph_odom_sigma_m, "odometry edge sigma [m]");
   v.field("graph_odom_sigma_rad", c.graph_odom_sigma_rad, "odometry edge sigma [rad]");
   v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");
   v.field("graph_loop_sigma_rad", c.graph_loop_sigma_rad, "loop edge sigma [rad]");
   v.field("place_recognition", c.place_recognition,
           "LiDAR-only: candidates by place descriptor when none is near the estimate");
-  v.field("place_gate_per_m", c.place_gate_per_m, "descriptor candidates within radius_m + this x path since the last closure [m/m]");
+  v.field("place_gate_per_m", c.place_gate_per_m,
+          "descriptor candidates within radius_m + this x path since the last closure [m/m]");
   v.field("place_gate_max_m", c.place_gate_max_m, "... at most this far [m]");
-  v.field("place_max_yaw_change_deg", c.place_max_yaw_change_deg, "ICP may turn the descriptor's yaw at most [deg]");
+  v.field("place_max_yaw_change_deg", c.place_max_yaw_change_deg,
+          "ICP may turn the descriptor's yaw at most [deg]");
   v.section("place", c.place);
 }
 
@@ -404,7 +432,8 @@ template <class V>
 void visitFields(V& v, OutputConfig& c) {
   v.field("map_voxel_m", c.map_voxel_m, "keyframe cloud and map.pcd voxel [m]");
   v.field("map_tile_m", c.map_tile_m, "map merged in tiles of this size [m]");
-  v.field("keyframe_clouds_on_disk", c.keyframe_clouds_on_disk, "keyframe clouds in a temporary file, not memory");
+  v.field("keyframe_clouds_on_disk", c.keyframe_clouds_on_disk,
+          "keyframe clouds in a temporary file, not memory");
 }
 
 template <class V>

@@ -14,17 +14,17 @@
 namespace slamroute::evaluate {
 
 struct CorrelativeOptions {
-  double resolution_m = 0.25;     ///< fine grid cell and offset step [m]
-  int coarse_cells = 4;           ///< a coarse block is this many fine cells a side
-  double sigma_m = 0.3;           ///< likelihood of a source point: exp(-d^2 / 2 sigma^2) [m]
-  double window_m = 10.0;         ///< offsets within +-window_m in x and y of the start [m]
-  double yaw_window_rad = 0.07;   ///< yaws within +-this of the start's [rad]
-  double yaw_step_rad = 0.0175;   ///< yaw step [rad]
-  double separation_m = 2.0;      ///< the runner-up is the best pose at least this far away [m]
+  double resolution_m = 0.25;    ///< fine grid cell and offset step [m]
+  int coarse_cells = 4;          ///< a coarse block is this many fine cells a side
+  double sigma_m = 0.3;          ///< likelihood of a source point: exp(-d^2 / 2 sigma^2) [m]
+  double window_m = 10.0;        ///< offsets within +-window_m in x and y of the start [m]
+  double yaw_window_rad = 0.07;  ///< yaws within +-this of the start's [rad]
+  double yaw_step_rad = 0.0175;  ///< yaw step [rad]
+  double separation_m = 2.0;     ///< the runner-up is the best pose at least this far away [m]
   /// Blocks whose bound is below this share of the best score are not scored finely: the
   /// runner-up is exact when it reaches this share, otherwise reported as below it.
   double prune_share = 0.7;
-  int max_source_points = 800;    ///< source points scored (strided) [1]
+  int max_source_points = 800;  ///< source points scored (strided) [1]
   void validate() const;
 };
 

@@ -4,8 +4,8 @@
 // measured (EvaluationResult).
 #include <filesystem>
 #include <map>
-#include <string>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "slamroute/core/Scan.hpp"
 #include "slamroute/evaluate/Config.hpp"
@@ -31,17 +31,17 @@ Reliability reliabilityOf(const SlamResult& r);
 nlohmann::json reliabilityJson(const SlamResult& r);
 
 /// Disk an evaluation of a drive of `route_km` needs in its output folder [GB = 10^9 bytes]:
-/// map.pcd (~6.6 MB/km) and, with cfg.output.keyframe_clouds_on_disk, the keyframe clouds' file while
-/// the SLAM runs (~23 MB/km; bench/RESULTS.md "SLAM memory"), or, with the clouds in
-/// memory, twice map.pcd (its tiles wait in a file until it is written). evaluateDrive warns
-/// when the folder has less free.
+/// map.pcd (~6.6 MB/km) and, with cfg.output.keyframe_clouds_on_disk, the keyframe clouds' file
+/// while the SLAM runs (~23 MB/km; bench/RESULTS.md "SLAM memory"), or, with the clouds in memory,
+/// twice map.pcd (its tiles wait in a file until it is written). evaluateDrive warns when the
+/// folder has less free.
 double evaluationDiskGb(double route_km, const Config& cfg);
 
 /// Runs the whole evaluation of a drive folder and writes the outputs into `out`: evaluateScans
 /// with the drive's groundtruth.tum (throws when it is missing or empty).
 EvaluationResult evaluateDrive(const std::filesystem::path& drive, const ScanSource& source,
-                             const std::filesystem::path& out, const Config& cfg,
-                             const std::map<std::string, std::string>& edge_labels = {});
+                               const std::filesystem::path& out, const Config& cfg,
+                               const std::map<std::string, std::string>& edge_labels = {});
 
 /// Runs the whole evaluation of the scans of `folder` and writes the outputs into `out`.
 /// The estimate starts at the first ground-truth pose (so it is in the world frame); the ATE is
@@ -53,8 +53,8 @@ EvaluationResult evaluateDrive(const std::filesystem::path& drive, const ScanSou
 /// `edge_labels` (optional): a label per SUMO edge (e.g. the simulated world's street kind);
 /// the result then has drift_by_label: the length-weighted mean drift per label.
 EvaluationResult evaluateScans(const std::filesystem::path& folder, const ScanSource& source,
-                             const Trajectory& ground_truth, const std::filesystem::path& out,
-                             const Config& cfg,
-                             const std::map<std::string, std::string>& edge_labels = {});
+                               const Trajectory& ground_truth, const std::filesystem::path& out,
+                               const Config& cfg,
+                               const std::map<std::string, std::string>& edge_labels = {});
 
 }  // namespace slamroute::evaluate

@@ -51,9 +51,9 @@ struct MapFigures {
 /// computed by the caller: `slamroute evaluate` through explore/MapCompleteness.hpp).
 struct MapCompletenessFigures {
   double street_radius_m = 0;
-  long long cells = 0;                 ///< grid cells near the streets
-  double unknown_share = 0;            ///< of those, never seen
-  double frontier_share = 0;           ///< of those, seen ground next to unknown
+  long long cells = 0;                   ///< grid cells near the streets
+  double unknown_share = 0;              ///< of those, never seen
+  double frontier_share = 0;             ///< of those, seen ground next to unknown
   double mean_frontier_probability = 0;  ///< GP frontier probability averaged there
 };
 

@@ -28,11 +28,15 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg);
 Cloud voxelFilter(const Cloud& in, double voxel_m);
 /// The voxel index along one axis of a coordinate `v`, `inv` = 1 / voxel size, exactly as
 /// voxelFilter and VoxelMerger bin points.
-inline std::int64_t voxelIndex(float v, float inv) { return static_cast<std::int64_t>(std::floor(v * inv)); }
+inline std::int64_t voxelIndex(float v, float inv) {
+  return static_cast<std::int64_t>(std::floor(v * inv));
+}
 /// The voxel of a point, 21 bits per axis (+-2^20 voxels around the origin), as voxelFilter and
 /// VoxelMerger group points.
 inline std::uint64_t voxelKey(const Eigen::Vector3f& p, float inv) {
-  const auto q = [&](float v) { return static_cast<std::uint64_t>(voxelIndex(v, inv) + (1 << 20)) & 0x1FFFFF; };
+  const auto q = [&](float v) {
+    return static_cast<std::uint64_t>(voxelIndex(v, inv) + (1 << 20)) & 0x1FFFFF;
+  };
   return (q(p.x()) << 42) | (q(p.y()) << 21) | q(p.z());
 }
 /// `c` moved by `T` (single precision, as the SLAM's clouds).

@@ -19,9 +19,9 @@ namespace slamroute::evaluate {
 
 /// How the fleet's maps are joined and measured.
 struct FleetMergeOptions {
-  double keyframe_spacing_m = 10.0;  ///< a merge keyframe after this much driving [m]
+  double keyframe_spacing_m = 10.0;    ///< a merge keyframe after this much driving [m]
   int target_keyframes_each_side = 2;  ///< an ICP target: the keyframe and this many each side
-  double gate_m = 30.0;              ///< candidates within this of the query's estimate [m]
+  double gate_m = 30.0;                ///< candidates within this of the query's estimate [m]
   /// Two closures of a pair of vehicles agree when one's correction of the other vehicle puts
   /// the other closure's keyframe within consistency_m + consistency_per_m x the path between
   /// the two closures (both vehicles; drift grows with it) of where that closure puts it. A
@@ -32,12 +32,12 @@ struct FleetMergeOptions {
   double consistency_per_m = 0.02;      ///< [m/m]
   double consistency_window_m = 200.0;  ///< [m]
   int min_pair_closures = 2;
-  double start_sigma_m = 10.0;       ///< weak prior: each vehicle's first pose as estimated [m]
-  double start_sigma_rad = 0.2;      ///< ... and heading [rad]
-  int map_scan_stride = 10;          ///< merged map: every n-th scan of each vehicle
-  double facade_street_m = 30.0;     ///< completeness: facades within this of a driven street [m]
-  double facade_sample_m = 1.0;      ///< ... sampled one point per this spacing [m]
-  double covered_m = 0.5;            ///< ... covered by a map point within this [m]
+  double start_sigma_m = 10.0;    ///< weak prior: each vehicle's first pose as estimated [m]
+  double start_sigma_rad = 0.2;   ///< ... and heading [rad]
+  int map_scan_stride = 10;       ///< merged map: every n-th scan of each vehicle
+  double facade_street_m = 30.0;  ///< completeness: facades within this of a driven street [m]
+  double facade_sample_m = 1.0;   ///< ... sampled one point per this spacing [m]
+  double covered_m = 0.5;         ///< ... covered by a map point within this [m]
   void validate() const;
 };
 
@@ -61,9 +61,9 @@ struct FleetClosure {
 
 struct FleetVehicleResult {
   std::string id;
-  Trajectory merged;            ///< the estimate after the fleet pose graph
+  Trajectory merged;  ///< the estimate after the fleet pose graph
   int keyframes = 0;
-  double own_ate_rmse_m = 0.0;  ///< own SLAM, aligned alone
+  double own_ate_rmse_m = 0.0;       ///< own SLAM, aligned alone
   double common_ate_before_m = 0.0;  ///< own SLAM, under the fleet's one alignment
   double common_ate_after_m = 0.0;   ///< after the merge, under the fleet's one alignment
   double completeness_pct = 0.0;     ///< facades its own map covers [%]
@@ -72,12 +72,12 @@ struct FleetVehicleResult {
 struct FleetResult {
   std::vector<FleetVehicleResult> vehicles;
   std::vector<FleetClosure> closures;
-  int candidates = 0;                 ///< ICP verifications tried
-  int inconsistent = 0;               ///< verified, then dropped as inconsistent
-  double common_ate_before_m = 0.0;   ///< all vehicles, one alignment, before the merge
-  double common_ate_after_m = 0.0;    ///< ... after it
-  Pose3 T_gt_est = Pose3::Identity(); ///< the one alignment (after the merge)
-  double completeness_pct = 0.0;      ///< facades the merged map covers [%]
+  int candidates = 0;                  ///< ICP verifications tried
+  int inconsistent = 0;                ///< verified, then dropped as inconsistent
+  double common_ate_before_m = 0.0;    ///< all vehicles, one alignment, before the merge
+  double common_ate_after_m = 0.0;     ///< ... after it
+  Pose3 T_gt_est = Pose3::Identity();  ///< the one alignment (after the merge)
+  double completeness_pct = 0.0;       ///< facades the merged map covers [%]
   int facade_samples = 0;
   /// Merged map points to the world mesh, clamped at map_accuracy_max_m: the single drive's
   /// map-accuracy figures (MapAccuracy.hpp), so the two read alike; as built (the frame of
@@ -86,13 +86,13 @@ struct FleetResult {
   double map_accuracy_max_m = 0.0;
   std::vector<float> map_aligned_dist_m;  ///< per point of `map`, aligned (its top view)
   std::size_t map_points = 0;
-  Cloud map;                          ///< the merged map (world frame, voxel cfg.output.map_voxel_m)
+  Cloud map;  ///< the merged map (world frame, voxel cfg.output.map_voxel_m)
 };
 
 /// Keyframes of one vehicle for the merge: estimate poses every spacing, each with its scan.
 struct FleetKeyframe {
   double t = 0.0;
-  std::size_t scan = 0;  ///< index in the vehicle's scan source
+  std::size_t scan = 0;            ///< index in the vehicle's scan source
   Pose3 pose = Pose3::Identity();  ///< the vehicle's estimate
   double distance_m = 0.0;         ///< path driven up to it (estimate) [m]
 };

@@ -16,7 +16,8 @@ class KdTree {
   void build(const std::vector<Eigen::Vector3f>& points);
   std::size_t size() const { return n_; }
   /// k nearest neighbours of q; fills idx / sq_dist (ascending); returns how many were found.
-  int knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx, std::vector<float>& sq_dist) const;
+  int knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
+          std::vector<float>& sq_dist) const;
 
  private:
   struct Impl;

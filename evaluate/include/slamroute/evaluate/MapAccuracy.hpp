@@ -44,7 +44,8 @@ class MapAccuracyMeter {
   double max_m_;
   Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();
   int nx_ = 0, ny_ = 0;
-  std::vector<std::uint32_t> cell_start_;  ///< triangles of cell c: faces_[cell_start_[c] .. cell_start_[c + 1])
+  std::vector<std::uint32_t>
+      cell_start_;  ///< triangles of cell c: faces_[cell_start_[c] .. cell_start_[c + 1])
   std::vector<std::uint32_t> cell_faces_;
   std::vector<std::uint64_t> seen_;  ///< per triangle: the last point (+1) it was measured for
   std::uint64_t counter_ = 0;        ///< points measured

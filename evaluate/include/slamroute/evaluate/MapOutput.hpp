@@ -17,8 +17,8 @@ class MapOutput : public MapSink {
  public:
   /// `mesh` and `gt` may be null (no accuracy, no alignment); both must outlive this object.
   /// `max_dt_s`: pose association tolerance of the alignment; `max_m`: the distance clamp.
-  MapOutput(const std::filesystem::path& pcd, const Mesh* mesh, const Trajectory* gt, double max_dt_s,
-            double max_m, int image_px);
+  MapOutput(const std::filesystem::path& pcd, const Mesh* mesh, const Trajectory* gt,
+            double max_dt_s, double max_m, int image_px);
   void estimate(const Trajectory& est) override;
   void begin(const Eigen::AlignedBox3f& bounds) override;
   void add(const Cloud& part) override;

@@ -3,8 +3,9 @@
 // and handed to a sink, so that neither the map nor its voxel cells are ever whole in memory:
 // a 75 km drive's map is 40.7 M points, and merging it at once peaked at 2.7 GB
 // (bench/RESULTS.md "SLAM memory"). A tile holds the voxels of a square of
-// cfg.output.map_tile_m; each voxel's points are summed in keyframe order, so every map point is bit for
-// bit the one voxelFilter gives over all clouds joined (the order of the points is tile by tile).
+// cfg.output.map_tile_m; each voxel's points are summed in keyframe order, so every map point is
+// bit for bit the one voxelFilter gives over all clouds joined (the order of the points is tile by
+// tile).
 #include <Eigen/Geometry>
 #include <cstddef>
 #include <functional>
@@ -45,8 +46,8 @@ struct MapKeyframe {
 /// gives it to `sink` tile by tile; each keyframe's cloud is read from `clouds` once per tile its
 /// box overlaps and released after its last tile. `voxel_m` <= 0: every point, keyframe by
 /// keyframe. `progress(done, total)` after each tile. Returns the number of map points.
-std::size_t buildMapByTiles(CloudStore& clouds, const std::vector<MapKeyframe>& keyframes, double voxel_m,
-                            double tile_m, MapSink& sink,
+std::size_t buildMapByTiles(CloudStore& clouds, const std::vector<MapKeyframe>& keyframes,
+                            double voxel_m, double tile_m, MapSink& sink,
                             const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 }  // namespace slamroute::evaluate

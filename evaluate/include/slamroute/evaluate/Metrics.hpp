@@ -26,9 +26,9 @@ struct AteStats {
   double rmse_m = 0, mean_m = 0, median_m = 0, max_m = 0;
 };
 struct RpeStats {
-  double trans_pct = 0;       ///< mean translational error / segment length [%]
-  double rot_deg_per_m = 0;   ///< mean rotational error / segment length [deg/m]
-  int segments = 0;           ///< 0: trajectory shorter than every segment length (values NaN)
+  double trans_pct = 0;      ///< mean translational error / segment length [%]
+  double rot_deg_per_m = 0;  ///< mean rotational error / segment length [deg/m]
+  int segments = 0;          ///< 0: trajectory shorter than every segment length (values NaN)
 };
 
 struct MetricsOptions {
@@ -39,13 +39,13 @@ struct MetricsOptions {
 };
 
 struct TrajectoryMetrics {
-  std::vector<PosePair> pairs;     ///< associated poses
+  std::vector<PosePair> pairs;  ///< associated poses
   Pose3 T_gt_est = Pose3::Identity();
   std::vector<double> errors_m;    ///< per pair, after alignment
   std::vector<double> distance_m;  ///< per pair, along the ground truth
   AteStats ate;
-  RpeStats rpe_kitti;              ///< over rpe_lengths_m
-  RpeStats rpe_segment;            ///< over segment_m
+  RpeStats rpe_kitti;    ///< over rpe_lengths_m
+  RpeStats rpe_segment;  ///< over segment_m
   double segment_m = 0;
   double route_length_m = 0;
 };
@@ -71,9 +71,9 @@ std::vector<PoseEdge> readPoseEdges(const std::filesystem::path& path);
 struct EdgeError {
   std::string edge;
   int poses = 0, visits = 0;
-  double length_m = 0;       ///< driven on this edge (sum over visits)
+  double length_m = 0;  ///< driven on this edge (sum over visits)
   double ate_mean_m = 0, ate_max_m = 0;
-  double drift_pct = 0;      ///< relative translation error over each visit / its length [%]
+  double drift_pct = 0;  ///< relative translation error over each visit / its length [%]
   double rot_deg_per_m = 0;
 };
 std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vector<PoseEdge>& edges,

@@ -23,12 +23,13 @@ double maxTurnRate(const Config& cfg, double speed_mps);
 /// A registration that moves the pose far from the prediction within one frame interval `dt` [s]
 /// is a failure (wrong correspondences, e.g. a passing car filling half the view), not motion: a
 /// car's heading can change at most by its highest turn rate at the current speed.
-bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt, double speed_mps);
+bool plausible(const Pose3& pred, const Pose3& result, const Config& cfg, double dt,
+               double speed_mps);
 
 /// With wheel odometry + gyro the prediction itself is a measurement, good to centimetres and a
 /// fraction of a degree over one scan interval: a registration may move it at most
-/// cfg.odometry.wheel_translation_slack_m in x/y and cfg.odometry.wheel_rotation_slack_deg in yaw per 0.1 s,
-/// or it slid along a featureless street or locked onto a few stray edges.
+/// cfg.odometry.wheel_translation_slack_m in x/y and cfg.odometry.wheel_rotation_slack_deg in yaw
+/// per 0.1 s, or it slid along a featureless street or locked onto a few stray edges.
 bool plausibleWithOdometry(const Pose3& pred, const Pose3& result, const Config& cfg, double dt);
 
 /// A loop closure that moves the new keyframe by `correction_m` after `driven_m` metres since the

@@ -6,12 +6,12 @@
 namespace slamroute::evaluate {
 
 struct PlaceRecognitionConfig {
-  int rings = 20;                 ///< radial bins out to max_radius_m
-  int sectors = 60;               ///< azimuth bins over the full turn (6 deg each)
-  double max_radius_m = 80.0;     ///< points farther out (horizontally) are left out [m]
-  double ring_spread = 1.0;       ///< Gaussian width of the spread over rings [rings], 0 = none
-  double max_distance = 0.3;      ///< a candidate matches below this descriptor distance (0..1)
-  int ring_key_candidates = 10;   ///< nearest ring keys that get the full rotation search
+  int rings = 20;                ///< radial bins out to max_radius_m
+  int sectors = 60;              ///< azimuth bins over the full turn (6 deg each)
+  double max_radius_m = 80.0;    ///< points farther out (horizontally) are left out [m]
+  double ring_spread = 1.0;      ///< Gaussian width of the spread over rings [rings], 0 = none
+  double max_distance = 0.3;     ///< a candidate matches below this descriptor distance (0..1)
+  int ring_key_candidates = 10;  ///< nearest ring keys that get the full rotation search
   void validate() const;  ///< values that cannot work: std::invalid_argument (PlaceDescriptor.cpp)
 };
 template <class V>

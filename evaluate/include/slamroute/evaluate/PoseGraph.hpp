@@ -20,7 +20,7 @@ struct PoseGraphResult {
 };
 
 /// Optimises `poses` (T_world_node) in place; node `fixed` is held constant.
-PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses, const std::vector<PoseGraphEdge>& edges,
-                                  int fixed = 0);
+PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
+                                  const std::vector<PoseGraphEdge>& edges, int fixed = 0);
 
 }  // namespace slamroute::evaluate

@@ -15,10 +15,10 @@ struct RangeImage {
   static constexpr int kOutlier = -1;  ///< points of dropped (small) clusters
   int rows = 0, cols = 0;
   double vfov_down_rad = 0, vres_rad = 0, hres_rad = 0;
-  std::vector<float> range;             ///< rows*cols, 0 = empty
-  std::vector<Eigen::Vector3f> point;   ///< rows*cols, sensor frame
-  std::vector<std::uint8_t> ground;     ///< rows*cols, 1 = ground
-  std::vector<int> label;               ///< rows*cols, cluster id > 0, kOutlier, or kNoLabel
+  std::vector<float> range;            ///< rows*cols, 0 = empty
+  std::vector<Eigen::Vector3f> point;  ///< rows*cols, sensor frame
+  std::vector<std::uint8_t> ground;    ///< rows*cols, 1 = ground
+  std::vector<int> label;              ///< rows*cols, cluster id > 0, kOutlier, or kNoLabel
   int valid_points = 0;
   int clusters = 0;
   int idx(int r, int c) const { return r * cols + c; }
@@ -30,8 +30,8 @@ RangeImage projectScan(const Scan& scan, const LidarSpec& spec, const Config& cf
 /// cfg.ground_angle_deg (LeGO-LOAM groundRemoval).
 void segmentGround(RangeImage& img, const Config& cfg);
 /// BFS clustering of non-ground cells (LeGO-LOAM labelComponents): neighbours join when the
-/// angle beta = atan2(d2 sin a, d1 - d2 cos a) exceeds cfg.features.segment_theta_deg. Small clusters are
-/// labelled kOutlier.
+/// angle beta = atan2(d2 sin a, d1 - d2 cos a) exceeds cfg.features.segment_theta_deg. Small
+/// clusters are labelled kOutlier.
 void clusterRangeImage(RangeImage& img, const Config& cfg);
 
 }  // namespace slamroute::evaluate

@@ -24,12 +24,12 @@ struct FeatureMap {
 
 struct AlignOptions {
   int iterations = 10;
-  double max_nn_m = 1.0;   ///< all 5 neighbours of a correspondence within this [m]
+  double max_nn_m = 1.0;  ///< all 5 neighbours of a correspondence within this [m]
   double huber_m = 0.1;
   double plane_max_dev_m = 0.2;  ///< all neighbours within this of their fitted plane [m]
   unsigned dof_mask = kAllDof;
-  double degenerate_eig = 0.0;   ///< > 0: freeze directions with lambda/rows below this
-  double inlier_m = 0.1;         ///< residuals below this count as inliers (hypothesis score) [m]
+  double degenerate_eig = 0.0;  ///< > 0: freeze directions with lambda/rows below this
+  double inlier_m = 0.1;        ///< residuals below this count as inliers (hypothesis score) [m]
   /// Search the nearest neighbours and fit lines / planes every n-th iteration only, and keep
   /// them fixed in between (LOAM's odometry re-associates every 5th iteration). 1 = every one.
   int reassociate_every = 1;
@@ -104,7 +104,7 @@ struct IcpAmbiguity {
 /// result that ends more than amb.separation_m away, is accepted, matches a larger share of the
 /// source (by amb.inlier_margin) and has a lower fitness, i.e. a better fit elsewhere; nullopt
 /// when there is none.
-std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source, const IcpResult& match,
-                                     const IcpAmbiguity& amb);
+std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source,
+                                     const IcpResult& match, const IcpAmbiguity& amb);
 
 }  // namespace slamroute::evaluate

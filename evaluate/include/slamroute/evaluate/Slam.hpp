@@ -5,8 +5,8 @@
 // expressed in the world frame.
 #include <filesystem>
 #include <functional>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,17 +39,18 @@ struct LoopClosure {
 };
 
 struct SlamResult {
-  Trajectory trajectory;                ///< one pose per scan, T_world_sensor
-  std::vector<FrameStatus> status;      ///< per scan
-  std::vector<double> min_eig;          ///< per scan: degeneracy measure of scan-to-map
-  std::vector<LoopClosure> loops;       ///< accepted loop closures
-  int loop_candidates = 0;              ///< ICP attempts
-  int loops_rejected = 0;               ///< ICP matches refused for too large a correction
-  int loops_ambiguous = 0;              ///< ICP matches refused: ICP from nearby starts fits better elsewhere
+  Trajectory trajectory;            ///< one pose per scan, T_world_sensor
+  std::vector<FrameStatus> status;  ///< per scan
+  std::vector<double> min_eig;      ///< per scan: degeneracy measure of scan-to-map
+  std::vector<LoopClosure> loops;   ///< accepted loop closures
+  int loop_candidates = 0;          ///< ICP attempts
+  int loops_rejected = 0;           ///< ICP matches refused for too large a correction
+  int loops_ambiguous = 0;  ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
   StageTimes times;
-  Cloud map;                            ///< world frame, voxel-filtered (cfg.output.map_voxel_m); empty when a MapSink took it
-  std::size_t map_points = 0;           ///< points of the map (also when a MapSink took it)
+  Cloud
+      map;  ///< world frame, voxel-filtered (cfg.output.map_voxel_m); empty when a MapSink took it
+  std::size_t map_points = 0;  ///< points of the map (also when a MapSink took it)
 };
 
 class LidarSlam {
@@ -81,8 +82,8 @@ class LidarSlam {
   /// estimate's (0 before any motion is known).
   double turnRateDegPerS() const;
   /// True while the vehicle turns faster than cfg.input.dense_turn_rate_deg_s or within
-  /// cfg.input.dense_after_failure_s of a failed or relocalised scan: the caller should then feed every
-  /// scan instead of every cfg.input.scan_stride-th.
+  /// cfg.input.dense_after_failure_s of a failed or relocalised scan: the caller should then feed
+  /// every scan instead of every cfg.input.scan_stride-th.
   bool wantsEveryScan() const;
   /// Ends the run and returns its results (trajectory, map, loops); call once: the keyframes'
   /// clouds are released as they are merged into the map.
@@ -93,16 +94,17 @@ class LidarSlam {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Runs the pipeline over a scan source: every cfg.input.scan_stride-th scan, and every scan while the
-/// vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the motion from the
-/// source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when cfg.odometry.use_wheel_odometry). `progress(done, total)` is called after each scan.
-/// A scan the source cannot produce is recorded as Missing and the run continues. `cloud_dir`:
-/// where the keyframe clouds go (LidarSlam::keepCloudsOnDisk; empty: memory). `map_sink`: where
-/// the map goes (LidarSlam::setMapSink; null: SlamResult::map).
+/// Runs the pipeline over a scan source: every cfg.input.scan_stride-th scan, and every scan while
+/// the vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the
+/// motion from the source's scan 0 to scan 1, if known. `odometry`: wheel speed + gyro (used when
+/// cfg.odometry.use_wheel_odometry). `progress(done, total)` is called after each scan. A scan the
+/// source cannot produce is recorded as Missing and the run continues. `cloud_dir`: where the
+/// keyframe clouds go (LidarSlam::keepCloudsOnDisk; empty: memory). `map_sink`: where the map goes
+/// (LidarSlam::setMapSink; null: SlamResult::map).
 SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_world_first,
                    const std::function<void(std::size_t, std::size_t)>& progress = {},
                    const std::optional<Pose3>& T_first_second = std::nullopt,
-                   const WheelOdometry* odometry = nullptr, const std::filesystem::path& cloud_dir = {},
-                   MapSink* map_sink = nullptr);
+                   const WheelOdometry* odometry = nullptr,
+                   const std::filesystem::path& cloud_dir = {}, MapSink* map_sink = nullptr);
 
 }  // namespace slamroute::evaluate

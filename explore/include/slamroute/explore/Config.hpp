@@ -8,11 +8,11 @@ namespace slamroute::explore {
 
 /// Occupancy grid of the drivable area, fed by the simulated LiDAR at the poses `map_poses` picks.
 struct GridConfig {
-  double cell_m = 2.0;          ///< cell edge [m]
-  double max_range_m = 40.0;    ///< returns farther than this are ignored [m]
-  double ground_tol_m = 0.35;   ///< a return this high above the road under the vehicle is ground
-  double ground_grade = 0.03;   ///< ... plus this much per metre of distance (slopes) [m/m]
-  double margin_m = 60.0;       ///< the grid reaches this far beyond the net's bounds [m]
+  double cell_m = 2.0;         ///< cell edge [m]
+  double max_range_m = 40.0;   ///< returns farther than this are ignored [m]
+  double ground_tol_m = 0.35;  ///< a return this high above the road under the vehicle is ground
+  double ground_grade = 0.03;  ///< ... plus this much per metre of distance (slopes) [m/m]
+  double margin_m = 60.0;      ///< the grid reaches this far beyond the net's bounds [m]
 };
 template <class V>
 void visitFields(V& v, GridConfig& c) {
@@ -27,8 +27,8 @@ void visitFields(V& v, GridConfig& c) {
 /// scan_spacing_m driven (the grid needs far fewer rays than SLAM).
 struct SensorConfig {
   std::string preset = "vlp16";
-  int horizontal_samples = 360;   ///< columns per sweep (vlp16 has 1800)
-  double scan_spacing_m = 8.0;    ///< one sweep per this much driven [m]
+  int horizontal_samples = 360;  ///< columns per sweep (vlp16 has 1800)
+  double scan_spacing_m = 8.0;   ///< one sweep per this much driven [m]
 };
 template <class V>
 void visitFields(V& v, SensorConfig& c) {
@@ -40,15 +40,15 @@ void visitFields(V& v, SensorConfig& c) {
 /// GP occupancy with the local-kernel approximation and the frontier probability (eq. 11);
 /// defaults are the seed paper's Table 1 (kernel 11 x 11 cells).
 struct GpConfig {
-  double signal_var = 0.434;      ///< sigma_f^2
+  double signal_var = 0.434;         ///< sigma_f^2
   double length_scale_cells = 3.26;  ///< rho, in cells
-  double noise_var = 0.05;        ///< sigma_n^2
-  double gamma = 2.0;             ///< logistic weight (eq. 6)
-  double beta = 4.0;              ///< occupied boundary factor (eq. 11)
-  int kernel_cells = 11;          ///< local kernel edge (odd)
-  double p_emp = 0.1;             ///< training value of a free cell
-  double p_non_emp = 0.5;         ///< training value of any other cell (= p_unknown)
-  double distance_scale_m = 400.0;  ///< gp-frontier: score = p_frontier * exp(-d / this) [m]
+  double noise_var = 0.05;           ///< sigma_n^2
+  double gamma = 2.0;                ///< logistic weight (eq. 6)
+  double beta = 4.0;                 ///< occupied boundary factor (eq. 11)
+  int kernel_cells = 11;             ///< local kernel edge (odd)
+  double p_emp = 0.1;                ///< training value of a free cell
+  double p_non_emp = 0.5;            ///< training value of any other cell (= p_unknown)
+  double distance_scale_m = 400.0;   ///< gp-frontier: score = p_frontier * exp(-d / this) [m]
 };
 template <class V>
 void visitFields(V& v, GpConfig& c) {
@@ -65,9 +65,9 @@ void visitFields(V& v, GpConfig& c) {
 
 /// The fleet strategy (swarm seed paper): DBSCAN of frontier points, groups of vehicles.
 struct FleetConfig {
-  double dbscan_eps_m = 12.0;   ///< neighbourhood radius [m]
-  int dbscan_min_points = 2;    ///< core point threshold (itself included)
-  int group_size = 2;           ///< vehicles per group (leader + followers)
+  double dbscan_eps_m = 12.0;  ///< neighbourhood radius [m]
+  int dbscan_min_points = 2;   ///< core point threshold (itself included)
+  int group_size = 2;          ///< vehicles per group (leader + followers)
 };
 template <class V>
 void visitFields(V& v, FleetConfig& c) {
@@ -81,10 +81,10 @@ struct Config {
   SensorConfig sensor;
   GpConfig gp;
   FleetConfig fleet;
-  double step_length_s = 0.5;      ///< SUMO step [s]
-  double depart_gap_s = 4.0;       ///< vehicles sharing a start edge leave this far apart [s]
-  double speed_factor = 1.0;       ///< vehicles drive at this share of the speed limit
-  double max_time_s = 36000.0;     ///< simulated time limit [s]
+  double step_length_s = 0.5;   ///< SUMO step [s]
+  double depart_gap_s = 4.0;    ///< vehicles sharing a start edge leave this far apart [s]
+  double speed_factor = 1.0;    ///< vehicles drive at this share of the speed limit
+  double max_time_s = 36000.0;  ///< simulated time limit [s]
   /// Poses the scans enter the grid at: `truth` (the simulator's) or `slam` (each vehicle's own
   /// online estimate, wheel odometry + gyro dead reckoning with simulate.drive's errors).
   std::string map_poses = "truth";

@@ -10,8 +10,8 @@
 // DIR receives
 //   driven.rou.xml  one vehicle per explorer with the route it actually drove (SUMO format)
 //   explore.json    per vehicle and for the fleet: distance and simulated time until 90 / 95 /
-//                   100 % of the directed streets were driven; the offline fleet bound; the coverage
-//                   curve; decisions made (same seed, same bytes)
+//                   100 % of the directed streets were driven; the offline fleet bound; the
+//                   coverage curve; decisions made (same seed, same bytes)
 //   coverage.png    the exploration curve: share of directed streets driven against time
 //   timing.json     compute time per decision (wall clock, so not reproducible)
 // Everything is written to a hidden folder beside DIR and moved in at the end.
@@ -64,19 +64,19 @@ struct VehicleResult {
 
 struct ExploreResult {
   std::string strategy;
-  int total_edges = 0;      ///< directed streets to drive
+  int total_edges = 0;  ///< directed streets to drive
   int edges_driven = 0;
   double end_time_s = 0.0;
   bool time_limit_hit = false;
   std::vector<VehicleResult> vehicles;
-  std::vector<Milestone> milestones;      ///< 0.90, 0.95, 1.00
+  std::vector<Milestone> milestones;  ///< 0.90, 0.95, 1.00
   std::vector<CoverageSample> curve;
-  double offline_bound_m = 0.0;           ///< offline fleet plan, summed route length [m]
-  double offline_makespan_m = 0.0;        ///< offline fleet plan, longest route [m]
+  double offline_bound_m = 0.0;     ///< offline fleet plan, summed route length [m]
+  double offline_makespan_m = 0.0;  ///< offline fleet plan, longest route [m]
   int decisions = 0;
-  std::vector<double> decision_ms;        ///< compute time per decision [ms]
+  std::vector<double> decision_ms;  ///< compute time per decision [ms]
   int grid_cells_known = 0, streets_known = 0;
-  std::vector<Cell> grid;                 ///< the shared grid at the end (OccupancyGrid's order)
+  std::vector<Cell> grid;  ///< the shared grid at the end (OccupancyGrid's order)
 };
 
 /// Runs the exploration and writes DIR. Throws std::invalid_argument on bad options (unknown

@@ -5,7 +5,8 @@
 // Local kernel (eq. 10): an n x n Matern-3/2 kernel k(p, q) over cell offsets. Both GPs are
 // evaluated per cell from the training cells inside that window, each window pooled into one
 // observation (a GP whose posterior mean and variance given the window are
-//   mu = sum k_j y_j / (sum k_j + sigma_n^2),  sigma^2 = sigma_f^2 sigma_n^2 / (sum k_j + sigma_n^2);
+//   mu = sum k_j y_j / (sum k_j + sigma_n^2),  sigma^2 = sigma_f^2 sigma_n^2 / (sum k_j +
+//   sigma_n^2);
 // no matrix inverse, which is the point of the paper's convolution):
 //  - the unoccupied GP trains on every cell: p_emp for ground, p_non_emp otherwise (Alg. 2),
 //    mapped to y = 2p - 1;

@@ -17,9 +17,9 @@
 namespace slamroute::explore {
 
 struct MapCompleteness {
-  std::size_t cells = 0;        ///< grid cells within the radius of a street
-  double unknown_share = 0.0;   ///< of those, never seen
-  double frontier_share = 0.0;  ///< of those, frontier cells
+  std::size_t cells = 0;                   ///< grid cells within the radius of a street
+  double unknown_share = 0.0;              ///< of those, never seen
+  double frontier_share = 0.0;             ///< of those, frontier cells
   double mean_frontier_probability = 0.0;  ///< GP frontier probability (eq. 11) averaged there
 };
 

@@ -33,7 +33,9 @@ class OccupancyGrid {
   int row(int idx) const { return idx / w_; }
   bool inside(int col, int row) const { return col >= 0 && row >= 0 && col < w_ && row < h_; }
   Cell at(int idx) const { return cells_[static_cast<std::size_t>(idx)]; }
-  Cell atColRow(int col, int row) const { return inside(col, row) ? at(row * w_ + col) : Cell::Unknown; }
+  Cell atColRow(int col, int row) const {
+    return inside(col, row) ? at(row * w_ + col) : Cell::Unknown;
+  }
 
   /// Sets a cell (an obstacle is never turned back to ground); returns true when it changed.
   bool mark(int idx, Cell c);

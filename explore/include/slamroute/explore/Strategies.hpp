@@ -27,7 +27,7 @@
 namespace slamroute::explore {
 
 struct VehicleView {
-  int edge = -1;               ///< PlanGraph edge it is on, -1 when not (yet) in the net
+  int edge = -1;  ///< PlanGraph edge it is on, -1 when not (yet) in the net
   Point2 pos = Point2::Zero();
 };
 
@@ -35,9 +35,9 @@ struct FleetView {
   const rl::PlanGraph& pg;
   const StreetMap& streets;
   const OccupancyGrid& grid;
-  const std::vector<bool>& driven;    ///< per edge: driven or being driven
+  const std::vector<bool>& driven;  ///< per edge: driven or being driven
   std::vector<VehicleView> vehicles;
-  std::vector<int> targets;           ///< current target edge per vehicle, -1 none
+  std::vector<int> targets;  ///< current target edge per vehicle, -1 none
   /// Known, not driven and not the target of a vehicle other than `k`.
   bool open(int edge, int k) const;
 };

@@ -2,8 +2,9 @@
 // Which streets the fleet knows: the directed streets (PlanGraph edges) laid over the occupancy
 // grid, each as the cells its centreline runs through. A street is known once one of its cells
 // has been seen as ground (the vehicles then know it exists and where it leads from) or SUMO
-// offered it as a turn at a junction a vehicle is driving to; it is fully seen when all of them are. A frontier cell on (or next to) a street that is not fully
-// seen marks where that street leaves the known area: the street is a frontier street.
+// offered it as a turn at a junction a vehicle is driving to; it is fully seen when all of them
+// are. A frontier cell on (or next to) a street that is not fully seen marks where that street
+// leaves the known area: the street is a frontier street.
 #include <unordered_map>
 #include <vector>
 
@@ -14,8 +15,8 @@
 namespace slamroute::explore {
 
 struct FrontierPoint {
-  int cell = 0;     ///< grid cell index
-  int edge = 0;     ///< PlanGraph edge the frontier lies on
+  int cell = 0;  ///< grid cell index
+  int edge = 0;  ///< PlanGraph edge the frontier lies on
   Point2 pos = Point2::Zero();
 };
 

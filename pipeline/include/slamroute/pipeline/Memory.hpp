@@ -8,10 +8,10 @@ namespace slamroute::pipeline {
 
 /// Peak memory of one SLAM run (`evaluate`) of a drive of `route_km` [GB]; it grows with the
 /// length (bench/RESULTS.md "Memory of a SLAM run"). With the keyframe clouds on disk (the
-/// default, evaluate.output.keyframe_clouds_on_disk) and the map merged tile by tile: measured 330,444 kB
-/// for 14.9 km (default city, qlearning) and 698,780 kB for 74.5 km (Ingolstadt, postman),
-/// estimated as 0.3 GB + 0.008 GB/km. With the clouds in memory: 601,096 kB and 2,496,008 kB,
-/// estimated as 0.3 GB + 0.04 GB/km. Both lie 25-50 % above the measured peaks.
+/// default, evaluate.output.keyframe_clouds_on_disk) and the map merged tile by tile: measured
+/// 330,444 kB for 14.9 km (default city, qlearning) and 698,780 kB for 74.5 km (Ingolstadt,
+/// postman), estimated as 0.3 GB + 0.008 GB/km. With the clouds in memory: 601,096 kB and 2,496,008
+/// kB, estimated as 0.3 GB + 0.04 GB/km. Both lie 25-50 % above the measured peaks.
 double slamMemoryGb(double route_km, bool clouds_on_disk = true);
 
 /// Memory new processes can have now [GB = 10^9 bytes] (MemAvailable in /proc/meminfo); 0 when

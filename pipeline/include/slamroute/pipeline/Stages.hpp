@@ -12,7 +12,8 @@ namespace slamroute::pipeline {
 
 class StageRunner {
  public:
-  StageRunner(bool resume, double status_every_s) : resume_(resume), status_every_s_(status_every_s) {}
+  StageRunner(bool resume, double status_every_s)
+      : resume_(resume), status_every_s_(status_every_s) {}
 
   /// Runs the steps not kept, `jobs` at once; throws like runSteps.
   void run(const std::vector<Step>& steps, int jobs);

@@ -13,7 +13,7 @@
 namespace slamroute {
 struct SumoNet;
 struct Route;
-}
+}  // namespace slamroute
 
 namespace slamroute::pipeline {
 
@@ -37,7 +37,9 @@ struct RunLayout {
   std::filesystem::path logs() const { return out / "logs"; }
   std::filesystem::path survey() const { return out / "survey"; }
   std::filesystem::path graph() const { return out / "graph" / "graph.json"; }
-  std::filesystem::path route(const std::string& id) const { return out / "routes" / (id + ".json"); }
+  std::filesystem::path route(const std::string& id) const {
+    return out / "routes" / (id + ".json");
+  }
   std::filesystem::path drive(const std::string& id) const { return out / "drives" / id; }
   std::filesystem::path eval(const std::string& id) const { return out / "eval" / id; }
   std::filesystem::path metrics(const std::string& id) const { return eval(id) / "metrics.json"; }
@@ -48,7 +50,7 @@ Step buildGraphStep(const ChildOptions& opts, const RunLayout& run, const std::s
 
 /// One route to plan on the run's graph.
 struct PlanRequest {
-  std::string id;       ///< names the route file (RunLayout::route)
+  std::string id;  ///< names the route file (RunLayout::route)
   std::string planner;
   std::string reward;   ///< --reward; empty: the config's
   long long seed = -1;  ///< child seed; < 0: the options' seed
@@ -82,6 +84,7 @@ void repairSumoTurns(const SumoNet& net, Route& route, const std::string& where)
 
 /// `ids` ordered by their planned route length, longest first (ties keep their order): with
 /// several SLAM runs at a time the last one to start is the shortest, and the stage ends soonest.
-std::vector<std::string> longestRouteFirst(const RunLayout& run, const std::vector<std::string>& ids);
+std::vector<std::string> longestRouteFirst(const RunLayout& run,
+                                           const std::vector<std::string>& ids);
 
 }  // namespace slamroute::pipeline

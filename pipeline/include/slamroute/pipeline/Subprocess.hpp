@@ -14,9 +14,9 @@
 namespace slamroute::pipeline {
 
 struct Step {
-  std::string label;               ///< shown in progress lines
-  std::vector<std::string> args;   ///< arguments after the program name
-  std::filesystem::path log;       ///< child's stdout+stderr go here
+  std::string label;              ///< shown in progress lines
+  std::vector<std::string> args;  ///< arguments after the program name
+  std::filesystem::path log;      ///< child's stdout+stderr go here
   /// The file the step writes last (atomically); `--resume` may keep a step whose output exists.
   /// Empty: always run.
   std::filesystem::path output{};
@@ -82,7 +82,8 @@ void stopSteps(const std::vector<int>& pids, int sig);
 /// the run, a closed terminal) are passed on to the running steps, which are waited for; then
 /// Interrupted is thrown. Throws std::runtime_error naming the
 /// first failed step and quoting the last line of its log.
-std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs, double status_every_s = 60.0);
+std::vector<StepResult> runSteps(const std::vector<Step>& steps, int jobs,
+                                 double status_every_s = 60.0);
 
 /// The last non-blank line of a log (text after the last '\r' of a progress line), reading at
 /// most its last `max_bytes`; empty when the file is missing or blank.

@@ -15,10 +15,10 @@
 namespace slamroute::pipeline {
 
 struct SweepOptions {
-  int jobs_per_rank = 1;          ///< tasks a rank runs at once
-  bool resume = false;            ///< keep tasks done before from the same inputs
-  double worker_timeout_s = 30;   ///< a rank silent this long is taken for dead
-  int max_attempts = 2;           ///< a failed task runs once more
+  int jobs_per_rank = 1;         ///< tasks a rank runs at once
+  bool resume = false;           ///< keep tasks done before from the same inputs
+  double worker_timeout_s = 30;  ///< a rank silent this long is taken for dead
+  int max_attempts = 2;          ///< a failed task runs once more
 };
 
 /// Where each task ended, for the results.
@@ -34,7 +34,8 @@ struct SweepOutcome {
 
 /// Rank 0: runs `tasks` to the end (or until a stop signal) over the cluster's ranks and tells
 /// the others to stop.
-SweepOutcome scheduleSweep(Cluster& cluster, std::vector<SweepTask> tasks, const SweepOptions& opts);
+SweepOutcome scheduleSweep(Cluster& cluster, std::vector<SweepTask> tasks,
+                           const SweepOptions& opts);
 
 /// Ranks > 0: runs the tasks rank 0 sends until it says stop (or goes silent for
 /// `worker_timeout_s`). Writes its pid to `out`/workers/rank<R>.pid.

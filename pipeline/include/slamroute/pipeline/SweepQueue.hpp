@@ -12,10 +12,10 @@ enum class TaskState { Waiting, Ready, Running, Done, Failed, Skipped };
 
 struct TaskStatus {
   TaskState state = TaskState::Waiting;
-  int attempts = 0;       ///< starts so far
-  bool kept = false;      ///< done in an earlier sweep (--resume)
-  double seconds = 0.0;   ///< run time of the successful attempt
-  std::string error;      ///< why the last attempt failed / why the task was skipped
+  int attempts = 0;      ///< starts so far
+  bool kept = false;     ///< done in an earlier sweep (--resume)
+  double seconds = 0.0;  ///< run time of the successful attempt
+  std::string error;     ///< why the last attempt failed / why the task was skipped
 };
 
 /// What the queue knows of a task: its dependencies and its estimates.

@@ -24,7 +24,8 @@ struct RowResult {
 };
 
 /// The result of each row read from its run folder; `outcome` gives each task's fate.
-std::vector<RowResult> collectResults(const std::vector<SweepRow>& rows, const SweepOutcome& outcome,
+std::vector<RowResult> collectResults(const std::vector<SweepRow>& rows,
+                                      const SweepOutcome& outcome,
                                       const std::filesystem::path& out);
 
 /// Writes results.csv, summary.md (+ summary/*.png), failed_tasks.txt and tasks.csv under `out`.

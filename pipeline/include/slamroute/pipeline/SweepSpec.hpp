@@ -34,8 +34,8 @@ struct SweepRow {
 struct SweepSpec {
   std::vector<std::string> nets, planners;  ///< nets as absolute paths
   std::vector<std::uint64_t> seeds;
-  std::vector<SweepVariant> variants;       ///< at least one
-  std::vector<SweepRow> rows;               ///< explicit rows beyond the grid
+  std::vector<SweepVariant> variants;  ///< at least one
+  std::vector<SweepRow> rows;          ///< explicit rows beyond the grid
 
   /// Reads and validates a spec; throws std::runtime_error with one line naming the file and the
   /// problem (unknown key, missing net or config file, unknown variant, empty study, ...).

@@ -17,15 +17,15 @@ namespace slamroute::rl {
 /// ranks the measured error along each drive.
 struct EifConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  double init_sigma_xy_m = 0.1;           ///< initial position std-dev [m]
-  double init_sigma_heading_rad = 0.01;   ///< initial heading std-dev [rad]
-  double long_var_per_m = 3.05e-3;        ///< along-track variance added per metre driven [m^2/m]
-  double lat_var_per_m = 1.53e-3;         ///< cross-track variance added per metre [m^2/m]
-  double heading_var_per_m = 1.3e-7;      ///< heading variance added per metre [rad^2/m]
-  double poor_weight_gain = 3.06;         ///< noise x (1 + gain * (1 - weight)): poor streets drift more
-  double closure_sigma_xy_m = 0.2;        ///< loop-closure registration std-dev, position [m]
+  double init_sigma_xy_m = 0.1;          ///< initial position std-dev [m]
+  double init_sigma_heading_rad = 0.01;  ///< initial heading std-dev [rad]
+  double long_var_per_m = 3.05e-3;       ///< along-track variance added per metre driven [m^2/m]
+  double lat_var_per_m = 1.53e-3;        ///< cross-track variance added per metre [m^2/m]
+  double heading_var_per_m = 1.3e-7;     ///< heading variance added per metre [rad^2/m]
+  double poor_weight_gain = 3.06;   ///< noise x (1 + gain * (1 - weight)): poor streets drift more
+  double closure_sigma_xy_m = 0.2;  ///< loop-closure registration std-dev, position [m]
   double closure_sigma_heading_rad = 0.01;  ///< loop-closure registration std-dev, heading [rad]
-  double loop_min_travel_m = 50.0;        ///< a revisit is a loop closure after this much driving [m]
+  double loop_min_travel_m = 50.0;  ///< a revisit is a loop closure after this much driving [m]
 };
 
 template <class V>
@@ -47,27 +47,31 @@ void visitFields(V& v, EifConfig& c) {
 /// Tabular Q-learning (paper §3.2, eqs. 5-7).
 struct QLearningConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  int episodes = 1000;          ///< training episodes (paper: 1000)
-  double gamma = 0.25;          ///< discount (paper: best of 0.25/0.5/0.75/0.9)
-  double alpha = 0.3;           ///< learning rate (paper: unspecified)
-  double epsilon_start = 1.0;   ///< epsilon-greedy exploration at the first episode
-  double epsilon_end = 0.05;    ///< ... reached linearly at epsilon_decay_fraction of the episodes
+  int episodes = 1000;    ///< training episodes (paper: 1000)
+  double gamma = 0.25;    ///< discount (paper: best of 0.25/0.5/0.75/0.9)
+  double alpha = 0.3;     ///< learning rate (paper: unspecified)
+  double epsilon_start = 1.0;  ///< epsilon-greedy exploration at the first episode
+  double epsilon_end = 0.05;   ///< ... reached linearly at epsilon_decay_fraction of the episodes
   double epsilon_decay_fraction = 0.8;  ///< share of episodes over which epsilon decays
   double max_steps_per_edge = 4.0;      ///< episode step cap = this * edges (* ln edges, below)
-  int signature_bits = 4;       ///< state = arrival edge + "is new" bit of the first k actions (0 = position only)
-  double weight_coverage = 1.0;     ///< eq. 7 weight of R_C
-  double weight_accuracy = 1.0;     ///< eq. 7 weight of R_A
-  double weight_uncertainty = 20.0; ///< eq. 7 weight of R_U (paper: 20)
-  double step_length_cost = 0.1;    ///< R_C: cost per mean edge length driven (eq. 6 l_path)
-  double uncertainty_clip = 1.0;    ///< |w_U * R_U| is clipped to this (one closure != many new nodes)
-  int stall_steps = 0;              ///< roll-out: also a stall after this many steps without progress (0 = off)
+  int signature_bits =
+      4;  ///< state = arrival edge + "is new" bit of the first k actions (0 = position only)
+  double weight_coverage = 1.0;      ///< eq. 7 weight of R_C
+  double weight_accuracy = 1.0;      ///< eq. 7 weight of R_A
+  double weight_uncertainty = 20.0;  ///< eq. 7 weight of R_U (paper: 20)
+  double step_length_cost = 0.1;     ///< R_C: cost per mean edge length driven (eq. 6 l_path)
+  double uncertainty_clip =
+      1.0;              ///< |w_U * R_U| is clipped to this (one closure != many new nodes)
+  int stall_steps = 0;  ///< roll-out: also a stall after this many steps without progress (0 = off)
   bool complete_with_shortest_paths = true;  ///< finish a stalled greedy roll-out by shortest paths
-  bool explore_new_first = true;  ///< exploration prefers actions reaching new coverage (paper: false)
-  bool spread_starts = true;      ///< every other episode starts at a random node (paper: false)
+  bool explore_new_first =
+      true;                   ///< exploration prefers actions reaching new coverage (paper: false)
+  bool spread_starts = true;  ///< every other episode starts at a random node (paper: false)
   bool cap_scales_with_log_edges = true;  ///< step cap also x ln(edges) (paper setting: false)
-  /// state: with nothing new at hand, which action leads to the nearest uncovered part (paper: false)
+  /// state: with nothing new at hand, which action leads to the nearest uncovered part (paper:
+  /// false)
   bool guide_to_uncovered = true;
-  double guide_reward = 2.0;       ///< reward for taking that action (shaping; 0 = none)
+  double guide_reward = 2.0;  ///< reward for taking that action (shaping; 0 = none)
 };
 
 template <class V>
@@ -81,7 +85,8 @@ void visitFields(V& v, QLearningConfig& c) {
           "epsilon decays linearly over this share of the episodes");
   v.field("max_steps_per_edge", c.max_steps_per_edge, "episode step cap = this * edge count");
   v.field("signature_bits", c.signature_bits,
-          "state = arrival edge + 'target is new' bits of its first k actions (0..6; 0 = position only)");
+          "state = arrival edge + 'target is new' bits of its first k actions (0..6; 0 = position "
+          "only)");
   v.field("weight_coverage", c.weight_coverage, "eq. 7 weight of R_C");
   v.field("weight_accuracy", c.weight_accuracy, "eq. 7 weight of R_A");
   v.field("weight_uncertainty", c.weight_uncertainty, "eq. 7 weight of R_U (paper: 20)");
@@ -90,7 +95,8 @@ void visitFields(V& v, QLearningConfig& c) {
   v.field("uncertainty_clip", c.uncertainty_clip,
           "clip of the weighted uncertainty term |w_U * R_U| per step");
   v.field("stall_steps", c.stall_steps,
-          "roll-out: a stall also after this many steps without new coverage (0 = only on a repeated state)");
+          "roll-out: a stall also after this many steps without new coverage (0 = only on a "
+          "repeated state)");
   v.field("complete_with_shortest_paths", c.complete_with_shortest_paths,
           "finish a stalled greedy roll-out with shortest paths to the nearest uncovered part");
   v.field("explore_new_first", c.explore_new_first,
@@ -111,8 +117,10 @@ void visitFields(V& v, QLearningConfig& c) {
 
 struct RandomConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  double max_steps_per_edge = 1000.0;  ///< random walk step cap = this * edge count, then shortest paths
-  double budget_m = 0.0;  ///< stop the walk at this driven length, goal met or not (0: no budget) [m]
+  double max_steps_per_edge =
+      1000.0;  ///< random walk step cap = this * edge count, then shortest paths
+  double budget_m =
+      0.0;  ///< stop the walk at this driven length, goal met or not (0: no budget) [m]
 };
 
 template <class V>
@@ -126,32 +134,36 @@ void visitFields(V& v, RandomConfig& c) {
 
 struct TspConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  int exact_max_nodes = 18;        ///< Held-Karp (exact) up to this many nodes (memory 2^(n-1)*n*8 B)
+  int exact_max_nodes = 18;  ///< Held-Karp (exact) up to this many nodes (memory 2^(n-1)*n*8 B)
   int christofides_max_nodes = 400;  ///< above: greedy tour + 2-opt instead of Christofides
-  int max_nodes = 3000;            ///< refuse above this (the distance matrix is n^2)
-  bool closed_tour = true;         ///< return to the start node (classic TSP tour)
+  int max_nodes = 3000;              ///< refuse above this (the distance matrix is n^2)
+  bool closed_tour = true;           ///< return to the start node (classic TSP tour)
 };
 
 template <class V>
 void visitFields(V& v, TspConfig& c) {
-  v.field("exact_max_nodes", c.exact_max_nodes,
-          "exact Held-Karp up to this many nodes; above, a heuristic tour (labelled in route.json)");
-  v.field("christofides_max_nodes", c.christofides_max_nodes,
-          "Christofides + 2-opt up to this many nodes; above, greedy tour + 2-opt (O(n^3) matching)");
+  v.field(
+      "exact_max_nodes", c.exact_max_nodes,
+      "exact Held-Karp up to this many nodes; above, a heuristic tour (labelled in route.json)");
+  v.field(
+      "christofides_max_nodes", c.christofides_max_nodes,
+      "Christofides + 2-opt up to this many nodes; above, greedy tour + 2-opt (O(n^3) matching)");
   v.field("max_nodes", c.max_nodes, "refuse graphs with more nodes (n^2 distance matrix)");
   v.field("closed_tour", c.closed_tour, "return to the start node at the end");
 }
 
 struct PostmanConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  bool closed = true;  ///< the circuit returns to its start (Euler circuit)
-  int max_forcing_rounds = 12;  ///< re-solves forcing a turn into a separate trail (0 = detours only)
+  bool closed = true;     ///< the circuit returns to its start (Euler circuit)
+  int max_forcing_rounds =
+      12;  ///< re-solves forcing a turn into a separate trail (0 = detours only)
 };
 
 template <class V>
 void visitFields(V& v, PostmanConfig& c) {
-  v.field("closed", c.closed, "route returns to the start node (otherwise the last return leg "
-                              "after full coverage is cut)");
+  v.field("closed", c.closed,
+          "route returns to the start node (otherwise the last return leg "
+          "after full coverage is cut)");
   v.field("max_forcing_rounds", c.max_forcing_rounds,
           "connectivity repair: re-solve the circulation forcing a turn into a separate trail, at "
           "most this many rounds (0 = merge by detours only)");
@@ -160,9 +172,9 @@ void visitFields(V& v, PostmanConfig& c) {
 struct Config {
   /// qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching
   std::string planner = "qlearning";
-  std::string goal = "nodes";          ///< episode/coverage goal: nodes (paper) | edges (streets)
-  std::string reward = "full";         ///< full (eq. 7) | accuracy (R_A only, paper Table 2)
-  int start_node = -1;                 ///< start node id (-1: the first node of the planning graph)
+  std::string goal = "nodes";   ///< episode/coverage goal: nodes (paper) | edges (streets)
+  std::string reward = "full";  ///< full (eq. 7) | accuracy (R_A only, paper Table 2)
+  int start_node = -1;          ///< start node id (-1: the first node of the planning graph)
   EifConfig eif;
   QLearningConfig qlearning;
   RandomConfig random;
@@ -174,9 +186,11 @@ struct Config {
 
 template <class V>
 void visitFields(V& v, Config& c) {
-  v.field("planner", c.planner,
-          "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching");
-  v.field("goal", c.goal, "coverage goal: nodes (paper: every node visited) | edges (every street)");
+  v.field(
+      "planner", c.planner,
+      "qlearning | random | tsp | postman | aco-ga | open-loop | exhaustive-revisit | switching");
+  v.field("goal", c.goal,
+          "coverage goal: nodes (paper: every node visited) | edges (every street)");
   v.field("reward", c.reward, "qlearning reward: full (eq. 7) | accuracy (R_A only, Table 2)");
   v.field("start_node", c.start_node, "start node id (-1: first node of the planning graph)");
   v.section("eif", c.eif);

@@ -6,13 +6,13 @@ namespace slamroute::rl {
 
 struct FleetConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (FleetConfig.cpp)
-  int vehicles = 1;                     ///< K; 1 = the single-vehicle planners
+  int vehicles = 1;       ///< K; 1 = the single-vehicle planners
   /// partition | postman (Fleet.hpp); the command line takes it from --planner, so it is no
   /// YAML key (one place to choose the planner)
   std::string strategy = "partition";
-  int balance_moves = 200;              ///< partition: at most this many edge moves
-  int candidates_per_move = 12;         ///< partition: boundary edges tried per move
-  int kmeans_iterations = 100;          ///< partition: Lloyd iterations at most
+  int balance_moves = 200;       ///< partition: at most this many edge moves
+  int candidates_per_move = 12;  ///< partition: boundary edges tried per move
+  int kmeans_iterations = 100;   ///< partition: Lloyd iterations at most
 };
 
 template <class V>

@@ -18,22 +18,23 @@
 namespace slamroute::rl {
 
 struct PlanGraph {
-  int n = 0, m = 0;                 ///< nodes, edges (local ids 0..n-1, 0..m-1)
-  std::vector<int> node_orig;       ///< local node -> RoadGraph node id
-  std::vector<int> edge_orig;       ///< local edge -> RoadGraph edge id
-  std::vector<int> node_local;      ///< RoadGraph node id -> local id, -1 when dropped
-  std::vector<int> u, v, street;    ///< per edge; street ids are compact 0..num_streets-1
-  std::vector<double> len;          ///< per edge [m]
-  std::vector<double> weight;       ///< per edge, normalised to [0, 1] (weight / max weight)
-  std::vector<double> heading;      ///< per edge, chord heading from u to v [rad]
-  std::vector<int> next_off, next;  ///< CSR: edges allowed after edge e: next[next_off[e]..next_off[e+1])
-  std::vector<int> out_off, out;    ///< CSR: edges leaving node i
+  int n = 0, m = 0;               ///< nodes, edges (local ids 0..n-1, 0..m-1)
+  std::vector<int> node_orig;     ///< local node -> RoadGraph node id
+  std::vector<int> edge_orig;     ///< local edge -> RoadGraph edge id
+  std::vector<int> node_local;    ///< RoadGraph node id -> local id, -1 when dropped
+  std::vector<int> u, v, street;  ///< per edge; street ids are compact 0..num_streets-1
+  std::vector<double> len;        ///< per edge [m]
+  std::vector<double> weight;     ///< per edge, normalised to [0, 1] (weight / max weight)
+  std::vector<double> heading;    ///< per edge, chord heading from u to v [rad]
+  std::vector<int> next_off,
+      next;  ///< CSR: edges allowed after edge e: next[next_off[e]..next_off[e+1])
+  std::vector<int> out_off, out;  ///< CSR: edges leaving node i
   int num_streets = 0;
-  std::vector<double> street_len;   ///< per street: length of its longest direction [m]
-  double total_street_len = 0.0;    ///< [m]
-  double total_edge_len = 0.0;      ///< sum of directed edge lengths [m]
-  double mean_len = 1.0;            ///< mean edge length [m]
-  bool restricted = false;          ///< turn permissions apply
+  std::vector<double> street_len;            ///< per street: length of its longest direction [m]
+  double total_street_len = 0.0;             ///< [m]
+  double total_edge_len = 0.0;               ///< sum of directed edge lengths [m]
+  double mean_len = 1.0;                     ///< mean edge length [m]
+  bool restricted = false;                   ///< turn permissions apply
   int dropped_nodes = 0, dropped_edges = 0;  ///< outside the largest legally connected part
 
   /// Largest strongly connected part under the turn permissions (components of the line graph,

@@ -14,7 +14,7 @@ struct RandomWalkStats {
 
 struct QLearningStats {
   long long episodes = 0, episodes_reaching_goal = 0, training_steps = 0, q_table_entries = 0;
-  double u_ref_logdet_per_edge = 0;  ///< the reward's uncertainty normaliser
+  double u_ref_logdet_per_edge = 0;      ///< the reward's uncertainty normaliser
   long long shortest_path_segments = 0;  ///< greedy roll-out stalls completed by shortest paths
   double shortest_path_length_m = 0;
   double learned_policy_share = 0;  ///< share of the route's length the learned policy chose
@@ -49,8 +49,7 @@ struct CoverageStats {
   double distances_seconds = 0, aco_seconds = 0, total_seconds = 0;
 };
 
-using PlannerStats =
-    std::variant<std::monostate, RandomWalkStats, QLearningStats, TspStats, PostmanStats,
-                 CoverageStats>;
+using PlannerStats = std::variant<std::monostate, RandomWalkStats, QLearningStats, TspStats,
+                                  PostmanStats, CoverageStats>;
 
 }  // namespace slamroute::rl

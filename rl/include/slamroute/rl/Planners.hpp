@@ -15,11 +15,11 @@ namespace slamroute::rl {
 
 /// What a planner returns, in PlanGraph-local edge ids.
 struct PlanOutput {
-  std::vector<int> edges;                   ///< edge sequence, the first leaves the start node
-  bool heuristic = false;                   ///< optimality not guaranteed
-  bool completed_by_shortest_paths = false; ///< finished by shortest paths after a stall / cap
+  std::vector<int> edges;                    ///< edge sequence, the first leaves the start node
+  bool heuristic = false;                    ///< optimality not guaranteed
+  bool completed_by_shortest_paths = false;  ///< finished by shortest paths after a stall / cap
   std::string notes;
-  PlannerStats stats;                       ///< the planner family's own figures
+  PlannerStats stats;  ///< the planner family's own figures
 };
 
 /// Coverage goal of an episode / a route: every node visited, or every street driven.

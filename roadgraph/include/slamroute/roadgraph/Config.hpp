@@ -1,7 +1,7 @@
 #pragma once
-// Parameters of the roadgraph module, with the paper's defaults and units. YAML section "roadgraph:".
-// Paper §3.1 fixes only the hollow cylinder (10 m / 25 m / 10 m) and the 14 normal neighbours;
-// every other value is our choice, documented where it is used.
+// Parameters of the roadgraph module, with the paper's defaults and units. YAML section
+// "roadgraph:". Paper §3.1 fixes only the hollow cylinder (10 m / 25 m / 10 m) and the 14 normal
+// neighbours; every other value is our choice, documented where it is used.
 #include <string>
 
 namespace slamroute::roadgraph {
@@ -9,15 +9,15 @@ namespace slamroute::roadgraph {
 /// Intersection (node) detection with the hollow cylinder (paper §3.1, Fig. 2b).
 struct NodeConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  double downsample_m = 2.0;         ///< voxel size trace points are thinned to first [m]
-  double inner_radius_m = 10.0;      ///< hollow cylinder inner radius [m] (paper)
-  double outer_radius_m = 25.0;      ///< hollow cylinder outer radius [m] (paper)
-  double height_m = 10.0;            ///< hollow cylinder height, centred on the point [m] (paper)
+  double downsample_m = 2.0;     ///< voxel size trace points are thinned to first [m]
+  double inner_radius_m = 10.0;  ///< hollow cylinder inner radius [m] (paper)
+  double outer_radius_m = 25.0;  ///< hollow cylinder outer radius [m] (paper)
+  double height_m = 10.0;        ///< hollow cylinder height, centred on the point [m] (paper)
   /// Euclidean clustering distance inside the cylinder [m]. 4 m: a two-way street's lane
   /// centres are 3.2 m apart and must form one cluster; streets further apart stay separate.
   double cluster_tolerance_m = 4.0;
-  int min_cluster_points = 3;        ///< smaller clusters in the cylinder are noise [points]
-  double min_branch_span_m = 4.0;    ///< a cluster must span this much radially to be a branch [m]
+  int min_cluster_points = 3;      ///< smaller clusters in the cylinder are noise [points]
+  double min_branch_span_m = 4.0;  ///< a cluster must span this much radially to be a branch [m]
   double min_branch_angle_deg = 30.0;  ///< clusters seen closer in bearing are one branch [deg]
   /// Parallel clusters (axes within parallel_angle_deg) on the same side of the point whose centre
   /// lines are closer than carriageway_gap_m are the two carriageways of one divided road.
@@ -28,23 +28,23 @@ struct NodeConfig {
   double wide_scale = 1.5;
   /// ... tried only where the paper's ring has points over at least this range of bearings [deg]
   double wide_min_coverage_deg = 100.0;
-  int min_branches = 3;              ///< clusters needed to call a point an intersection point
-  bool require_connected = true;     ///< count only branches linked to the point inside the disk
+  int min_branches = 3;           ///< clusters needed to call a point an intersection point
+  bool require_connected = true;  ///< count only branches linked to the point inside the disk
   /// With travel directions: an arm's axis is its vehicles' mean axis when the doubled-angle
   /// mean has at least this length relative to the sum of lengths (1 = all parallel).
   double min_axis_coherence = 0.5;
-  double travel_span_m = 5.0;        ///< travel direction from the trace this far behind/ahead [m]
-  int vote_iterations = 2;           ///< crossing re-evaluations per intersection point's vote
-  double vote_max_m = 25.0;          ///< crossings farther from the point are not accepted [m]
-  double vote_radius_m = 3.0;        ///< vote density radius (seed order) [m]
-  double node_radius_m = 10.0;       ///< votes within this of a seed vote form its node [m]
+  double travel_span_m = 5.0;   ///< travel direction from the trace this far behind/ahead [m]
+  int vote_iterations = 2;      ///< crossing re-evaluations per intersection point's vote
+  double vote_max_m = 25.0;     ///< crossings farther from the point are not accepted [m]
+  double vote_radius_m = 3.0;   ///< vote density radius (seed order) [m]
+  double node_radius_m = 10.0;  ///< votes within this of a seed vote form its node [m]
   /// Weaker nodes this close to a stronger one are absorbed [m]. 18 m: the carriageway crossings
   /// of two divided roads (or the corners of a big junction box) collect votes of their own
   /// 10-16 m apart; separate junctions that close become one node (bench/RESULTS.md).
   double merge_distance_m = 18.0;
   /// Candidates with fewer votes than this fraction of the median candidate's are dropped.
   double min_vote_fraction = 0.25;
-  int min_node_points = 3;           ///< groups with fewer votes are discarded as noise
+  int min_node_points = 3;  ///< groups with fewer votes are discarded as noise
   /// A group with at least this many times the median group's votes is a node even when its
   /// centre sees < min_branches (big junctions whose turning traffic links the arms in both
   /// rings around the centre, while the points voting for it see them apart) [ratio]; 0 = off.
@@ -102,15 +102,15 @@ void visitFields(V& v, NodeConfig& c) {
 /// Street (edge) clustering and attachment (paper §3.1, eqs. 1-2, Fig. 2c-d).
 struct EdgeConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  double clear_radius_m = 12.0;       ///< trace points this close to a node are removed [m]
-  double cluster_tolerance_m = 4.0;   ///< Euclidean clustering distance of street points [m]
-  int min_street_points = 5;          ///< smaller leftover clusters are dropped [points]
-  double attach_max_m = 22.0;         ///< a street end farther than this from a node dead-ends [m]
-  double end_merge_m = 20.0;          ///< dead ends this close are one node (an undriven corner) [m]
-  double polyline_step_m = 5.0;       ///< centreline vertex spacing [m]
-  double min_run_m = 8.0;             ///< travel along a street counted as a direction [m]
-  double max_gap_s = 3.0;             ///< a vehicle's trace breaks at larger time gaps [s]
-  int min_direction_runs = 1;         ///< runs needed to accept a direction of travel
+  double clear_radius_m = 12.0;      ///< trace points this close to a node are removed [m]
+  double cluster_tolerance_m = 4.0;  ///< Euclidean clustering distance of street points [m]
+  int min_street_points = 5;         ///< smaller leftover clusters are dropped [points]
+  double attach_max_m = 22.0;        ///< a street end farther than this from a node dead-ends [m]
+  double end_merge_m = 20.0;         ///< dead ends this close are one node (an undriven corner) [m]
+  double polyline_step_m = 5.0;      ///< centreline vertex spacing [m]
+  double min_run_m = 8.0;            ///< travel along a street counted as a direction [m]
+  double max_gap_s = 3.0;            ///< a vehicle's trace breaks at larger time gaps [s]
+  int min_direction_runs = 1;        ///< runs needed to accept a direction of travel
   bool split_at_passed_nodes = true;  ///< split a street cluster at a junction it runs through
   /// Links between junctions too close for a street to survive the clearing (ShortLinks.cpp):
   /// A vehicle this close to a node passes its junction [m]. 12 m = clear_radius_m: the node of a
@@ -172,14 +172,14 @@ void visitFields(V& v, DividedRoadConfig& c) {
 /// Edge weights from depth images (paper §3.1, eqs. 3-4).
 struct DepthConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  int pixel_stride = 4;              ///< use every n-th pixel in x and y [px]
-  int normal_neighbours = 14;        ///< nearest neighbours per normal (paper 14)
-  int search_window_px = 2;          ///< neighbour candidates within this many strided pixels
-  double depth_px_per_m = 40.0;      ///< eq. 3 scale: Y = D * this, so depth and pixels compare
-  double max_depth_m = 100.0;        ///< farther returns are ignored [m]
-  int min_normals = 50;              ///< fewer normals -> score 0 (nothing to match against)
-  double frame_max_dist_m = 20.0;    ///< frames farther from every street are ignored [m]
-  double fallback_weight = 1.0;      ///< weight when no depth frame is usable at all
+  int pixel_stride = 4;   ///< use every n-th pixel in x and y [px]
+  int normal_neighbours = 14;      ///< nearest neighbours per normal (paper 14)
+  int search_window_px = 2;        ///< neighbour candidates within this many strided pixels
+  double depth_px_per_m = 40.0;    ///< eq. 3 scale: Y = D * this, so depth and pixels compare
+  double max_depth_m = 100.0;      ///< farther returns are ignored [m]
+  int min_normals = 50;            ///< fewer normals -> score 0 (nothing to match against)
+  double frame_max_dist_m = 20.0;  ///< frames farther from every street are ignored [m]
+  double fallback_weight = 1.0;    ///< weight when no depth frame is usable at all
 };
 template <class V>
 void visitFields(V& v, DepthConfig& c) {
@@ -196,14 +196,14 @@ void visitFields(V& v, DepthConfig& c) {
 /// Comparison with a SUMO net and mapping of graph edges to SUMO edges.
 struct SumoMatchConfig {
   void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  double match_radius_m = 15.0;     ///< detected node matches a true intersection this close [m]
-  double sample_step_m = 4.0;       ///< polyline sampling for the SUMO edge mapping [m]
-  double max_lane_dist_m = 12.0;    ///< samples farther from every lane are not mapped [m]
-  double end_skip_m = 8.0;          ///< samples this close to an end node are skipped [m]
-  double stray_radius_m = 25.0;     ///< end edge arriving at u / leaving v this close: stray [m]
-  double stray_min_length_m = 20.0; ///< shorter end edges (junction complexes) are kept [m]
-  bool turns_from_net = true;       ///< turn permissions of the graph from the net's connections
-  double turn_max_detour_m = 60.0;  ///< SUMO edges allowed between two graph edges at a turn [m]
+  double match_radius_m = 15.0;      ///< detected node matches a true intersection this close [m]
+  double sample_step_m = 4.0;        ///< polyline sampling for the SUMO edge mapping [m]
+  double max_lane_dist_m = 12.0;     ///< samples farther from every lane are not mapped [m]
+  double end_skip_m = 8.0;           ///< samples this close to an end node are skipped [m]
+  double stray_radius_m = 25.0;      ///< end edge arriving at u / leaving v this close: stray [m]
+  double stray_min_length_m = 20.0;  ///< shorter end edges (junction complexes) are kept [m]
+  bool turns_from_net = true;        ///< turn permissions of the graph from the net's connections
+  double turn_max_detour_m = 60.0;   ///< SUMO edges allowed between two graph edges at a turn [m]
   /// Place-level validation: true intersections joined by a passenger edge this short are one
   /// place [m]. 25 m: the carriageways of a divided road are 10-25 m apart.
   double place_link_max_m = 25.0;
@@ -236,8 +236,8 @@ struct RoundaboutConfig {
   /// A vehicle circles the ring when a stretch of its path fits a circle (rms below
   /// max_fit_rms_m) and turns monotonically about it by at least min_sweep_deg. 120 deg: a turn
   /// at a crossing sweeps about 90 deg; a roundabout's through movement 150-200 deg.
-  double min_sweep_deg = 120.0;  ///< [deg]
-  double max_fit_rms_m = 0.8;    ///< [m]
+  double min_sweep_deg = 120.0;     ///< [deg]
+  double max_fit_rms_m = 0.8;       ///< [m]
   double centre_tolerance_m = 6.0;  ///< circle fits with centres this close are one ring [m]
   int min_vehicles = 3;             ///< distinct vehicles that must circle a ring
   /// Trace points this close to the radius are on the ring [m]. 3.5 m: a two-lane ring (Bologna)
@@ -253,8 +253,8 @@ struct RoundaboutConfig {
   /// 1 m: Ingolstadt's split arms then join and leave 7.8 m apart along the ring (5 m with 2.5 m).
   double join_width_m = 1.0;
   double min_run_sweep_deg = 20.0;  ///< a stay on the ring counts when it turns this far [deg]
-  double arm_gap_m = 4.0;  ///< joins (or leaves) farther apart along the ring: separate [m]
-  int min_arm_vehicles = 2;         ///< stays that must join (leave) where a junction is
+  double arm_gap_m = 4.0;         ///< joins (or leaves) farther apart along the ring: separate [m]
+  int min_arm_vehicles = 2;       ///< stays that must join (leave) where a junction is
   double junction_merge_m = 5.0;  ///< a join and a leave this close along the ring: one [m]
   /// Hollow-cylinder nodes within radius + this of the centre are replaced [m]. 14 m: the
   /// carriageways of a divided arm part 25-30 m from the centre of a 36 m ring; their fork is no
@@ -279,8 +279,9 @@ void visitFields(V& v, RoundaboutConfig& c) {
           "share of points along the ring circling in its sense (0-1)");
   v.field("max_inner_share", c.max_inner_share,
           "points inside half the radius relative to points on the ring (an empty middle)");
-  v.field("join_width_m", c.join_width_m,
-          "a vehicle joins (leaves) the ring where it first (last) comes this close to the radius [m]");
+  v.field(
+      "join_width_m", c.join_width_m,
+      "a vehicle joins (leaves) the ring where it first (last) comes this close to the radius [m]");
   v.field("min_run_sweep_deg", c.min_run_sweep_deg, "a stay on the ring turns this far [deg]");
   v.field("arm_gap_m", c.arm_gap_m, "joins (leaves) farther apart along the ring: separate [m]");
   v.field("min_arm_vehicles", c.min_arm_vehicles, "stays that must join (leave) at a junction");

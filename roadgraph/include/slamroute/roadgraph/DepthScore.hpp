@@ -27,8 +27,8 @@ DepthImage readDepthPng(const std::filesystem::path& path);
 void writeDepthPng(const std::filesystem::path& path, const DepthImage& img);
 
 struct FrameScore {
-  double score = 0.0;       ///< normalised entropy of the normal scatter eigenvalues, [0, 1]
-  int normals = 0;          ///< normals that entered the score
+  double score = 0.0;  ///< normalised entropy of the normal scatter eigenvalues, [0, 1]
+  int normals = 0;     ///< normals that entered the score
   Vec3 eigenvalues = Vec3::Zero();  ///< of the normals' scatter matrix, descending, sum 1
 };
 /// Eq. 3 reprojection, eq. 4 normals, spread score (see DepthScore.cpp for the definition).

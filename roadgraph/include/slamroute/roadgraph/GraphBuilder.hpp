@@ -26,7 +26,7 @@ struct GraphBuildStats {
 };
 
 struct GraphBuildResult {
-  RoadGraph graph;               ///< weights all 1 until assignDepthWeights
+  RoadGraph graph;                ///< weights all 1 until assignDepthWeights
   std::vector<char> node_is_end;  ///< per graph node: a dead-end node (not an intersection)
   GraphBuildStats stats;
   std::vector<Roundabout> roundabouts;  ///< found by detectRoundabouts, junctions among the nodes

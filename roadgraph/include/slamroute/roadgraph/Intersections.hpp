@@ -30,10 +30,10 @@ std::vector<Vec3> travelDirections(const Traces& traces, const std::vector<std::
 std::vector<Vec3> travelDirections(const Traces& traces, double span_m, double max_gap_s);
 
 struct IntersectionResult {
-  std::vector<Point3> nodes;              ///< one per junction (robust centre)
-  std::vector<int> branches;              ///< per node, branches seen at its centre
-  std::vector<char> is_intersection;      ///< per (downsampled) point: >= min_branches clusters
-  std::vector<int> node_of_point;         ///< per point, node id or -1
+  std::vector<Point3> nodes;          ///< one per junction (robust centre)
+  std::vector<int> branches;          ///< per node, branches seen at its centre
+  std::vector<char> is_intersection;  ///< per (downsampled) point: >= min_branches clusters
+  std::vector<int> node_of_point;     ///< per point, node id or -1
 };
 
 /// Runs the hollow-cylinder test on every point (TBB-parallel, deterministic), merges the

@@ -27,10 +27,10 @@ struct Roundabout {
 /// Throws std::invalid_argument (one line: the roadgraph.roundabouts keys and their limits).
 void checkRoundaboutConfig(const RoundaboutConfig& cfg);
 
-/// Finds roundabouts (checks cfg first). `order`: trace point indices by vehicle, then time; `travel`: per trace
-/// point its unit direction of travel (zero when unknown, see travelDirections); `max_gap_s`:
-/// a vehicle's trace breaks at larger time gaps; `half_height_m`: points farther in z from the
-/// ring are not on it (an overpass). Deterministic.
+/// Finds roundabouts (checks cfg first). `order`: trace point indices by vehicle, then time;
+/// `travel`: per trace point its unit direction of travel (zero when unknown, see
+/// travelDirections); `max_gap_s`: a vehicle's trace breaks at larger time gaps; `half_height_m`:
+/// points farther in z from the ring are not on it (an overpass). Deterministic.
 std::vector<Roundabout> detectRoundabouts(const Traces& traces,
                                           const std::vector<std::size_t>& order,
                                           const std::vector<Vec3>& travel,

@@ -10,8 +10,8 @@
 namespace slamroute::roadgraph {
 
 struct TracePoint {
-  double t = 0.0;           ///< [s]
-  int vehicle = 0;          ///< index into Traces::vehicles
+  double t = 0.0;               ///< [s]
+  int vehicle = 0;              ///< index into Traces::vehicles
   Point3 pos = Point3::Zero();  ///< [m]
   double heading_deg = 0.0;     ///< 0 = +x (east), counter-clockwise [deg]
   double speed = 0.0;           ///< [m/s]

@@ -10,11 +10,11 @@
 namespace slamroute::simulate {
 
 struct Config {
-  WorldConfig world;         ///< procedural 3D city
-  LidarConfig lidar;         ///< LiDAR geometry + noise
-  DepthCameraConfig depth;   ///< depth camera
-  SurveyConfig survey;       ///< survey drives (SUMO)
-  DriveConfig drive;         ///< route drives (SUMO)
+  WorldConfig world;        ///< procedural 3D city
+  LidarConfig lidar;        ///< LiDAR geometry + noise
+  DepthCameraConfig depth;  ///< depth camera
+  SurveyConfig survey;      ///< survey drives (SUMO)
+  DriveConfig drive;        ///< route drives (SUMO)
 };
 
 template <class V>

@@ -22,7 +22,8 @@ struct DepthImage {
   int width = 0, height = 0;
   std::vector<std::uint16_t> mm;  ///< row-major, width*height; 0 = no return
   std::uint16_t at(int u, int v) const {
-    return mm[static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u)];
+    return mm[static_cast<std::size_t>(v) * static_cast<std::size_t>(width) +
+              static_cast<std::size_t>(u)];
   }
 };
 

@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "slamroute/core/Scan.hpp"
 #include "slamroute/core/Odometry.hpp"
+#include "slamroute/core/Scan.hpp"
 #include "slamroute/core/Trajectory.hpp"
 #include "slamroute/simulate/Config.hpp"
 
@@ -110,7 +110,8 @@ std::size_t renderStackedScansPng(const ScanSource& scans, const Trajectory& pos
 /// The wheel odometry + gyro a survey car records, from the ground-truth sensor poses: forward
 /// speed and yaw rate per pose interval, with a per-drive speed scale error and gyro bias and
 /// white noise per sample (DriveConfig odometry_* / gyro_*), seeded. Deterministic.
-WheelOdometry simulateOdometry(const Trajectory& groundtruth, const DriveConfig& cfg, std::uint64_t seed);
+WheelOdometry simulateOdometry(const Trajectory& groundtruth, const DriveConfig& cfg,
+                               std::uint64_t seed);
 
 /// Runs the drive (reads the net and the route, validates, simulates, writes out_dir).
 DriveResult runDrive(const DriveOptions& opts, const Config& cfg);

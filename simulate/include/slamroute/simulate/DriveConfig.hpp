@@ -7,15 +7,15 @@ namespace slamroute::simulate {
 /// surface at its four wheels and pitches, rolls and heaves on a damped spring per axis, driven by
 /// the road under the wheels and by braking, accelerating and cornering.
 struct VehicleBodyConfig {
-  double wheelbase_m = 2.7;             ///< front to rear axle [m]
-  double track_m = 1.6;                 ///< left to right wheel [m]
-  double front_overhang_m = 0.9;        ///< front bumper (SUMO's reference point) to front axle [m]
-  double pitch_hz = 1.4;                ///< natural frequency of the body's pitch [Hz]
-  double roll_hz = 1.2;                 ///< ... roll [Hz]
-  double heave_hz = 1.3;                ///< ... heave [Hz]
-  double damping_ratio = 0.4;           ///< of each axis (1 = critically damped)
-  double pitch_deg_per_mps2 = 0.15;     ///< nose dive per m/s^2 of braking (squat: accelerating) [deg]
-  double roll_deg_per_mps2 = 0.35;      ///< outward roll per m/s^2 of cornering [deg]
+  double wheelbase_m = 2.7;          ///< front to rear axle [m]
+  double track_m = 1.6;              ///< left to right wheel [m]
+  double front_overhang_m = 0.9;     ///< front bumper (SUMO's reference point) to front axle [m]
+  double pitch_hz = 1.4;             ///< natural frequency of the body's pitch [Hz]
+  double roll_hz = 1.2;              ///< ... roll [Hz]
+  double heave_hz = 1.3;             ///< ... heave [Hz]
+  double damping_ratio = 0.4;        ///< of each axis (1 = critically damped)
+  double pitch_deg_per_mps2 = 0.15;  ///< nose dive per m/s^2 of braking (squat: accelerating) [deg]
+  double roll_deg_per_mps2 = 0.35;   ///< outward roll per m/s^2 of cornering [deg]
 };
 
 template <class V>
@@ -32,8 +32,8 @@ void visitFields(V& v, VehicleBodyConfig& c) {
 }
 
 struct DriveConfig {
-  void validate() const;  ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
-  double record_hz = 10.0;      ///< ground-truth pose rate [Hz] (a multiple of the 0.1 s step)
+  void validate() const;    ///< values that cannot work: std::invalid_argument (ConfigValidate.cpp)
+  double record_hz = 10.0;  ///< ground-truth pose rate [Hz] (a multiple of the 0.1 s step)
   double step_length_s = 0.1;   ///< SUMO simulation step [s]
   double traffic_per_km = 3.0;  ///< background vehicles kept per km of drivable road
   double traffic_range_m =
@@ -44,15 +44,15 @@ struct DriveConfig {
   double min_avg_speed_mps =
       1.0;  ///< the drive fails when the route takes longer than length / this + 300 s [m/s]
   /// Wheel odometry + gyro recorded with the drive (odometry.csv, from the ground truth):
-  double odometry_scale_sigma = 0.01;     ///< wheel-speed scale error, 1 sigma, one per drive
-  double odometry_speed_noise_mps = 0.05; ///< white speed noise per sample, 1 sigma [m/s]
-  double gyro_bias_sigma_deg_s = 0.05;    ///< yaw-rate bias, 1 sigma, one per drive [deg/s]
-  double gyro_noise_deg_s = 0.1;          ///< white yaw-rate noise per sample, 1 sigma [deg/s]
+  double odometry_scale_sigma = 0.01;      ///< wheel-speed scale error, 1 sigma, one per drive
+  double odometry_speed_noise_mps = 0.05;  ///< white speed noise per sample, 1 sigma [m/s]
+  double gyro_bias_sigma_deg_s = 0.05;     ///< yaw-rate bias, 1 sigma, one per drive [deg/s]
+  double gyro_noise_deg_s = 0.1;           ///< white yaw-rate noise per sample, 1 sigma [deg/s]
   /// IMU roll and pitch levelled against gravity (a MEMS IMU's accelerometers; LeGO-LOAM uses
   /// them). Negative = not recorded.
-  double tilt_bias_sigma_deg = 0.05;      ///< roll / pitch bias, 1 sigma, one per drive [deg]
-  double tilt_noise_deg = 0.1;            ///< white roll / pitch noise per sample, 1 sigma [deg]
-  VehicleBodyConfig body;                 ///< suspension: the sensor pose follows the road
+  double tilt_bias_sigma_deg = 0.05;  ///< roll / pitch bias, 1 sigma, one per drive [deg]
+  double tilt_noise_deg = 0.1;        ///< white roll / pitch noise per sample, 1 sigma [deg]
+  VehicleBodyConfig body;             ///< suspension: the sensor pose follows the road
 };
 
 template <class V>
@@ -72,9 +72,11 @@ void visitFields(V& v, DriveConfig& c) {
   v.field("odometry_speed_noise_mps", c.odometry_speed_noise_mps,
           "wheel odometry white speed noise, 1 sigma [m/s]");
   v.field("tilt_bias_sigma_deg", c.tilt_bias_sigma_deg,
-          "IMU roll/pitch bias, 1 sigma, one per drive; negative = no roll/pitch in odometry.csv [deg]");
+          "IMU roll/pitch bias, 1 sigma, one per drive; negative = no roll/pitch in odometry.csv "
+          "[deg]");
   v.field("tilt_noise_deg", c.tilt_noise_deg, "IMU roll/pitch white noise, 1 sigma [deg]");
-  v.field("gyro_bias_sigma_deg_s", c.gyro_bias_sigma_deg_s, "gyro yaw-rate bias, 1 sigma, one per drive [deg/s]");
+  v.field("gyro_bias_sigma_deg_s", c.gyro_bias_sigma_deg_s,
+          "gyro yaw-rate bias, 1 sigma, one per drive [deg/s]");
   v.field("gyro_noise_deg_s", c.gyro_noise_deg_s, "gyro white yaw-rate noise, 1 sigma [deg/s]");
   v.section("body", c.body);
 }

@@ -15,18 +15,20 @@ struct LidarConfig {
   /// 2 cores. Use `--sensor paper` / `simulate.lidar.preset: paper` for the paper's 64 channels.
   std::string preset = "vlp16";
   LidarSpec spec;
-  double range_sigma_m = 0.02;   ///< Gaussian range noise, 1 sigma (HDL-64E class: ~2 cm); 0 = none [m]
-  double dropout_prob = 0.01;    ///< probability that a return is dropped at random; 0 = none
+  double range_sigma_m =
+      0.02;  ///< Gaussian range noise, 1 sigma (HDL-64E class: ~2 cm); 0 = none [m]
+  double dropout_prob = 0.01;  ///< probability that a return is dropped at random; 0 = none
   /// A spinning sensor fires its columns one after another over the sweep while the vehicle
   /// moves, so a raw scan is distorted by the motion (each point in the sensor frame of its own
   /// firing time, ScanPoint::dt). false: every column fires at the sweep's start.
   bool motion_distortion = true;
-  double sweep_period_s = 0.1;   ///< one revolution [s] (10 Hz, the drive's record rate)
+  double sweep_period_s = 0.1;  ///< one revolution [s] (10 Hz, the drive's record rate)
 };
 
 template <class V>
 void visitFields(V& v, LidarConfig& c) {
-  v.field("preset", c.preset, "paper | vlp16 | hdl32 (spec fields differing from defaults override)");
+  v.field("preset", c.preset,
+          "paper | vlp16 | hdl32 (spec fields differing from defaults override)");
   v.section("spec", c.spec);
   v.field("range_sigma_m", c.range_sigma_m, "Gaussian range noise sigma, 0 = noise-free [m]");
   v.field("dropout_prob", c.dropout_prob, "random dropout probability per return");

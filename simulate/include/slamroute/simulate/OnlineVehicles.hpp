@@ -13,12 +13,12 @@
 namespace slamroute::simulate {
 
 struct OnlineVehicleState {
-  bool in_net = false;        ///< departed and not arrived
-  std::string edge;           ///< current non-internal edge ("" inside a junction)
+  bool in_net = false;  ///< departed and not arrived
+  std::string edge;     ///< current non-internal edge ("" inside a junction)
   Point3 pos = Point3::Zero();
-  double angle_deg = 0.0;     ///< SUMO angle (0 = north, clockwise)
+  double angle_deg = 0.0;  ///< SUMO angle (0 = north, clockwise)
   double slope_deg = 0.0;
-  double odometer_m = 0.0;    ///< distance driven since departure [m]
+  double odometer_m = 0.0;  ///< distance driven since departure [m]
 };
 
 class OnlineVehicles {

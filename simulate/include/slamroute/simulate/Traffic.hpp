@@ -21,8 +21,8 @@ inline constexpr const char* kTrafficFile = "traffic.csv";
 
 struct VehicleBox {
   std::string id;
-  double x = 0, y = 0, z = 0;   ///< bottom-face centre, net frame [m]
-  double heading_deg = 0;       ///< 0 = +x, counter-clockwise [deg]
+  double x = 0, y = 0, z = 0;                      ///< bottom-face centre, net frame [m]
+  double heading_deg = 0;                          ///< 0 = +x, counter-clockwise [deg]
   double length = 4.5, width = 1.8, height = 1.5;  ///< [m]
 };
 

@@ -26,7 +26,17 @@
 namespace slamroute::simulate {
 
 enum class SurfaceKind : std::uint8_t {
-  Ground = 0, Road, Sidewalk, Deck, Pillar, Parapet, Building, Wall, Pole, Tree, Vehicle,
+  Ground = 0,
+  Road,
+  Sidewalk,
+  Deck,
+  Pillar,
+  Parapet,
+  Building,
+  Wall,
+  Pole,
+  Tree,
+  Vehicle,
   Furniture,  ///< signs, bollards, bus shelters
   ParkedCar,  ///< parked cars beside the pavements (part of the static world)
   Fence,      ///< post-and-rail fences along open streets
@@ -38,15 +48,15 @@ enum class StreetKind : std::uint8_t { Open = 0, Wall, Rich };
 const char* streetKindName(StreetKind k);
 
 struct TriangleMesh {
-  std::vector<Eigen::Vector3f> vertices;    ///< net frame [m]
-  std::vector<Eigen::Vector3i> triangles;   ///< indices into vertices, counter-clockwise = outside
-  std::vector<SurfaceKind> kinds;           ///< one per triangle
+  std::vector<Eigen::Vector3f> vertices;   ///< net frame [m]
+  std::vector<Eigen::Vector3i> triangles;  ///< indices into vertices, counter-clockwise = outside
+  std::vector<SurfaceKind> kinds;          ///< one per triangle
 };
 
 struct RayHit {
   bool hit = false;
-  double range_m = 0.0;            ///< distance along the (unit) direction [m]
-  Vec3 normal = Vec3::UnitZ();     ///< unit geometric normal facing the ray origin
+  double range_m = 0.0;         ///< distance along the (unit) direction [m]
+  Vec3 normal = Vec3::UnitZ();  ///< unit geometric normal facing the ray origin
   SurfaceKind kind = SurfaceKind::Ground;
 };
 

@@ -6,34 +6,34 @@
 namespace slamroute::simulate {
 
 struct WorldConfig {
-  std::string poly_file = "";             ///< SUMO .poly.xml with type="building" polygons; "" = procedural
-  double ground_margin_m = 150.0;         ///< ground plane extends this far beyond the net [m]
-  double sidewalk_width_m = 2.5;          ///< sidewalk beside the outermost lane [m]
-  double curb_height_m = 0.15;            ///< sidewalk top above the road [m]
-  double elevated_min_m = 2.5;            ///< a lane this far above the local ground is a bridge deck [m]
-  double deck_thickness_m = 1.0;          ///< bridge deck thickness below the road surface [m]
-  double parapet_height_m = 1.0;          ///< railing wall on bridge decks [m]
-  double pillar_spacing_m = 18.0;         ///< distance between bridge pillars along the deck [m]
-  double pillar_half_size_m = 0.6;        ///< half side of a square pillar [m]
-  double junction_clearance_m = 6.0;      ///< no building/pole/tree within this of a junction shape [m]
-  double road_clearance_m = 1.0;          ///< min gap between any building and any lane edge [m]
-  double rich_share = 0.45;               ///< share of streets lined with varied buildings, poles, trees
-  double wall_share = 0.2;                ///< share of streets lined with long uniform walls
+  std::string poly_file = "";  ///< SUMO .poly.xml with type="building" polygons; "" = procedural
+  double ground_margin_m = 150.0;   ///< ground plane extends this far beyond the net [m]
+  double sidewalk_width_m = 2.5;    ///< sidewalk beside the outermost lane [m]
+  double curb_height_m = 0.15;      ///< sidewalk top above the road [m]
+  double elevated_min_m = 2.5;      ///< a lane this far above the local ground is a bridge deck [m]
+  double deck_thickness_m = 1.0;    ///< bridge deck thickness below the road surface [m]
+  double parapet_height_m = 1.0;    ///< railing wall on bridge decks [m]
+  double pillar_spacing_m = 18.0;   ///< distance between bridge pillars along the deck [m]
+  double pillar_half_size_m = 0.6;  ///< half side of a square pillar [m]
+  double junction_clearance_m = 6.0;  ///< no building/pole/tree within this of a junction shape [m]
+  double road_clearance_m = 1.0;      ///< min gap between any building and any lane edge [m]
+  double rich_share = 0.45;  ///< share of streets lined with varied buildings, poles, trees
+  double wall_share = 0.2;   ///< share of streets lined with long uniform walls
   // the rest (1 - rich - wall) are open fields: nothing but the road and a few sparse poles
-  double setback_min_m = 1.5;             ///< building front behind the sidewalk, min [m]
-  double setback_max_m = 10.0;            ///< ... max [m]
-  double frontage_min_m = 8.0;            ///< building length along the street, min [m]
-  double frontage_max_m = 35.0;           ///< ... max [m]
-  double building_depth_min_m = 8.0;      ///< building extent away from the street, min [m]
-  double building_depth_max_m = 22.0;     ///< ... max [m]
-  double height_min_m = 5.0;              ///< building height, min [m]
-  double height_max_m = 35.0;             ///< ... max [m]
-  double gap_max_m = 12.0;                ///< gap between neighbouring buildings, max [m]
-  double wall_height_m = 3.0;             ///< uniform wall height on "wall" streets [m]
-  double wall_setback_m = 3.0;            ///< uniform wall distance behind the sidewalk [m]
-  double pole_spacing_m = 25.0;           ///< street-light pole spacing on rich streets [m]
-  double tree_spacing_m = 14.0;           ///< tree spacing on rich streets (with jitter) [m]
-  double open_pole_spacing_m = 80.0;      ///< pole spacing on open-field streets [m]
+  double setback_min_m = 1.5;          ///< building front behind the sidewalk, min [m]
+  double setback_max_m = 10.0;         ///< ... max [m]
+  double frontage_min_m = 8.0;         ///< building length along the street, min [m]
+  double frontage_max_m = 35.0;        ///< ... max [m]
+  double building_depth_min_m = 8.0;   ///< building extent away from the street, min [m]
+  double building_depth_max_m = 22.0;  ///< ... max [m]
+  double height_min_m = 5.0;           ///< building height, min [m]
+  double height_max_m = 35.0;          ///< ... max [m]
+  double gap_max_m = 12.0;             ///< gap between neighbouring buildings, max [m]
+  double wall_height_m = 3.0;          ///< uniform wall height on "wall" streets [m]
+  double wall_setback_m = 3.0;         ///< uniform wall distance behind the sidewalk [m]
+  double pole_spacing_m = 25.0;        ///< street-light pole spacing on rich streets [m]
+  double tree_spacing_m = 14.0;        ///< tree spacing on rich streets (with jitter) [m]
+  double open_pole_spacing_m = 80.0;   ///< pole spacing on open-field streets [m]
   // Relief of roads and ground: neither is a plane, so a LiDAR's ground rings differ from scan
   // to scan as on real roads, and the vehicle rolls and pitches over them.
   double road_camber_pct = 2.0;           ///< cross-fall from the road's crown to its kerbs [%]
@@ -52,7 +52,8 @@ void visitFields(V& v, WorldConfig& c) {
   v.field("ground_margin_m", c.ground_margin_m, "ground plane margin beyond the net [m]");
   v.field("sidewalk_width_m", c.sidewalk_width_m, "sidewalk width [m]");
   v.field("curb_height_m", c.curb_height_m, "curb / sidewalk height [m]");
-  v.field("elevated_min_m", c.elevated_min_m, "lane height above ground that makes a bridge deck [m]");
+  v.field("elevated_min_m", c.elevated_min_m,
+          "lane height above ground that makes a bridge deck [m]");
   v.field("deck_thickness_m", c.deck_thickness_m, "bridge deck thickness [m]");
   v.field("parapet_height_m", c.parapet_height_m, "bridge parapet height [m]");
   v.field("pillar_spacing_m", c.pillar_spacing_m, "bridge pillar spacing [m]");
