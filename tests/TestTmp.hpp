@@ -3,7 +3,6 @@
 // (-j2), so two tests of one suite may run at once: each test writes only below its own
 // folder, build/test_tmp/<Suite>.<Test>/, which it clears when it first asks for it.
 #include <gtest/gtest.h>
-#include "TestTmp.hpp"
 
 #include <filesystem>
 #include <string>
