@@ -326,13 +326,9 @@ DriveResult runDrive(const DriveOptions& opts, const Config& cfg) {
   const World world = World::build(net, cfg.world, opts.seed);
   // the sensor rides on the body, which stands on the world's road surface
   rec.groundtruth = vehicleSensorPoses(rec.groundtruth, world, cfg.drive.body, spec.mount_height_m);
-  DriveResult res =
-      writeDriveFolder(staging.path(), net, edges, rec, world, cfg, spec, opts, opts.seed);
-  staging.commit();
-  res.out_dir = staging.target();
-  res.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  return res;
+  return committedResult(
+      staging, writeDriveFolder(staging.path(), net, edges, rec, world, cfg, spec, opts, opts.seed),
+      wall0);
 }
 
 }  // namespace slamroute::simulate

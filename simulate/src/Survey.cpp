@@ -288,11 +288,7 @@ SurveyResult runSurvey(const SurveyOptions& opts, const Config& cfg) {
   writeDepthFrames(staging.path() / "depth", net, cfg, opts.seed, rec.shots);
   writeSurveyJson(staging.path() / "survey.json", opts, sc, res, unvisited);
   res.bytes_written = folderBytes(staging.path());
-  staging.commit();
-  res.out_dir = staging.target();
-  res.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  return res;
+  return committedResult(staging, std::move(res), wall0);
 }
 
 }  // namespace slamroute::simulate

@@ -30,6 +30,17 @@ test::Scene townBlock() {
   return scene;
 }
 
+/// A loop closer with the default config on an empty keyframe graph, in the town block seen by a
+/// VLP-16 mounted 1.8 m above the road.
+struct LoopRig {
+  Config cfg;
+  test::Scene scene = townBlock();
+  LidarSpec spec = lidarPreset("vlp16");
+  slam::KeyframeGraph g{cfg};
+  slam::LoopCloser closer{cfg, 1.8};
+  StageTimes times;
+};
+
 TEST(KeyframeGraph, OdometryEdgesChainTheKeyframesAndALoopPullsThemBack) {
   Config cfg;
   cfg.mapping.local_map_keyframes = 2;
@@ -55,12 +66,8 @@ TEST(KeyframeGraph, OdometryEdgesChainTheKeyframesAndALoopPullsThemBack) {
 }
 
 TEST(LoopCloser, ARevisitWithDriftClosesAndCorrectsIt) {
-  Config cfg;
-  const test::Scene scene = townBlock();
-  const LidarSpec spec = lidarPreset("vlp16");
-  slam::KeyframeGraph g(cfg);
-  slam::LoopCloser closer(cfg, 1.8);
-  StageTimes times;
+  LoopRig rig;
+  auto& [cfg, scene, spec, g, closer, times] = rig;
   // Out along the street and back: the last keyframe is at the first place, estimated 0.6 m off.
   const double xs[] = {0, 10, 20, 30, 0};
   for (int k = 0; k < 5; ++k) {
@@ -114,12 +121,8 @@ TEST_P(PlaceSearch, ThePlaceDescriptorFindsARevisitTheEstimateHasDriftedAwayFrom
 INSTANTIATE_TEST_SUITE_P(OffOrWithOdometry, PlaceSearch, ::testing::Bool());
 
 TEST(LoopCloser, NothingOldEnoughOrNearEnoughIsNoCandidate) {
-  Config cfg;
-  const test::Scene scene = townBlock();
-  const LidarSpec spec = lidarPreset("vlp16");
-  slam::KeyframeGraph g(cfg);
-  slam::LoopCloser closer(cfg, 1.8);
-  StageTimes times;
+  LoopRig rig;
+  auto& [cfg, scene, spec, g, closer, times] = rig;
   const Cloud c = cloudOf(test::scanScene(scene, at(0, 0), spec));
   g.add(0.0, 0, at(0, 0), c, c, c);
   g.add(10.0, 1, at(0.5, 0), c, c, c);  // near, but only 10 s later

@@ -14,6 +14,17 @@ namespace {
 using test::Box;
 using test::Scene;
 
+/// The default LiDAR's scan of `scene` from 1.8 m above the origin, projected, its ground
+/// segmented and the rest clustered.
+RangeImage segmentedScan(const Scene& scene, const Config& cfg) {
+  const LidarSpec spec;
+  const Scan scan = test::scanScene(scene, test::poseXYZYaw(0, 0, 1.8, 0.0), spec);
+  RangeImage img = projectScan(scan, spec, cfg);
+  segmentGround(img, cfg);
+  clusterRangeImage(img, cfg);
+  return img;
+}
+
 TEST(RangeImage, PlanarGroundIsGround) {
   Scene scene;  // ground only
   const LidarSpec spec;
@@ -31,12 +42,8 @@ TEST(RangeImage, PlanarGroundIsGround) {
 TEST(RangeImage, WallIsNotGroundAndFormsACluster) {
   Scene scene;
   scene.boxes.push_back({{8.0, -10.0, 0.0}, {9.0, 10.0, 8.0}});  // a wall 8 m ahead
-  const LidarSpec spec;
-  const Scan scan = test::scanScene(scene, test::poseXYZYaw(0, 0, 1.8, 0.0), spec);
   Config cfg;
-  RangeImage img = projectScan(scan, spec, cfg);
-  segmentGround(img, cfg);
-  clusterRangeImage(img, cfg);
+  const RangeImage img = segmentedScan(scene, cfg);
   int wall = 0, wall_ground = 0, wall_clustered = 0;
   for (std::size_t i = 0; i < img.range.size(); ++i) {
     if (img.range[i] == 0 || img.point[i].z() < -1.0) continue;  // wall points are above z=-1
@@ -60,13 +67,7 @@ TEST(RangeImage, WallIsNotGroundAndFormsACluster) {
 TEST(RangeImage, SmallClustersAreOutliers) {
   Scene scene;
   scene.boxes.push_back({{20.0, 0.0, 1.0}, {20.05, 0.05, 1.05}});  // a 5 cm floating speck
-  const LidarSpec spec;
-  const Scan scan = test::scanScene(scene, test::poseXYZYaw(0, 0, 1.8, 0.0), spec);
-  Config cfg;
-  RangeImage img = projectScan(scan, spec, cfg);
-  segmentGround(img, cfg);
-  clusterRangeImage(img, cfg);
-  EXPECT_EQ(img.clusters, 0);
+  EXPECT_EQ(segmentedScan(scene, Config{}).clusters, 0);
 }
 
 TEST(RangeImage, EmptyAndNaNScansGiveEmptyImages) {

@@ -6,6 +6,7 @@
 // aside first). SIGINT, SIGTERM and SIGHUP remove the temporary folder; one of a process killed
 // otherwise is removed by the next StagingDir for the same target, which also puts back a
 // previous result that was set aside when the kill came.
+#include <chrono>
 #include <filesystem>
 #include <string>
 
@@ -30,5 +31,17 @@ class StagingDir {
   std::string marker_;
   bool committed_ = false;
 };
+
+/// Commits `staging` and completes a recording's result: where it now lives and the wall time
+/// since `wall0` (a result type with out_dir and wall_seconds).
+template <class Result>
+Result committedResult(StagingDir& staging, Result res,
+                       std::chrono::steady_clock::time_point wall0) {
+  staging.commit();
+  res.out_dir = staging.target();
+  res.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return res;
+}
 
 }  // namespace slamroute
