@@ -150,12 +150,18 @@ void ExploreRun::follow(simulate::OnlineVehicles& vehicles, int k) {
                                                  s.slope_deg, lidar_.spec().mount_height_m);
   if (x.dead_reckoning) x.dead_reckoning->step(result_.end_time_s, sensor);
   if (x.odometer_m - x.last_scan_m >= cfg_.sensor.scan_spacing_m) scan(k, s, sensor);
-  if (s.edge.empty()) return;
+  // x.route's index of the street it is on or last left (-1 before its first route)
+  const int at = static_cast<int>(x.route.size()) - 1 - s.route_edges_ahead;
+  if (s.edge.empty()) {
+    if (at > 0) passUnseen(vehicles, k, at, result_.end_time_s);
+    return;
+  }
   const auto it = edge_of_.find(s.edge);
   if (it == edge_of_.end())
     throw std::runtime_error(opts_.net.string() + ": explorer " + x.id +
                              " left the drivable part on '" + s.edge + "'");
-  if (it->second != x.edge) enterEdge(vehicles, k, it->second, result_.end_time_s);
+  // at > 0 with the same street: it came round to it again, every street between unseen
+  if (it->second != x.edge || at > 0) enterEdge(vehicles, k, at, it->second, result_.end_time_s);
 }
 
 // The sweep is taken at the true sensor pose and enters the grid at the pose the vehicle
@@ -195,19 +201,40 @@ void ExploreRun::advance(int k, int edge, double t) {
 // The route becomes [edge, chosen turn, provisional turns for another kLookaheadM]: streets
 // shorter than one step's travel (real nets have chains of sub-metre edges) may be passed
 // between two looks, and the vehicle must never run out of route. Streets passed that way are
-// counted as driven; their turns were the provisional ones.
-void ExploreRun::enterEdge(simulate::OnlineVehicles& vehicles, int k, int edge, double t) {
-  constexpr double kLookaheadM = 80.0;
+// counted as driven; their turns were the provisional ones. `at`: x.route's index of `edge`.
+void ExploreRun::enterEdge(simulate::OnlineVehicles& vehicles, int k, int at, int edge, double t) {
   Explorer& x = explorers_[static_cast<std::size_t>(k)];
-  const auto at = std::find(x.route.begin() + (x.route.empty() ? 0 : 1), x.route.end(), edge);
-  if (at != x.route.end())
-    for (auto it = x.route.begin() + 1; it != at; ++it) advance(k, *it, t);
+  if (at > 0 && x.route[static_cast<std::size_t>(at)] != edge)
+    throw std::logic_error("explore: " + x.id + " is on " + sumoEdge(edge) +
+                           ", not where its route says");
+  for (int i = 1; i < at; ++i) advance(k, x.route[static_cast<std::size_t>(i)], t);
   advance(k, edge, t);
   for (int i = pg_.nextBegin(edge); i < pg_.nextEnd(edge); ++i)
     streets_.markOffered(pg_.next[static_cast<std::size_t>(i)]);
   x.route = {edge, chooseNext(k)};
-  for (double ahead = 0.0; ahead < kLookaheadM && x.route.size() < 12;) {
-    x.route.push_back(wander(x.route.back()));
+  sendRoute(vehicles, k, t);
+}
+
+// Seen inside a junction after x.route[at]: it drove that street (and those before it) between
+// two looks, and the junction may lead onto streets as short, so it is never seen on a street
+// again until its route runs out (a U-turn into a sub-metre street whose far end turns it round
+// again). It keeps the turn it is taking; the provisional ones after it are chosen afresh.
+void ExploreRun::passUnseen(simulate::OnlineVehicles& vehicles, int k, int at, double t) {
+  Explorer& x = explorers_[static_cast<std::size_t>(k)];
+  if (at + 1 >= static_cast<int>(x.route.size()))
+    throw std::logic_error("explore: " + x.id + " is in a junction beyond its route");
+  for (int i = 1; i <= at; ++i) advance(k, x.route[static_cast<std::size_t>(i)], t);
+  x.route = {x.route[static_cast<std::size_t>(at)], x.route[static_cast<std::size_t>(at) + 1]};
+  sendRoute(vehicles, k, t);
+}
+
+/// Extends x.route by the provisional turns and hands it to SUMO.
+void ExploreRun::sendRoute(simulate::OnlineVehicles& vehicles, int k, double t) {
+  constexpr double kLookaheadM = 80.0;
+  constexpr std::size_t kMaxEdges = 256;  // sub-metre edges: a bound, not the usual end
+  Explorer& x = explorers_[static_cast<std::size_t>(k)];
+  for (double ahead = 0.0; ahead < kLookaheadM && x.route.size() < kMaxEdges;) {
+    x.route.push_back(wander(x.route.back(), x.route));
     ahead += pg_.len[static_cast<std::size_t>(x.route.back())];
   }
   std::vector<std::string> sumo;
@@ -237,17 +264,21 @@ int ExploreRun::chooseNext(int k) {
   targets_[static_cast<std::size_t>(k)] = d.target;
   x.idle = d.path.empty();
   if (!x.idle) x.settled = false;
-  return x.idle ? wander(x.edge) : d.path.front();
+  return x.idle ? wander(x.edge, {x.edge}) : d.path.front();
 }
 
-/// With nothing to do, take the turn after `e` driven least often (lowest id on ties).
-int ExploreRun::wander(int e) const {
+/// With nothing to do, take the turn after `e` driven least often, a street already in `planned`
+/// counting as driven once more (lowest id on ties): a provisional route does not go back and
+/// forth between two streets nobody has finished yet.
+int ExploreRun::wander(int e, const std::vector<int>& planned) const {
+  auto times = [&](int n) {
+    return drive_count_[static_cast<std::size_t>(n)] +
+           static_cast<int>(std::count(planned.begin(), planned.end(), n));
+  };
   int best = -1;
   for (int i = pg_.nextBegin(e); i < pg_.nextEnd(e); ++i) {
     const int n = pg_.next[static_cast<std::size_t>(i)];
-    if (best < 0 ||
-        drive_count_[static_cast<std::size_t>(n)] < drive_count_[static_cast<std::size_t>(best)])
-      best = n;
+    if (best < 0 || times(n) < times(best)) best = n;
   }
   if (best < 0) throw std::runtime_error(opts_.net.string() + ": no turn leaves a drivable street");
   return best;

@@ -47,9 +47,11 @@ class ExploreRun {
   void depart(simulate::OnlineVehicles& vehicles);
   void follow(simulate::OnlineVehicles& vehicles, int k);
   void scan(int k, const simulate::OnlineVehicleState& s, const Pose3& sensor);
-  void enterEdge(simulate::OnlineVehicles& vehicles, int k, int edge, double t);
+  void enterEdge(simulate::OnlineVehicles& vehicles, int k, int at, int edge, double t);
+  void passUnseen(simulate::OnlineVehicles& vehicles, int k, int at, double t);
+  void sendRoute(simulate::OnlineVehicles& vehicles, int k, double t);
   int chooseNext(int k);
-  int wander(int e) const;
+  int wander(int e, const std::vector<int>& planned) const;
   /// Bookkeeping of the street `edge` being entered (the previous one counts as driven).
   void advance(int k, int edge, double t);
   const std::string& sumoEdge(int e) const;

@@ -72,6 +72,9 @@ OnlineVehicleState OnlineVehicles::state(const std::string& id) const {
     s.angle_deg = libsumo::Vehicle::getAngle(id);
     s.slope_deg = libsumo::Vehicle::getSlope(id);
     s.odometer_m = libsumo::Vehicle::getDistance(id);
+    // SUMO keeps the edges driven before the last setRoute in front of the route it was given
+    s.route_edges_ahead = static_cast<int>(libsumo::Vehicle::getRoute(id).size()) - 1 -
+                          libsumo::Vehicle::getRouteIndex(id);
   });
   return s;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Vehicles whose routes are extended online, a turn at a time, in an open SumoSession (the
-// explorers of `slamroute explore`): the caller replaces the route of a vehicle that is on a
-// street by that street and the next few it chooses among the turns SUMO offers. No background
+// explorers of `slamroute explore`): the caller replaces the route of a vehicle by the street it
+// is on (or last left) and the next few it chooses among the turns SUMO offers. No background
 // traffic; a teleport or a vehicle reaching the end of its route is an error. No libsumo type
 // appears here.
 #include <string>
@@ -19,6 +19,10 @@ struct OnlineVehicleState {
   double angle_deg = 0.0;  ///< SUMO angle (0 = north, clockwise)
   double slope_deg = 0.0;
   double odometer_m = 0.0;  ///< distance driven since departure [m]
+  /// Edges of its route after the one it is on or, inside a junction, last left. Where it is
+  /// comes from this, not from `edge`: a street shorter than one step's travel can be entered
+  /// and left between two looks, so the vehicle may be seen only inside junctions.
+  int route_edges_ahead = 0;
 };
 
 class OnlineVehicles {
@@ -28,7 +32,8 @@ class OnlineVehicles {
   /// Adds vehicle `id` departing at time depart_s on `first` with the route [first]: call
   /// setRoute() once it is on the net, before it reaches the end of `first`.
   void add(const std::string& id, const std::string& first, double depart_s);
-  /// Replaces the route; its first edge must be the one the vehicle is on.
+  /// Replaces the route; its first edge must be the one the vehicle is on or, inside a
+  /// junction, the one it last left followed by the one it is turning into.
   void setRoute(const std::string& id, const std::vector<std::string>& edges);
   /// Reads the state after a step. Throws std::runtime_error when SUMO teleported the vehicle or
   /// it left the net.
