@@ -23,6 +23,7 @@ NETS = {
     "default_city": "default_city/default_city.net.xml",
     "plus": "test/plus.net.xml",
     "grid3x3": "test/grid3x3.net.xml",
+    "stub": "test/stub.net.xml",
     "ring": "test/ring.net.xml",
     "overpass": "test/overpass.net.xml",
     "divided_avenue": "test/divided_avenue.net.xml",

@@ -175,6 +175,27 @@ def grid3x3_net():
     return n
 
 
+def stub_net():
+    """The plus's centre C (500, 500) with two-way arms W, N, S of 150 m; the east arm ends at a
+    T-junction M (640, 500) with a two-way dead end Q 120 m north and a two-way dead-end stub to
+    A (643, 500), 3 m east: after the junction shapes its edges M_A and A_M are 0.2 m long,
+    shorter than a vehicle drives in a step even while it turns round, and U-turns are allowed
+    at both their ends (like the sub-metre dead ends of OpenStreetMap nets).
+    7 junctions, 12 passenger edges."""
+    n = Net("stub", "test/stub.net.xml")
+    n.node("C", 500, 500, "priority")
+    for aid, (x, y) in {"N": (500, 650), "S": (500, 350), "W": (350, 500)}.items():
+        n.node(aid, x, y)
+        n.two_way("C", aid)
+    n.node("M", 640, 500, "priority")
+    n.node("Q", 640, 620)
+    n.node("A", 643, 500)
+    n.two_way("C", "M")
+    n.two_way("M", "Q")
+    n.two_way("M", "A")
+    return n
+
+
 DIVIDED_GRID = [100, 300, 500]  # m: rows (y) and columns (x) of the divided-avenue grids
 
 
@@ -452,6 +473,7 @@ def default_city_net():
 NETS = {
     "plus": plus_net,
     "grid3x3": grid3x3_net,
+    "stub": stub_net,
     "ring": ring_net,
     "overpass": overpass_net,
     "divided_avenue": divided_avenue_net,

@@ -1,11 +1,14 @@
-// The online exploration in SUMO: the plus and the 3 x 3 grid net explored to 100 % with every
-// strategy family, the outputs written, the same seed giving the same bytes.
+// The online exploration in SUMO: the plus, the 3 x 3 grid and the stub net (a sub-metre dead
+// end) explored to 100 % with every strategy family, the outputs written, the same seed giving
+// the same bytes.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "TestTmp.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -74,6 +77,35 @@ TEST(Explore, GridNetIsExploredToTheEndByEveryStrategy) {
     EXPECT_TRUE(r.milestones[2].reached) << s;
     EXPECT_FALSE(r.time_limit_hit) << s;
     EXPECT_EQ(r.vehicles.size(), static_cast<std::size_t>(k)) << s;
+  }
+}
+
+// The stub's edges M_A and A_M (the dead end at its east edge) are 0.2 m long: an explorer
+// turning round at A and back at M drives them between two looks and is seen only inside the
+// junctions, where it must still get a route on.
+TEST(Explore, SubMetreDeadEndIsDrivenBothWaysAndTheNetToTheEnd) {
+  const SumoNet net = SumoNet::read(testNet("stub.net.xml"));
+  for (const auto& [s, k] : std::vector<std::pair<std::string, int>>{
+           {"nearest", 1}, {"siba", 2}, {"fleet", 2}}) {
+    ExploreOptions o;
+    o.net = testNet("stub.net.xml");
+    o.vehicles = k;
+    o.strategy = s;
+    o.start_edges = {"W_C"};  // the far end: the stub is met at the edge of what is known
+    o.out_dir = test::testTmp() / s;
+    const ExploreResult r =
+        runExplore(o, Config{}, simulate::WorldConfig{}, simulate::DriveConfig{});
+    EXPECT_EQ(r.total_edges, 12) << s;
+    EXPECT_EQ(r.edges_driven, 12) << s;
+    EXPECT_TRUE(r.milestones[2].reached) << s;
+    EXPECT_FALSE(r.time_limit_hit) << s;
+    int stub_both_ways = 0;
+    for (const VehicleResult& v : r.vehicles)
+      for (std::size_t i = 1; i < v.edges.size(); ++i) {
+        EXPECT_TRUE(net.turnAllowed(v.edges[i - 1], v.edges[i])) << s << ": " << v.edges[i];
+        stub_both_ways += v.edges[i - 1] == "M_A" && v.edges[i] == "A_M";
+      }
+    EXPECT_GE(stub_both_ways, 1) << s;
   }
 }
 
