@@ -85,8 +85,8 @@ TEST(Explore, GridNetIsExploredToTheEndByEveryStrategy) {
 // junctions, where it must still get a route on.
 TEST(Explore, SubMetreDeadEndIsDrivenBothWaysAndTheNetToTheEnd) {
   const SumoNet net = SumoNet::read(testNet("stub.net.xml"));
-  for (const auto& [s, k] : std::vector<std::pair<std::string, int>>{
-           {"nearest", 1}, {"siba", 2}, {"fleet", 2}}) {
+  for (const auto& [s, k] :
+       std::vector<std::pair<std::string, int>>{{"nearest", 1}, {"siba", 2}, {"fleet", 2}}) {
     ExploreOptions o;
     o.net = testNet("stub.net.xml");
     o.vehicles = k;
