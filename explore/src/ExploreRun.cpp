@@ -215,10 +215,11 @@ void ExploreRun::enterEdge(simulate::OnlineVehicles& vehicles, int k, int at, in
   sendRoute(vehicles, k, t);
 }
 
-// Seen inside a junction after x.route[at]: it drove that street (and those before it) between
-// two looks, and the junction may lead onto streets as short, so it is never seen on a street
-// again until its route runs out (a U-turn into a sub-metre street whose far end turns it round
-// again). It keeps the turn it is taking; the provisional ones after it are chosen afresh.
+// Seen inside a junction after x.route[at]: it drove that street (and any before it) between
+// two looks. Its route is renewed here, not only on a street: past sub-metre streets it may be
+// seen inside junctions only, until the route runs out (a U-turn into a sub-metre street whose
+// far end turns it round again). It keeps the turn it is taking; the provisional turns after it
+// are chosen afresh.
 void ExploreRun::passUnseen(simulate::OnlineVehicles& vehicles, int k, int at, double t) {
   Explorer& x = explorers_[static_cast<std::size_t>(k)];
   if (at + 1 >= static_cast<int>(x.route.size()))
