@@ -85,6 +85,7 @@ TEST(Explore, GridNetIsExploredToTheEndByEveryStrategy) {
 // junctions, where it must still get a route on.
 TEST(Explore, SubMetreDeadEndIsDrivenBothWaysAndTheNetToTheEnd) {
   const SumoNet net = SumoNet::read(testNet("stub.net.xml"));
+  const Config defaults;
   for (const auto& [s, k] :
        std::vector<std::pair<std::string, int>>{{"nearest", 1}, {"siba", 2}, {"fleet", 2}}) {
     ExploreOptions o;
@@ -94,7 +95,7 @@ TEST(Explore, SubMetreDeadEndIsDrivenBothWaysAndTheNetToTheEnd) {
     o.start_edges = {"W_C"};  // the far end: the stub is met at the edge of what is known
     o.out_dir = test::testTmp() / s;
     const ExploreResult r =
-        runExplore(o, Config{}, simulate::WorldConfig{}, simulate::DriveConfig{});
+        runExplore(o, defaults, simulate::WorldConfig{}, simulate::DriveConfig{});
     EXPECT_EQ(r.total_edges, 12) << s;
     EXPECT_EQ(r.edges_driven, 12) << s;
     EXPECT_TRUE(r.milestones[2].reached) << s;
