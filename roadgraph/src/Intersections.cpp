@@ -34,9 +34,9 @@
 //   points voting for it, off-centre, see them apart (without the exception Ingolstadt loses 7
 //   true junctions with 47-139 votes each). Groups with fewer than min_vote_fraction of the median
 //   group's votes are dropped (a bend, a lane split, a noisy stretch collect a handful of votes,
-//   a junction tens to hundreds), and a group within merge_distance_m (20 m) of a stronger one
+//   a junction tens to hundreds), and a group within merge_distance_m (18 m) of a stronger one
 //   is absorbed by it: the carriageway crossings of two divided roads and the corners of a big
-//   junction box collect votes of their own 10-20 m apart, and the ring cannot resolve separate
+//   junction box collect votes of their own 10-16 m apart, and the ring cannot resolve separate
 //   junctions that close anyway (they are lost; see bench/RESULTS.md).
 #include "slamroute/roadgraph/Intersections.hpp"
 

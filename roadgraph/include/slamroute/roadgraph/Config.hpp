@@ -38,11 +38,10 @@ struct NodeConfig {
   double vote_max_m = 25.0;     ///< crossings farther from the point are not accepted [m]
   double vote_radius_m = 3.0;   ///< vote density radius (seed order) [m]
   double node_radius_m = 10.0;  ///< votes within this of a seed vote form its node [m]
-  /// Weaker nodes this close to a stronger one are absorbed [m]. 20 m: the carriageway crossings
+  /// Weaker nodes this close to a stronger one are absorbed [m]. 18 m: the carriageway crossings
   /// of two divided roads (or the corners of a big junction box) collect votes of their own
-  /// 10-20 m apart (Adlershof: two nodes 19 m apart for one SUMO junction); separate junctions
-  /// that close become one node (bench/RESULTS.md, "Divided roads" and the sweeps).
-  double merge_distance_m = 20.0;
+  /// 10-16 m apart; separate junctions that close become one node (bench/RESULTS.md).
+  double merge_distance_m = 18.0;
   /// Candidates with fewer votes than this fraction of the median candidate's are dropped.
   double min_vote_fraction = 0.25;
   int min_node_points = 3;  ///< groups with fewer votes are discarded as noise
