@@ -9,9 +9,7 @@
 // past a junction the cylinder finds) is that T junction: a node at the crossing splits the
 // crossed street in two and the side street ends there. A dead end near a street's end (a corner
 // no vehicle drove round) is left to the end merge (EndNodes.cpp), which runs first.
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 #include "Streets.hpp"
@@ -27,7 +25,7 @@ struct Crossing {
   Point3 at = Point3::Zero();
 };
 
-/// The tip of street s at its u end (or v end) and its heading out of the street there, from the
+/// The tip of centreline c at its u end (or v end) and its heading out of the street there, from
 /// centreline point `reach` back.
 std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach) {
   const Polyline pl = at_u ? Polyline(c.rbegin(), c.rend()) : c;
@@ -62,7 +60,7 @@ std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::siz
       if (e.norm() < 1e-9 || std::abs(den) < 1e-9) continue;
       if (std::abs(dir.dot(e.normalized())) > max_cos) continue;
       const Eigen::Vector2d w = p - tip.head<2>();
-      const double t = (w.x() * e.y() - w.y() * e.x()) / den;   // along the ray
+      const double t = (w.x() * e.y() - w.y() * e.x()) / den;      // along the ray
       const double u = (w.x() * dir.y() - w.y() * dir.x()) / den;  // along the segment
       if (t < 0.0 || t > best_t || u < 0.0 || u > 1.0) continue;
       const Point3 at = c[i] + u * (c[i + 1] - c[i]);
@@ -75,8 +73,8 @@ std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::siz
   return best;
 }
 
-/// Splits street k at `x` (arc position `arc` along its centreline) into u -> node and
-/// node -> v; its points go to the part they lie along.
+/// Splits street k at arc position `arc` along its centreline into u -> node and node -> v (the
+/// second part appended); its points go to the part they lie along.
 void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int node,
                  const std::vector<Point3>& sp) {
   Street tail = streets[k];
@@ -133,8 +131,8 @@ void joinStopLineEnds(GraphNodes& gn, std::vector<Street>& streets, const Street
         continue;
       const auto [tip, dir] = tipAndHeading(streets[k].centre, at_u, ec.stop_line_reach_m);
       if (dir.isZero()) continue;
-      const auto x = rayCrossing(streets, k, tip, dir, ec.stop_line_reach_m, ec.clear_radius_m,
-                                 half_h);
+      const auto x =
+          rayCrossing(streets, k, tip, dir, ec.stop_line_reach_m, ec.clear_radius_m, half_h);
       if (!x) continue;
       const int node = insertIntersection(gn, streets, x->at);
       splitStreet(streets, x->street, x->arc, node, spts.pts);
