@@ -26,7 +26,7 @@ struct Crossing {
 };
 
 /// The tip of centreline c at its u end (or v end) and its heading out of the street there, from
-/// point `reach` back along it.
+/// the point `reach` back along it.
 std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach) {
   const Polyline pl = at_u ? Polyline(c.rbegin(), c.rend()) : c;
   const Point3& tip = pl.back();
