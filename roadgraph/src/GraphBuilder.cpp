@@ -3,7 +3,8 @@
 //    roundabouts, which the cylinder cannot see, the ring's junctions instead (Roundabouts.cpp).
 // 2. Streets: the trace points left after removing the nodes' neighbourhoods, clustered, each
 //    cluster attached to its two nearest nodes, eqs. 1-2 (StreetClusters.cpp), with its centreline
-//    (Centreline.cpp); dead ends that nearly touch are one node (EndNodes.cpp).
+//    (Centreline.cpp); dead ends that nearly touch are one node (EndNodes.cpp); a dead end that
+//    stops just short of a street it runs at is a T junction on that street (StopLineEnds.cpp).
 // 3. Links between junctions too close for a street to survive the clearing, from vehicles that
 //    drive from one straight into the other (ShortLinks.cpp).
 // 4. Direction(s) of travel from each vehicle's runs along a street (StreetDirections.cpp): a
@@ -198,6 +199,7 @@ GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg) {
   std::vector<Street> streets =
       detail::attachStreets(spts, traces, p.order, p.ds.voxel_of, gn, ec, half_h, st);
   detail::mergeNearbyEnds(gn.pos, gn.is_end, ec.end_merge_m, half_h, streets, st);
+  detail::joinStopLineEnds(gn, streets, spts, ec, half_h, st);
   st.streets = streets.size();
   std::vector<Polyline> polys = streetPolylines(streets, gn.pos);
   // Step 3: drives from junction to junction (ShortLinks.cpp): links between junctions whose

@@ -73,6 +73,12 @@ bool splitAtPassedNode(const StreetContext& ctx, int c, const Street& s, int na,
 void mergeNearbyEnds(std::vector<Point3>& nodes, const std::vector<char>& is_end, double radius,
                      double half_h, std::vector<Street>& streets, GraphBuildStats& st);
 
+/// Dead ends whose street runs straight at another street a few metres on (its vehicles' routes
+/// end at the stop line) become a T junction on that street, which is split there
+/// (StopLineEnds.cpp).
+void joinStopLineEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
+                      const EdgeConfig& ec, double half_h, GraphBuildStats& st);
+
 /// Streets between junctions whose street the clearing removed, from drives between them
 /// (ShortLinks.cpp); appended to `streets` with straight node-to-node polylines in `polys`.
 void addShortLinks(const Passages& passages, const std::vector<Point3>& nodes, const EdgeConfig& ec,

@@ -112,6 +112,9 @@ struct EdgeConfig {
   double max_gap_s = 3.0;            ///< a vehicle's trace breaks at larger time gaps [s]
   int min_direction_runs = 1;        ///< runs needed to accept a direction of travel
   bool split_at_passed_nodes = true;  ///< split a street cluster at a junction it runs through
+  /// A dead end whose street, continued this far, crosses another street is a T junction there
+  /// (its vehicles' routes ended at the stop line, 5-8 m short of the street) [m]; 0 = off.
+  double stop_line_reach_m = 15.0;
   /// Links between junctions too close for a street to survive the clearing (ShortLinks.cpp):
   /// A vehicle this close to a node passes its junction [m]. 12 m = clear_radius_m: the node of a
   /// big junction lies up to 10-15 m from the lanes through it, so 8 m misses links there.
@@ -135,6 +138,9 @@ void visitFields(V& v, EdgeConfig& c) {
   v.field("split_at_passed_nodes", c.split_at_passed_nodes,
           "a street cluster reaching >= 3 nodes that runs past one of them (branch point within "
           "clear_radius_m of it) is split into one street per branch ending there");
+  v.field("stop_line_reach_m", c.stop_line_reach_m,
+          "a dead end whose street, continued this far, crosses another street's middle is a T "
+          "junction on it (routes that end at the stop line) (0 = off) [m]");
   v.field("link_visit_m", c.link_visit_m,
           "a vehicle this close to a node passes its junction (short links) [m]");
   v.field("link_max_m", c.link_max_m,

@@ -1,0 +1,145 @@
+// Side arms that end at a stop line (paper §3.1 step 2, a case the paper leaves open).
+//
+// A vehicle whose route ends on a side street leaves the traces at the stop line, 5-8 m short of
+// the street it would turn into. When only such vehicles drove the arm, its points never touch
+// the crossing street, the hollow cylinder sees two branches there and the arm dead-ends beside
+// a street that runs past without a node. A dead end whose street runs straight at another
+// street (its last stop_line_reach_m, continued, crosses that street's centreline at more than
+// 30 degrees, and the crossed street goes on at least clear_radius_m either side, as it would
+// past a junction the cylinder finds) is that T junction: a node at the crossing splits the
+// crossed street in two and the side street ends there. A dead end near a street's end (a corner
+// no vehicle drove round) is left to the end merge (EndNodes.cpp), which runs first.
+#include <cmath>
+#include <optional>
+
+#include "Streets.hpp"
+
+namespace slamroute::roadgraph::detail {
+namespace {
+
+/// Where a dead end's ray meets a street: the street, the arc position along its centreline and
+/// the point.
+struct Crossing {
+  std::size_t street = 0;
+  double arc = 0.0;
+  Point3 at = Point3::Zero();
+};
+
+/// The tip of centreline c at its u end (or v end) and its heading out of the street there, from
+/// the point `reach` back along it.
+std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach) {
+  const Polyline pl = at_u ? Polyline(c.rbegin(), c.rend()) : c;
+  const Point3& tip = pl.back();
+  Point3 back = pl.front();
+  double run = 0.0;
+  for (std::size_t i = pl.size() - 1; i > 0; --i) {
+    run += (pl[i] - pl[i - 1]).head<2>().norm();
+    back = pl[i - 1];
+    if (run >= reach) break;
+  }
+  const Eigen::Vector2d d = (tip - back).head<2>();
+  return {tip, d.norm() > 1e-6 ? Eigen::Vector2d(d.normalized()) : Eigen::Vector2d::Zero()};
+}
+
+/// The nearest crossing of the ray tip + t * dir (0 <= t <= reach) with the centreline of a
+/// street other than `self` at more than 30 degrees, at least `margin` from both of its ends.
+std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::size_t self,
+                                    const Point3& tip, const Eigen::Vector2d& dir, double reach,
+                                    double margin, double half_h) {
+  std::optional<Crossing> best;
+  double best_t = reach;
+  const double max_cos = std::cos(30.0 * M_PI / 180.0);
+  for (std::size_t k = 0; k < streets.size(); ++k) {
+    const Polyline& c = streets[k].centre;
+    if (k == self || streets[k].comp < 0 || c.size() < 2) continue;
+    const double len = polylineLength(c);
+    double s = 0.0;
+    for (std::size_t i = 0; i + 1 < c.size(); s += (c[i + 1] - c[i]).norm(), ++i) {
+      const Eigen::Vector2d p = c[i].head<2>(), e = (c[i + 1] - c[i]).head<2>();
+      const double den = dir.x() * e.y() - dir.y() * e.x();
+      if (e.norm() < 1e-9 || std::abs(den) < 1e-9) continue;
+      if (std::abs(dir.dot(e.normalized())) > max_cos) continue;
+      const Eigen::Vector2d w = p - tip.head<2>();
+      const double t = (w.x() * e.y() - w.y() * e.x()) / den;      // along the ray
+      const double u = (w.x() * dir.y() - w.y() * dir.x()) / den;  // along the segment
+      if (t < 0.0 || t > best_t || u < 0.0 || u > 1.0) continue;
+      const Point3 at = c[i] + u * (c[i + 1] - c[i]);
+      const double arc = s + u * (c[i + 1] - c[i]).norm();
+      if (std::abs(at.z() - tip.z()) > half_h || arc < margin || arc > len - margin) continue;
+      best_t = t;
+      best = Crossing{k, arc, at};
+    }
+  }
+  return best;
+}
+
+/// Splits street k at arc position `arc` along its centreline into u -> node and node -> v (the
+/// second part appended); its points go to the part they lie along.
+void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int node,
+                 const std::vector<Point3>& sp) {
+  Street tail = streets[k];
+  Street& head = streets[k];
+  const Polyline c = head.centre;
+  head.centre.clear();
+  tail.centre.clear();
+  double s = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (i > 0) s += (c[i] - c[i - 1]).norm();
+    (s < arc ? head.centre : tail.centre).push_back(c[i]);
+  }
+  const std::vector<int> members = head.members;
+  head.members.clear();
+  tail.members.clear();
+  for (int i : members)
+    (arcPosition(c, sp[static_cast<std::size_t>(i)]) < arc ? head.members : tail.members)
+        .push_back(i);
+  head.v = node;
+  tail.u = node;
+  streets.push_back(std::move(tail));
+}
+
+/// Streets ending at node n.
+int degreeOf(const std::vector<Street>& streets, int n) {
+  int d = 0;
+  for (const auto& s : streets) d += (s.u == n) + (s.v == n);
+  return d;
+}
+
+/// A new intersection node at p: inserted after the intersections, the end nodes move up one.
+int insertIntersection(GraphNodes& gn, std::vector<Street>& streets, const Point3& p) {
+  const int at = static_cast<int>(gn.n_inter);
+  for (auto& s : streets) {
+    if (s.u >= at) ++s.u;
+    if (s.v >= at) ++s.v;
+  }
+  gn.pos.insert(gn.pos.begin() + at, p);
+  gn.is_end.insert(gn.is_end.begin() + at, 0);
+  ++gn.n_inter;
+  return at;
+}
+
+}  // namespace
+
+void joinStopLineEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
+                      const EdgeConfig& ec, double half_h, GraphBuildStats& st) {
+  if (ec.stop_line_reach_m <= 0.0) return;
+  for (std::size_t k = 0; k < streets.size(); ++k)
+    for (const bool at_u : {true, false}) {
+      const int end = at_u ? streets[k].u : streets[k].v;
+      if (streets[k].comp < 0 || !gn.is_end[static_cast<std::size_t>(end)] ||
+          degreeOf(streets, end) != 1)
+        continue;
+      const auto [tip, dir] = tipAndHeading(streets[k].centre, at_u, ec.stop_line_reach_m);
+      if (dir.isZero()) continue;
+      const auto x =
+          rayCrossing(streets, k, tip, dir, ec.stop_line_reach_m, ec.clear_radius_m, half_h);
+      if (!x) continue;
+      const int node = insertIntersection(gn, streets, x->at);
+      splitStreet(streets, x->street, x->arc, node, spts.pts);
+      (at_u ? streets[k].u : streets[k].v) = node;
+      --st.dead_ends;
+      ++st.stop_line_junctions;
+    }
+}
+
+}  // namespace slamroute::roadgraph::detail
