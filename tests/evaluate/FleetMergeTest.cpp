@@ -3,6 +3,7 @@
 // vehicle's offset estimate back onto the first's frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "SyntheticScene.hpp"
@@ -68,6 +69,18 @@ std::vector<FleetClosure> trueClosures(const std::vector<FleetVehicleInput>& vs,
   return out;
 }
 
+/// Largest position error of the merged trajectories against the vehicles' ground truths [m].
+double largestError(const std::vector<Trajectory>& merged,
+                    const std::vector<FleetVehicleInput>& vs) {
+  double worst = 0.0;
+  for (std::size_t v = 0; v < merged.size(); ++v)
+    for (std::size_t i = 0; i < merged[v].size(); ++i)
+      worst = std::max(worst, (merged[v][i].T_world_body.translation() -
+                               vs[v].ground_truth[i].T_world_body.translation())
+                                  .norm());
+  return worst;
+}
+
 TEST(FleetMerge, AnOffsetVehicleWithTrueClosuresMergesToTheTruthAndAWrongClosureIsRefused) {
   const test::LoopScanSource a(0.0, 200), b(150.0, 200);
   // b's own estimate is exact in shape but starts 2.5 m and 4 degrees off
@@ -88,24 +101,10 @@ TEST(FleetMerge, AnOffsetVehicleWithTrueClosuresMergesToTheTruthAndAWrongClosure
   for (const auto& c : kept)
     EXPECT_GT((c.T_a_b.translation() - wrong.T_a_b.translation()).norm(), 1.0);
   // With the true closures b follows them, not its offset start: both on the truth.
-  const auto merged = mergeFleetTrajectories(vs, kfs, kept, Config{}, opt);
-  for (std::size_t v = 0; v < 2; ++v)
-    for (std::size_t i = 0; i < merged[v].size(); ++i)
-      ASSERT_LT((merged[v][i].T_world_body.translation() -
-                 vs[v].ground_truth[i].T_world_body.translation())
-                    .norm(),
-                1e-3)
-          << v << " " << i;
+  EXPECT_LT(largestError(mergeFleetTrajectories(vs, kfs, kept, Config{}, opt), vs), 1e-3);
   // Given to the pose graph all the same, the wrong closure pulls the map by little: its Cauchy
   // loss weighs a closure 30 sigmas off the rest by about 1/100.
-  const auto pulled = mergeFleetTrajectories(vs, kfs, closures, Config{}, opt);
-  for (std::size_t v = 0; v < 2; ++v)
-    for (std::size_t i = 0; i < pulled[v].size(); ++i)
-      ASSERT_LT((pulled[v][i].T_world_body.translation() -
-                 vs[v].ground_truth[i].T_world_body.translation())
-                    .norm(),
-                0.1)
-          << v << " " << i;
+  EXPECT_LT(largestError(mergeFleetTrajectories(vs, kfs, closures, Config{}, opt), vs), 0.1);
 }
 
 TEST(FleetMerge, FindsClosuresBetweenVehiclesAndJoinsAnOffsetEstimate) {
