@@ -27,6 +27,9 @@ json summaryJson(const FleetRoute& f) {
           {"longest_round_trip_m", f.longest_round_trip_m},
           {"lower_bound_m", f.lower_bound_m},
           {"makespan_over_bound", f.lower_bound_m > 0 ? f.makespan_m / f.lower_bound_m : 0.0},
+          {"depot_bound_m", f.depot_bound_m},
+          {"makespan_over_depot_bound",
+           f.depot_bound_m > 0 ? f.makespan_m / f.depot_bound_m : 0.0},
           {"total_over_single", f.single_route_m > 0 ? f.total_length_m / f.single_route_m : 0.0},
           {"edge_coverage_pct", f.edge_coverage_pct},
           {"sumo_edge_coverage_pct", f.sumo_edge_coverage_pct},
@@ -44,6 +47,7 @@ void readSummary(const json& s, FleetRoute& f) {
   f.single_route_m = s.value("single_route_m", 0.0);
   f.longest_round_trip_m = s.value("longest_round_trip_m", 0.0);
   f.lower_bound_m = s.value("lower_bound_m", 0.0);
+  f.depot_bound_m = s.value("depot_bound_m", 0.0);
   f.edge_coverage_pct = s.value("edge_coverage_pct", 0.0);
   f.sumo_edge_coverage_pct = s.value("sumo_edge_coverage_pct", 0.0);
   f.planning_seconds = s.value("planning_seconds", 0.0);

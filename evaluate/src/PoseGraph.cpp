@@ -53,7 +53,9 @@ PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
     auto* cost = new ceres::AutoDiffCostFunction<RelativePoseError, 6, 3, 4, 3, 4>(
         new RelativePoseError(e.T_from_to, e.sigma_m, e.sigma_rad));
     const auto a = static_cast<std::size_t>(e.from), b = static_cast<std::size_t>(e.to);
-    problem.AddResidualBlock(cost, nullptr, p[a].data(), q[a].data(), p[b].data(), q[b].data());
+    ceres::LossFunction* loss =
+        e.cauchy_sigmas > 0.0 ? new ceres::CauchyLoss(e.cauchy_sigmas) : nullptr;
+    problem.AddResidualBlock(cost, loss, p[a].data(), q[a].data(), p[b].data(), q[b].data());
   }
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!problem.HasParameterBlock(q[i].data())) continue;

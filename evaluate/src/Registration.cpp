@@ -290,6 +290,24 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   return res;
 }
 
+Mat3 IcpTarget::translationInformation(const Cloud& source, const Pose3& T,
+                                       double max_corr_m) const {
+  Mat3 info = Mat3::Zero();
+  if (cloud_.size() < 8) return info;
+  std::vector<int> idx;
+  std::vector<float> d2;
+  int matched = 0;
+  for (const auto& pf : source) {
+    const Vec3 q = T * pf.cast<double>();
+    if (tree_.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > max_corr_m * max_corr_m) continue;
+    const Vec3& n = normals_[static_cast<std::size_t>(idx[0])];
+    if (n.isZero()) continue;
+    info += n * n.transpose();
+    ++matched;
+  }
+  return matched > 0 ? Mat3(info / matched) : info;
+}
+
 std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source,
                                      const IcpResult& match, const IcpAmbiguity& amb) {
   const Pose3& T = match.T_target_source;

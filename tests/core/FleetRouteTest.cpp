@@ -24,6 +24,7 @@ FleetRoute twoVehicles() {
   f.makespan_m = 200.0;
   f.total_length_m = 300.0;
   f.lower_bound_m = 160.0;
+  f.depot_bound_m = 180.0;
   return f;
 }
 
@@ -37,6 +38,7 @@ TEST(FleetRoute, RoundTripAndOneSumoVehiclePerRoute) {
   EXPECT_EQ(f.depot_nodes, (std::vector<int>{5, 5}));
   EXPECT_DOUBLE_EQ(f.makespan_m, 200.0);
   EXPECT_DOUBLE_EQ(f.lower_bound_m, 160.0);
+  EXPECT_DOUBLE_EQ(f.depot_bound_m, 180.0);
   f.writeRouXml(dir / "route.rou.xml");
   const std::string xml = readFile(dir / "route.rou.xml");
   EXPECT_NE(xml.find("<vehicle id=\"mapper_0\""), std::string::npos);

@@ -3,6 +3,7 @@
 // vehicle's offset estimate back onto the first's frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "SyntheticScene.hpp"
@@ -44,6 +45,66 @@ TEST(FleetMerge, ClosuresFromGroundTruthLeaveExactEstimatesUnchanged) {
       ASSERT_LT(d.translation().norm(), 1e-4) << v << " " << i;
       ASSERT_LT(Eigen::AngleAxisd(d.rotation()).angle(), 1e-5) << v << " " << i;
     }
+}
+
+/// Per keyframe of vehicle 1, a closure to vehicle 0's keyframe nearest it in the truth, with
+/// the true relative pose (ground truths sampled like the scans, every 0.1 s).
+std::vector<FleetClosure> trueClosures(const std::vector<FleetVehicleInput>& vs,
+                                       const std::vector<std::vector<FleetKeyframe>>& kfs) {
+  const auto truth = [&](int v, const FleetKeyframe& kf) {
+    return vs[static_cast<std::size_t>(v)].ground_truth[kf.scan].T_world_body;
+  };
+  std::vector<FleetClosure> out;
+  for (std::size_t k = 0; k < kfs[1].size(); ++k) {
+    std::size_t best = 0;
+    const Vec3 at = truth(1, kfs[1][k]).translation();
+    for (std::size_t j = 0; j < kfs[0].size(); ++j)
+      if ((truth(0, kfs[0][j]).translation() - at).norm() <
+          (truth(0, kfs[0][best]).translation() - at).norm())
+        best = j;
+    out.push_back({0, 1, static_cast<int>(best), static_cast<int>(k), kfs[0][best].t,
+                   kfs[1][k].t, truth(0, kfs[0][best]).inverse() * truth(1, kfs[1][k]), 0.0,
+                   1.0});
+  }
+  return out;
+}
+
+/// Largest position error of the merged trajectories against the vehicles' ground truths [m].
+double largestError(const std::vector<Trajectory>& merged,
+                    const std::vector<FleetVehicleInput>& vs) {
+  double worst = 0.0;
+  for (std::size_t v = 0; v < merged.size(); ++v)
+    for (std::size_t i = 0; i < merged[v].size(); ++i)
+      worst = std::max(worst, (merged[v][i].T_world_body.translation() -
+                               vs[v].ground_truth[i].T_world_body.translation())
+                                  .norm());
+  return worst;
+}
+
+TEST(FleetMerge, AnOffsetVehicleWithTrueClosuresMergesToTheTruthAndAWrongClosureIsRefused) {
+  const test::LoopScanSource a(0.0, 200), b(150.0, 200);
+  // b's own estimate is exact in shape but starts 2.5 m and 4 degrees off
+  const Pose3 off = test::poseXYZYaw(2.0, -1.5, 0.0, 4.0 * M_PI / 180.0);
+  std::vector<FleetVehicleInput> vs = {{"a", {}, a.groundTruth(), a.groundTruth(), &a},
+                                       {"b", {}, moved(b.groundTruth(), off), b.groundTruth(), &b}};
+  const FleetMergeOptions opt;
+  const std::vector<std::vector<FleetKeyframe>> kfs = {fleetKeyframes(vs[0].estimate, a, 10.0),
+                                                       fleetKeyframes(vs[1].estimate, b, 10.0)};
+  std::vector<FleetClosure> closures = trueClosures(vs, kfs);
+  ASSERT_GE(closures.size(), 10u);
+  // One look-alike place: ICP slid 3 m along the street (what a corridor allows).
+  FleetClosure wrong = closures[closures.size() / 2];
+  wrong.T_a_b.translation() += wrong.T_a_b.rotation() * Vec3(3.0, 0.0, 0.0);
+  closures.push_back(wrong);
+  const std::vector<FleetClosure> kept = consistentClosures(closures, kfs, opt);
+  ASSERT_EQ(kept.size(), closures.size() - 1);
+  for (const auto& c : kept)
+    EXPECT_GT((c.T_a_b.translation() - wrong.T_a_b.translation()).norm(), 1.0);
+  // With the true closures b follows them, not its offset start: both on the truth.
+  EXPECT_LT(largestError(mergeFleetTrajectories(vs, kfs, kept, Config{}, opt), vs), 1e-3);
+  // Given to the pose graph all the same, the wrong closure pulls the map by little: its Cauchy
+  // loss weighs a closure 30 sigmas off the rest by about 1/100.
+  EXPECT_LT(largestError(mergeFleetTrajectories(vs, kfs, closures, Config{}, opt), vs), 0.1);
 }
 
 TEST(FleetMerge, FindsClosuresBetweenVehiclesAndJoinsAnOffsetEstimate) {

@@ -215,5 +215,20 @@ TEST(IcpAmbiguity, TheTrueMatchHasNoBetterOne) {
   }
 }
 
+TEST(IcpTarget, TranslationInformationShowsWhatAStreetLeavesOpen) {
+  // Bare facades and ground: nothing faces along the street (x), everything else does; pillars
+  // put their sides across it.
+  const Cloud bare = streetWithPillars({});
+  const Mat3 open = IcpTarget(bare).translationInformation(near(bare), Pose3::Identity(), 0.7);
+  EXPECT_LT(open(0, 0), 1e-3);
+  EXPECT_GT(open(1, 1), 0.2);
+  EXPECT_GT(open(2, 2), 0.4);
+  EXPECT_NEAR(open.trace(), 1.0, 1e-6);  // unit normals: a mean of n n^T
+  const Cloud pillars = streetWithPillars({-20, -12, -4, 5, 9, 21});
+  const Mat3 held =
+      IcpTarget(pillars).translationInformation(near(pillars), Pose3::Identity(), 0.7);
+  EXPECT_GT(held(0, 0), 0.02);
+}
+
 }  // namespace
 }  // namespace slamroute::evaluate

@@ -33,6 +33,8 @@ void expectCoveringClosedRoutes(const RoadGraph& g, const FleetRoute& f) {
   EXPECT_EQ(driven.size() + dropped, g.edges.size());
   EXPECT_DOUBLE_EQ(f.edge_coverage_pct, 100.0);
   EXPECT_GE(f.makespan_m, f.lower_bound_m - 1e-6);
+  EXPECT_GE(f.makespan_m, f.depot_bound_m - 1e-6);
+  EXPECT_GE(f.depot_bound_m, f.longest_round_trip_m);
 }
 
 TEST(Fleet, TwoVehiclesSplitTheGridIntoHalvesOfExactlyHalfTheLength) {

@@ -1,6 +1,7 @@
 // Inter-vehicle closures: a place-descriptor candidate among the other vehicle's keyframes near
 // the query's estimate, verified as the SLAM verifies its own loops (ICP from the descriptor's
 // yaw, fitness and inlier share, yaw change, no better fit elsewhere).
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 
 #include "FleetInternal.hpp"
@@ -22,7 +23,7 @@ VehicleClouds vehicleClouds(const FleetVehicleInput& v, const std::vector<FleetK
   VehicleClouds c;
   const double height = v.scans->spec().mount_height_m;
   for (const auto& kf : kfs) {
-    c.body.push_back(bodyCloud(*v.scans, kf.scan, cfg.loop.voxel_m));
+    c.body.push_back(bodyCloud(*v.scans, v.estimate, kf.scan, cfg.loop.voxel_m));
     c.descriptors.push_back(makePlaceDescriptor(c.body.back(), height, cfg.loop.place));
   }
   return c;
@@ -40,6 +41,13 @@ Cloud submap(const VehicleClouds& c, const std::vector<FleetKeyframe>& kfs, int 
     out.insert(out.end(), part.begin(), part.end());
   }
   return voxelFilter(out, voxel_m);
+}
+
+/// Weakest over strongest eigenvalue of the horizontal block of a translation information.
+double horizontalConditioning(const Mat3& info) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(info.topLeftCorner<2, 2>());
+  const Eigen::Vector2d ev = es.eigenvalues();  // ascending
+  return ev(1) > 0.0 ? std::max(0.0, ev(0)) / ev(1) : 0.0;
 }
 
 /// Closures of vehicle b's keyframes against vehicle a's.
@@ -67,9 +75,12 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
     const LoopVerification v = verifyLoop(target, Pose3::Identity(), cb.body[k], c, vo);
     if (!v.accepted) continue;
     if (betterIcpMatch(target, cb.body[k], v.icp, loopAmbiguity(cfg.loop))) continue;
+    const double conditioning = horizontalConditioning(
+        target.translationInformation(cb.body[k], v.icp.T_target_source, vo.icp_max_corr_m / 3));
+    if (conditioning < opt.min_horizontal_conditioning) continue;
     const auto& kfa = ka[static_cast<std::size_t>(c.keyframe)];
     out.push_back({a, b, c.keyframe, static_cast<int>(k), kfa.t, kb[k].t, v.icp.T_target_source,
-                   v.icp.fitness_m2});
+                   v.icp.fitness_m2, conditioning});
   }
 }
 

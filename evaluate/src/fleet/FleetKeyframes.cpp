@@ -3,7 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "../slam/FrontEnd.hpp"
 #include "FleetInternal.hpp"
+#include "slamroute/evaluate/MotionChecks.hpp"
 
 namespace slamroute::evaluate {
 
@@ -49,8 +51,34 @@ std::vector<FleetKeyframe> fleetKeyframes(const Trajectory& estimate, const Scan
   return kfs;
 }
 
-Cloud bodyCloud(const ScanSource& scans, std::size_t index, double voxel_m) {
-  const Scan scan = scans.scan(index);
+namespace {
+
+/// A sweep lasts until the next scan starts (the last one as long as the one before it) [s].
+double sweepSeconds(const ScanSource& scans, std::size_t i) {
+  if (i + 1 < scans.size()) return scans.time(i + 1) - scans.time(i);
+  return i > 0 ? scans.time(i) - scans.time(i - 1) : 0.0;
+}
+
+/// The body's motion over sweep_s from time t: the step between the two poses around t, scaled.
+Pose3 motionOver(const Trajectory& poses, double t, double sweep_s) {
+  if (poses.size() < 2) return Pose3::Identity();
+  auto next = std::upper_bound(poses.begin(), poses.end(), t,
+                               [](double v, const StampedPose& p) { return v < p.t; });
+  if (next == poses.end()) --next;
+  if (next == poses.begin()) ++next;
+  const auto prev = std::prev(next);
+  const double span_s = next->t - prev->t;
+  if (!(span_s > 0.0)) return Pose3::Identity();
+  return scaledMotion(prev->T_world_body.inverse() * next->T_world_body, sweep_s / span_s);
+}
+
+}  // namespace
+
+Cloud bodyCloud(const ScanSource& scans, const Trajectory& poses, std::size_t index,
+                double voxel_m) {
+  const Scan raw = scans.scan(index);
+  const double sweep_s = sweepSeconds(scans, index);
+  const Scan scan = slam::deskewed(raw, motionOver(poses, raw.t, sweep_s), sweep_s);
   Cloud c;
   c.reserve(scan.points.size());
   for (const auto& p : scan.points) c.emplace_back(p.x, p.y, p.z);

@@ -15,7 +15,7 @@ Cloud vehicleMap(const FleetVehicleInput& v, const Trajectory& poses, int stride
   Cloud map;
   for (std::size_t i = 0; i < v.scans->size(); i += static_cast<std::size_t>(stride)) {
     const Cloud part =
-        transformed(bodyCloud(*v.scans, i, voxel_m), poseNearest(poses, v.scans->time(i)));
+        transformed(bodyCloud(*v.scans, poses, i, voxel_m), poseNearest(poses, v.scans->time(i)));
     map.insert(map.end(), part.begin(), part.end());
   }
   return voxelFilter(map, voxel_m);

@@ -23,14 +23,17 @@ nlohmann::json vehicleJson(const FleetVehicleResult& v, const std::string& folde
 
 std::string closuresCsv(const FleetResult& r) {
   std::ostringstream os;
-  os << "vehicle_a,keyframe_a,t_a,vehicle_b,keyframe_b,t_b,x,y,z,yaw_deg,fitness_m2\n";
+  os << "vehicle_a,keyframe_a,t_a,vehicle_b,keyframe_b,t_b,x,y,z,yaw_deg,qx,qy,qz,qw,fitness_m2,"
+        "horizontal_conditioning\n";
   for (const auto& c : r.closures) {
     const Vec3 t = c.T_a_b.translation();
     const double yaw = std::atan2(c.T_a_b.linear()(1, 0), c.T_a_b.linear()(0, 0)) * 180.0 / M_PI;
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "%d,%d,%.3f,%d,%d,%.3f,%.4f,%.4f,%.4f,%.3f,%.5f\n", c.vehicle_a,
-                  c.keyframe_a, c.t_a, c.vehicle_b, c.keyframe_b, c.t_b, t.x(), t.y(), t.z(), yaw,
-                  c.fitness_m2);
+    const Eigen::Quaterniond q(c.T_a_b.rotation());
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "%d,%d,%.3f,%d,%d,%.3f,%.4f,%.4f,%.4f,%.3f,%.9f,%.9f,%.9f,%.9f,%.5f,%.4f\n",
+                  c.vehicle_a, c.keyframe_a, c.t_a, c.vehicle_b, c.keyframe_b, c.t_b, t.x(), t.y(),
+                  t.z(), yaw, q.x(), q.y(), q.z(), q.w(), c.fitness_m2, c.horizontal_conditioning);
     os << buf;
   }
   return os.str();

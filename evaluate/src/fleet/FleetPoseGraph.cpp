@@ -37,7 +37,8 @@ std::vector<PoseGraphEdge> graphEdges(const std::vector<std::vector<FleetKeyfram
   for (const auto& c : closures)
     edges.push_back({off[static_cast<std::size_t>(c.vehicle_a)] + c.keyframe_a,
                      off[static_cast<std::size_t>(c.vehicle_b)] + c.keyframe_b, c.T_a_b,
-                     cfg.loop.graph_loop_sigma_m, cfg.loop.graph_loop_sigma_rad});
+                     cfg.loop.graph_loop_sigma_m, cfg.loop.graph_loop_sigma_rad,
+                     opt.closure_cauchy_sigmas});
   return edges;
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "FleetParts.hpp"
+#include "MakespanBound.hpp"
 #include "RuralPostman.hpp"
 #include "slamroute/core/Hungarian.hpp"
 #include "slamroute/rl/Fleet.hpp"
@@ -118,6 +119,8 @@ FleetRoute summarise(const FleetContext& ctx, const Config& cfg, std::uint64_t s
   f.single_route_m = single_m;
   f.longest_round_trip_m = longestRoundTrip(ctx);
   f.lower_bound_m = std::max(single_m / ctx.vehicles(), f.longest_round_trip_m);
+  f.depot_bound_m = std::max(f.longest_round_trip_m,
+                             fleet::depotTripsBound(fleet::edgeReaches(ctx), ctx.vehicles()));
   fillCoverage(ctx, routes, f);
   return f;
 }

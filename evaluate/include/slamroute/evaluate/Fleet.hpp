@@ -29,11 +29,20 @@ struct FleetMergeOptions {
   /// path: kept when it agrees with more than half of them and with at least
   /// min_pair_closures (itself included); one look-alike facade must not pull the graph [m].
   double consistency_m = 1.0;
-  double consistency_per_m = 0.02;      ///< [m/m]
+  double consistency_per_m = 0.005;     ///< [m/m]
   double consistency_window_m = 200.0;  ///< [m]
   int min_pair_closures = 2;
-  double start_sigma_m = 10.0;    ///< weak prior: each vehicle's first pose as estimated [m]
-  double start_sigma_rad = 0.2;   ///< ... and heading [rad]
+  /// A closure needs FleetClosure::horizontal_conditioning at least this: ICP in a corridor
+  /// ends where it started along the street, metres off when the two keyframes are apart
+  double min_horizontal_conditioning = 0.1;
+  /// Cauchy scale of the closures in the pose graph, in loop sigmas (0: least squares): a
+  /// closure that many sigmas off the rest pulls little [sigmas]
+  double closure_cauchy_sigmas = 3.0;
+  /// A gauge, not a measurement: each vehicle's first pose as estimated, so a vehicle without
+  /// closures stays where it was; far weaker than any closure, so a vehicle whose start was known
+  /// only roughly follows its closures instead of being bent towards that start [m]
+  double start_sigma_m = 1000.0;
+  double start_sigma_rad = 10.0;  ///< ... and heading [rad]
   int map_scan_stride = 10;       ///< merged map: every n-th scan of each vehicle
   double facade_street_m = 30.0;  ///< completeness: facades within this of a driven street [m]
   double facade_sample_m = 1.0;   ///< ... sampled one point per this spacing [m]
@@ -57,6 +66,10 @@ struct FleetClosure {
   double t_a = 0, t_b = 0;             ///< their times
   Pose3 T_a_b = Pose3::Identity();     ///< the measured pose of b's keyframe in a's
   double fitness_m2 = 0.0;
+  /// The matched planes' information on the horizontal position, weakest direction over
+  /// strongest (IcpTarget::translationInformation): near 0 in a street whose facades all run
+  /// one way, where ICP cannot tell how far along the street b is.
+  double horizontal_conditioning = 0.0;
 };
 
 struct FleetVehicleResult {

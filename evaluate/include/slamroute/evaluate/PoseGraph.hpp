@@ -11,6 +11,9 @@ struct PoseGraphEdge {
   Pose3 T_from_to = Pose3::Identity();
   double sigma_m = 0.05;
   double sigma_rad = 0.005;
+  /// > 0: a Cauchy loss of this scale on the residual in sigmas, so an edge that disagrees with
+  /// the rest by many sigmas pulls little (a wrong loop closure); 0: least squares
+  double cauchy_sigmas = 0.0;
 };
 
 struct PoseGraphResult {

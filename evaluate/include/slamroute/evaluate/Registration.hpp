@@ -72,6 +72,10 @@ class IcpTarget {
   explicit IcpTarget(Cloud target);
   /// The correspondence radius shrinks from max_corr_m to max_corr_m / 3.
   IcpResult align(const Cloud& source, const Pose3& init, int iterations, double max_corr_m) const;
+  /// What the matched planes tell about the translation at T: the mean of n n^T over the source
+  /// points whose nearest target point within max_corr_m has a normal (zero when none does). A
+  /// street whose facades all run one way leaves its direction along the street near zero.
+  Mat3 translationInformation(const Cloud& source, const Pose3& T, double max_corr_m) const;
 
  private:
   Cloud cloud_;

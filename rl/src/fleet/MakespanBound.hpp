@@ -1,0 +1,28 @@
+#pragma once
+// Private to the fleet planner: a lower bound on the makespan that counts every vehicle's drive
+// out from its depot and back (MakespanBound.cpp derives it).
+#include <vector>
+
+#include "FleetParts.hpp"
+
+namespace slamroute::rl::fleet {
+
+/// One directed edge as the bound sees it.
+struct EdgeReach {
+  double len_m = 0.0;     ///< the edge's length
+  double before_m = 0.0;  ///< shortest legal drive from a depot to where the edge may be taken
+  double after_m = 0.0;   ///< shortest legal drive from the edge's end back to a depot
+};
+
+/// Per edge of the planning graph: its length and its legal distances from and back to the
+/// nearest depot (FleetContext's).
+std::vector<EdgeReach> edgeReaches(const FleetContext& ctx);
+
+/// max over thresholds (a, b) of a + b + L(F) / vehicles, F = the edges with before_m >= a and
+/// after_m >= b, L(F) their summed length; no legal solution of `vehicles` closed walks from the
+/// depots that drives every edge has a shorter makespan. At most max_thresholds values of a are
+/// tried (evenly spaced in sorted order); fewer only weaken the bound, never invalidate it.
+double depotTripsBound(const std::vector<EdgeReach>& edges, int vehicles,
+                       int max_thresholds = 1000);
+
+}  // namespace slamroute::rl::fleet
