@@ -66,7 +66,8 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
         submap(ca, ka, c.keyframe, opt.target_keyframes_each_side, cfg.loop.voxel_m));
     const LoopVerification v = verifyLoop(target, Pose3::Identity(), cb.body[k], c, vo);
     if (!v.accepted) continue;
-    if (betterIcpMatch(target, cb.body[k], v.icp, loopAmbiguity(cfg.loop))) continue;
+    const IcpAmbiguity amb = loopAmbiguity(cfg.loop);
+    if (ambiguousMatch(strongestRival(target, cb.body[k], v.icp, amb), amb)) continue;
     const auto& kfa = ka[static_cast<std::size_t>(c.keyframe)];
     out.push_back({a, b, c.keyframe, static_cast<int>(k), kfa.t, kb[k].t, v.icp.T_target_source,
                    v.icp.fitness_m2});
