@@ -311,8 +311,8 @@ IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpR
     if (rival.apart_m <= amb.separation_m || !amb.accept(r)) continue;
     rival.share = std::min(r.inlier_ratio / std::max(match.inlier_ratio, 1e-12),
                            match.fitness_m2 / std::max(r.fitness_m2, 1e-12));
-    rival.better = r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin &&
-                   r.fitness_m2 < match.fitness_m2;
+    rival.better =
+        r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin && r.fitness_m2 < match.fitness_m2;
     if (rival.better) return rival;
     if (rival.share > strongest.share) strongest = rival;
   }
