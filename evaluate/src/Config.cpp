@@ -112,6 +112,7 @@ void LoopConfig::validate() const {
   for (double d : ambiguity_along_m) requirePositive("ambiguity_along_m entries", d);
   for (double d : ambiguity_across_m) requirePositive("ambiguity_across_m entries", d);
   requireNonNegative("ambiguity_separation_m", ambiguity_separation_m);
+  requirePositive("ambiguity_rival_share", ambiguity_rival_share);
   if (!std::isfinite(max_correction_m)) rejectValue("max_correction_m", max_correction_m, "finite");
   requireNonNegative("correction_per_m", correction_per_m);
   requireNonNegative("window_per_m", window_per_m);

@@ -23,6 +23,7 @@ IcpAmbiguity loopAmbiguity(const LoopConfig& c) {
   a.across_m = c.ambiguity_across_m;
   a.separation_m = c.ambiguity_separation_m;
   a.inlier_margin = c.ambiguity_inlier_margin;
+  a.rival_share = c.ambiguity_rival_share;
   a.iterations = c.icp_iterations;
   a.max_corr_m = c.icp_max_corr_m;
   a.accept = IcpAcceptance{c.fitness_m2, c.min_inlier_ratio};

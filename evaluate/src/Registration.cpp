@@ -308,12 +308,13 @@ Mat3 IcpTarget::translationInformation(const Cloud& source, const Pose3& T,
   return matched > 0 ? Mat3(info / matched) : info;
 }
 
-std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source,
-                                     const IcpResult& match, const IcpAmbiguity& amb) {
+IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
+                        const IcpAmbiguity& amb) {
+  IcpRival strongest;
   const Pose3& T = match.T_target_source;
   Vec3 along = T.rotation().col(0);
   along.z() = 0.0;
-  if (along.norm() < 1e-6) return std::nullopt;
+  if (along.norm() < 1e-6) return strongest;
   along.normalize();
   const Vec3 across(-along.y(), along.x(), 0.0);
   std::vector<Vec3> shifts;
@@ -323,12 +324,17 @@ std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& sourc
     Pose3 init = T;
     init.translation() += shift;
     const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
-    const double apart = (r.T_target_source.translation() - T.translation()).norm();
-    if (apart > amb.separation_m && amb.accept(r) &&
-        r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin && r.fitness_m2 < match.fitness_m2)
-      return apart;
+    IcpRival rival;
+    rival.apart_m = (r.T_target_source.translation() - T.translation()).norm();
+    if (rival.apart_m <= amb.separation_m || !amb.accept(r)) continue;
+    rival.share = std::min(r.inlier_ratio / std::max(match.inlier_ratio, 1e-12),
+                           match.fitness_m2 / std::max(r.fitness_m2, 1e-12));
+    rival.better =
+        r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin && r.fitness_m2 < match.fitness_m2;
+    if (rival.better) return rival;
+    if (rival.share > strongest.share) strongest = rival;
   }
-  return std::nullopt;
+  return strongest;
 }
 
 }  // namespace slamroute::evaluate

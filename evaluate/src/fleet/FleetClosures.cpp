@@ -74,7 +74,8 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
         submap(ca, ka, c.keyframe, opt.target_keyframes_each_side, cfg.loop.voxel_m));
     const LoopVerification v = verifyLoop(target, Pose3::Identity(), cb.body[k], c, vo);
     if (!v.accepted) continue;
-    if (betterIcpMatch(target, cb.body[k], v.icp, loopAmbiguity(cfg.loop))) continue;
+    const IcpAmbiguity amb = loopAmbiguity(cfg.loop);
+    if (ambiguousMatch(strongestRival(target, cb.body[k], v.icp, amb), amb)) continue;
     const double conditioning = horizontalConditioning(
         target.translationInformation(cb.body[k], v.icp.T_target_source, vo.icp_max_corr_m / 3));
     if (conditioning < opt.min_horizontal_conditioning) continue;

@@ -160,9 +160,12 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
            ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
            std::to_string(icp.inlier_ratio) + (cand.place ? " (place descriptor)" : ""));
   if (!vo.accept(icp)) return std::nullopt;
-  if (const auto other = betterIcpMatch(icp_target, source, icp, loopAmbiguity(c))) {
+  const IcpAmbiguity amb = loopAmbiguity(c);
+  const IcpRival rival = strongestRival(icp_target, source, icp, amb);
+  logDebug("loop candidate: strongest rival " + std::to_string(rival.apart_m) + " m away, share " +
+           std::to_string(rival.share) + (rival.better ? ", fits better" : ""));
+  if (ambiguousMatch(rival, amb)) {
     ++stats_.ambiguous;
-    logDebug("loop candidate refused: a match " + std::to_string(*other) + " m away fits better");
     return std::nullopt;
   }
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();

@@ -166,15 +166,20 @@ struct LoopConfig {
   double fitness_m2 = 0.09;       ///< accept if mean squared inlier distance below [m^2]
   double min_inlier_ratio = 0.5;  ///< ... and at least this share of points matched
   double cooldown_s = 5.0;        ///< min time between two accepted closures [s]
-  /// Local-minimum check: an accepted ICP match is run again from its result shifted by these
+  /// Uniqueness check: an accepted ICP match is run again from its result shifted by these
   /// offsets along and across the new keyframe's heading (both signs). When one ends on another
   /// pose, more than ambiguity_separation_m away, that passes the same test and fits better, the
-  /// first match stopped in a local minimum (one facade along a row of look-alikes) and is
-  /// refused. Empty = off [m]
+  /// first match stopped in a local minimum (one facade along a row of look-alikes); when it
+  /// fits as well (inlier ratio at least ambiguity_rival_share of the match's, fitness at most
+  /// the match's over it), ICP cannot tell where along the street it is (a bridge between
+  /// uniform parapets stays wherever ICP starts, and a drifted estimate becomes the closure).
+  /// Either way the candidate is refused. Empty offsets = off; rival share >= 1 = only better
+  /// fits count [m], [1]
   std::vector<double> ambiguity_along_m = {3, 6, 9, 12};
   std::vector<double> ambiguity_across_m = {3, 6};
   double ambiguity_separation_m = 1.5;
   double ambiguity_inlier_margin = 0.0;
+  double ambiguity_rival_share = 0.98;
   /// A closure may move the new keyframe at most max_correction_m plus correction_per_m times
   /// the distance driven since the last accepted closure; a larger jump is taken for a look-alike
   /// place. Off by default: refusing true closures leaves the drift in place. Negative = no
@@ -399,6 +404,8 @@ void visitFields(V& v, LoopConfig& c) {
           "... at least this far from the first one [m]");
   v.field("ambiguity_inlier_margin", c.ambiguity_inlier_margin,
           "... matching this much larger a share of the points (and with a lower fitness)");
+  v.field("ambiguity_rival_share", c.ambiguity_rival_share,
+          "... or fitting as well: this share of the inliers and fitness (>= 1: only better)");
   v.field("correlative", c.correlative,
           "refuse a candidate that a pose elsewhere in the window fits nearly as well");
   v.field("window_per_m", c.window_per_m,

@@ -92,23 +92,39 @@ struct IcpAcceptance {
   }
 };
 
-/// Where to look for a better match than the one ICP found (a loop closure's check that it did
-/// not stop in a local minimum, e.g. one facade further along a row of look-alike facades).
+/// Where to look for a rival of the match ICP found: a local minimum it stopped in (one facade
+/// further along a row of look-alike facades), or a street ICP cannot pin down along its length
+/// (a bridge between uniform parapets, where ICP stays wherever it starts).
 struct IcpAmbiguity {
   std::vector<double> along_m;   ///< start offsets along the match's heading (both signs) [m]
   std::vector<double> across_m;  ///< ... and across it [m]
-  double separation_m = 1.5;     ///< another match must end at least this far away [m]
-  double inlier_margin = 0.0;    ///< ... and match this much more of the source's points
+  double separation_m = 1.5;     ///< a rival ends at least this far from the match [m]
+  double inlier_margin = 0.0;    ///< a better fit matches this much more of the source's points
+  /// A rival whose inlier ratio reaches this share of the match's, and whose fitness is at most
+  /// the match's over this share, fits as well: the match is ambiguous. 1 or more = off
+  double rival_share = 1.0;
   int iterations = 30;
   double max_corr_m = 2.0;
   IcpAcceptance accept;
 };
 
-/// ICP from `match` shifted by each offset of `amb`: the distance from `match` to the first
-/// result that ends more than amb.separation_m away, is accepted, matches a larger share of the
-/// source (by amb.inlier_margin) and has a lower fitness, i.e. a better fit elsewhere; nullopt
-/// when there is none.
-std::optional<double> betterIcpMatch(const IcpTarget& target, const Cloud& source,
-                                     const IcpResult& match, const IcpAmbiguity& amb);
+/// The restart that comes closest to the match (IcpAmbiguity).
+struct IcpRival {
+  double apart_m = 0.0;  ///< how far from the match it ended [m]
+  /// min(its inlier ratio / the match's, the match's fitness / its fitness): 1 = as good
+  double share = 0.0;
+  bool better = false;  ///< more of the points (by inlier_margin) and a lower fitness
+};
+
+/// ICP from `match` shifted by each offset of `amb`; of the results that end more than
+/// amb.separation_m away and are accepted, the one that fits better, else the one with the
+/// highest share; share 0 when there is none.
+IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
+                        const IcpAmbiguity& amb);
+
+/// The match is not unique: the rival fits better, or as well (amb.rival_share).
+inline bool ambiguousMatch(const IcpRival& r, const IcpAmbiguity& amb) {
+  return r.better || r.share >= amb.rival_share;
+}
 
 }  // namespace slamroute::evaluate
