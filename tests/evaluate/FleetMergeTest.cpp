@@ -62,9 +62,8 @@ std::vector<FleetClosure> trueClosures(const std::vector<FleetVehicleInput>& vs,
       if ((truth(0, kfs[0][j]).translation() - at).norm() <
           (truth(0, kfs[0][best]).translation() - at).norm())
         best = j;
-    out.push_back({0, 1, static_cast<int>(best), static_cast<int>(k), kfs[0][best].t,
-                   kfs[1][k].t, truth(0, kfs[0][best]).inverse() * truth(1, kfs[1][k]), 0.0,
-                   1.0});
+    out.push_back({0, 1, static_cast<int>(best), static_cast<int>(k), kfs[0][best].t, kfs[1][k].t,
+                   truth(0, kfs[0][best]).inverse() * truth(1, kfs[1][k]), 0.0, 1.0});
   }
   return out;
 }

@@ -14,14 +14,14 @@ namespace slamroute {
 struct FleetRoute {
   std::string strategy;  ///< partition | postman
   std::uint64_t seed = 0;
-  std::vector<Route> vehicles;          ///< one closed route per vehicle, from its depot
-  std::vector<int> depot_nodes;         ///< per vehicle: road-graph node it leaves and returns to
-  double makespan_m = 0.0;              ///< longest vehicle route
-  double total_length_m = 0.0;          ///< sum of the vehicle routes
-  double balance = 0.0;                 ///< makespan / mean route length (1 = perfectly even)
-  double single_route_m = 0.0;          ///< L1: the single-vehicle postman route from depot 0
-  double longest_round_trip_m = 0.0;    ///< max over edges of the shortest depot-edge-depot trip
-  double lower_bound_m = 0.0;           ///< max(L1 / K, longest_round_trip_m)
+  std::vector<Route> vehicles;        ///< one closed route per vehicle, from its depot
+  std::vector<int> depot_nodes;       ///< per vehicle: road-graph node it leaves and returns to
+  double makespan_m = 0.0;            ///< longest vehicle route
+  double total_length_m = 0.0;        ///< sum of the vehicle routes
+  double balance = 0.0;               ///< makespan / mean route length (1 = perfectly even)
+  double single_route_m = 0.0;        ///< L1: the single-vehicle postman route from depot 0
+  double longest_round_trip_m = 0.0;  ///< max over edges of the shortest depot-edge-depot trip
+  double lower_bound_m = 0.0;         ///< max(L1 / K, longest_round_trip_m)
   /// A proven lower bound that counts every vehicle's drive from its depot and back:
   /// max(longest_round_trip_m, max over far sets F of a + b + L(F) / K; rl MakespanBound.cpp)
   double depot_bound_m = 0.0;

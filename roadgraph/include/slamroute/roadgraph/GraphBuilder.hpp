@@ -15,12 +15,12 @@ struct GraphBuildStats {
   std::size_t trace_points = 0, voxels = 0, intersection_points = 0;
   std::size_t intersections = 0, dead_ends = 0, streets = 0, one_way_streets = 0;
   std::size_t unknown_direction_streets = 0, dropped_fragments = 0, isolated_nodes_dropped = 0;
-  std::size_t merged_end_pairs = 0;  ///< groups of nearby dead ends made one node
-  std::size_t passed_nodes = 0;      ///< street clusters split at a junction they run through
-  std::size_t short_links = 0;       ///< streets between close junctions from vehicle passes
+  std::size_t merged_end_pairs = 0;     ///< groups of nearby dead ends made one node
+  std::size_t passed_nodes = 0;         ///< street clusters split at a junction they run through
+  std::size_t short_links = 0;          ///< streets between close junctions from vehicle passes
   std::size_t stop_line_junctions = 0;  ///< dead ends just short of a street made a T junction
-  std::size_t u_turn_streets = 0;    ///< U-shaped clusters (separate lanes) attached at their bend
-  std::size_t roundabouts = 0;       ///< rings whose junctions replaced the nodes there
+  std::size_t u_turn_streets = 0;  ///< U-shaped clusters (separate lanes) attached at their bend
+  std::size_t roundabouts = 0;     ///< rings whose junctions replaced the nodes there
   std::size_t divided_node_pairs = 0;  ///< carriageway nodes of divided roads merged (pairs)
   std::size_t divided_streets = 0;     ///< carriageway pairs made one street
   double seconds = 0.0;
