@@ -1,4 +1,4 @@
-// Fleet planning on real nets: makespan against the lower bound max(L1 / K, longest
+// Fleet planning on real nets: makespan against the simple lower bound max(L1 / K, longest
 // depot-edge-depot round trip) and against the proven depot-trips bound (FleetRoute
 // depot_bound_m), total length against the single postman route L1, balance and planning time,
 // for K = 2, 4, 8 and both strategies. Depot: the first node of the planning
