@@ -1,6 +1,6 @@
 // Inter-vehicle closures: a place-descriptor candidate among the other vehicle's keyframes near
 // the query's estimate, verified as the SLAM verifies its own loops (ICP from the descriptor's
-// yaw, fitness and inlier share, yaw change, no better fit elsewhere).
+// yaw, fitness and inlier share, yaw change, no restart elsewhere fitting as well).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 
@@ -62,6 +62,7 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
   for (std::size_t k = 0; k < ka.size(); ++k)
     db.add(static_cast<int>(k), ca.descriptors[k], ka[k].pose.translation());
   const LoopVerifyOptions vo = loopVerifyOptions(cfg.loop);
+  const IcpAmbiguity amb = loopAmbiguity(cfg.loop);
   for (std::size_t k = 0; k < kb.size(); ++k) {
     PlaceQuery q;
     q.gate_centre = kb[k].pose.translation();
@@ -74,7 +75,6 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
         submap(ca, ka, c.keyframe, opt.target_keyframes_each_side, cfg.loop.voxel_m));
     const LoopVerification v = verifyLoop(target, Pose3::Identity(), cb.body[k], c, vo);
     if (!v.accepted) continue;
-    const IcpAmbiguity amb = loopAmbiguity(cfg.loop);
     if (ambiguousMatch(strongestRival(target, cb.body[k], v.icp, amb), amb)) continue;
     const double conditioning = horizontalConditioning(
         target.translationInformation(cb.body[k], v.icp.T_target_source, vo.icp_max_corr_m / 3));
