@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Why build-graph misses true streets (bench/RESULTS.md, "Divided roads").
 
-Usage: bench/missed_edges.py NET.net.xml GRAPH.json [--link M] [--radius M]
+Usage: bench/missed_edges.py NET.net.xml GRAPH.json [--link M] [--radius M] [--traces CSV]
 
 Rebuilds the place-level truth of build-graph's `place_validation` (roadgraph/src/SumoMatch.cpp:
 intersections joined by a passenger edge of at most --link m are one place; true intersections
@@ -17,7 +17,11 @@ places, the node matched to each, its length along SUMO, and why it is missed:
   geometry mismatch       a street along the chain ends at another true place's node
   no street               no street of the graph runs along the chain (not driven, or cleared)
 A street runs along a chain when most of its polyline lies within ALONG_M of the chain's SUMO
-lanes (both carriageways). Needs sumolib (Debian sumo-tools: $SUMO_HOME/tools).
+lanes (both carriageways). With --traces (the survey's traces.csv) each chain is also marked
+driven or not (a trace point within DRIVEN_M of most of its lanes' samples, DRIVEN_SKIP_M off
+its ends, and at least three arms of each end place driven, or the place is no junction in the
+traces), and the recall over the driven chains alone is printed: the scoring counts every true
+chain of the net, driven or not. Needs sumolib (Debian sumo-tools: $SUMO_HOME/tools).
 """
 import argparse
 import json
@@ -32,6 +36,10 @@ import sumolib  # noqa: E402
 ALONG_M = 9.0          # a street point this close to the chain's lanes runs along it
 ALONG_SHARE = 0.6      # share of a street's points that must run along the chain
 STEP_M = 2.0
+DRIVEN_M = 4.0         # a lane sample with a trace point this close was driven
+DRIVEN_SKIP_M = 15.0   # ... not counting the samples this close to the chain's end places
+DRIVEN_SHARE = 0.8     # share of a chain's samples that must be driven
+ARM_SHARE = 0.4        # ... and of an arm's (one carriageway of two suffices)
 
 
 def samples(shape, step=STEP_M):
@@ -145,12 +153,60 @@ def describe(n, ctx):
         ", its place matched by node %d" % other if other is not None else "")
 
 
+def trace_cells(path):
+    cells = set()
+    with open(path) as f:
+        head = f.readline().strip().split(",")
+        ix, iy = head.index("x"), head.index("y")
+        for line in f:
+            row = line.split(",")
+            cells.add((int(float(row[ix]) // DRIVEN_M), int(float(row[iy]) // DRIVEN_M)))
+    return cells
+
+
+def driven_arms(place, ctx):
+    """How many of a place's arms the traces run along (DRIVEN_SKIP_M to 2 x that from it, on
+    either carriageway; an arm shorter than that is followed through places with 2 neighbours)."""
+    own = [ctx["pos"][j] for j in ctx["members"][place]]
+    count = 0
+    for other in ctx["pnb"][place]:
+        prev, cur, pts = place, other, []
+        for _ in range(10):
+            pts += [p for _, s in ctx["shapes"][frozenset((prev, cur))] for p in samples(s)
+                    if DRIVEN_SKIP_M < min(math.dist(p, q) for q in own) <= 2 * DRIVEN_SKIP_M]
+            if len(ctx["pnb"][cur]) != 2 or min(
+                    math.dist(ctx["pos"][j], q) for j in ctx["members"][cur] for q in own) > \
+                    2 * DRIVEN_SKIP_M:
+                break
+            prev, cur = cur, next(n for n in ctx["pnb"][cur] if n != prev)
+        count += bool(pts) and driven_share(pts, ctx["trace_cells"]) >= ARM_SHARE
+    return count
+
+
+def driven_share(pts, cells):
+    hit = sum(any((int(p[0] // DRIVEN_M) + i, int(p[1] // DRIVEN_M) + j) in cells
+                  for i in (-1, 0, 1) for j in (-1, 0, 1)) for p in pts)
+    return hit / len(pts)
+
+
+def driven(path, ctx):
+    """Whether the survey's traces run along most of the chain's lanes (away from its ends)."""
+    ends = [ctx["pos"][j] for t in (path[0], path[-1]) for j in ctx["members"][t]]
+    pts = [p for x, y in zip(path, path[1:]) for _, s in ctx["shapes"][frozenset((x, y))]
+           for p in samples(s) if min(math.dist(p, q) for q in ends) > DRIVEN_SKIP_M]
+    if not pts:
+        return True
+    return (driven_share(pts, ctx["trace_cells"]) >= DRIVEN_SHARE and
+            all(driven_arms(t, ctx) >= 3 for t in (path[0], path[-1])))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("net")
     ap.add_argument("graph")
     ap.add_argument("--link", type=float, default=25.0)
     ap.add_argument("--radius", type=float, default=15.0)
+    ap.add_argument("--traces", help="the survey's traces.csv: mark each chain driven or not")
     args = ap.parse_args()
     members, pnb, shapes, pos = place_truth(args.net, args.link)
     truth = sorted(t for t in pnb if len(pnb[t]) >= 3)
@@ -174,11 +230,17 @@ def main():
                 found.add(key)
     ctx = dict(t2d=t2d, d2t=d2t, det=det, nodes=nodes, pos=pos, members=members, radius=args.radius,
                shapes=shapes, streets=streets, ends_of=ends_of, end_nodes=end_nodes, pnb=pnb,
-               place={j: t for t, js in members.items() for j in js})
+               place={j: t for t, js in members.items() for j in js},
+               trace_cells=trace_cells(args.traces) if args.traces else None)
     print("places %d, true chains %d, found %d (recall %.3f); graph.json: %d / %d (%.3f)" % (
         len(truth), len(chains), len(found), len(found) / max(1, len(chains)),
         meta["place_validation"]["found_chains"], meta["place_validation"]["true_chains"],
         meta["place_validation"]["edge_recall"]))
+    if args.traces:
+        was_driven = {k for k in chains if driven(chains[k], ctx)}
+        print("driven chains %d of %d; found %d of them (recall over driven chains %.3f)" % (
+            len(was_driven), len(chains), len(found & was_driven),
+            len(found & was_driven) / max(1, len(was_driven))))
     for key in sorted(chains):
         if key in found:
             continue
@@ -187,7 +249,8 @@ def main():
         xy = [tuple(round(c) for c in pos[members[t][0]]) for t in key]
         print("%-28s %-28s nodes %4s %4s  %6.0f m  at %s %s  %s" % (
             key[0][:28], key[1][:28], t2d.get(key[0], "-"), t2d.get(key[1], "-"), length,
-            xy[0], xy[1], why(key, path, ctx)))
+            xy[0], xy[1], why(key, path, ctx)) +
+              ("" if not args.traces else "  [driven]" if key in was_driven else "  [not driven]"))
 
 
 if __name__ == "__main__":

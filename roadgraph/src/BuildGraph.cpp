@@ -94,6 +94,7 @@ nlohmann::json statsJson(const GraphBuildStats& st) {
           {"roundabouts", st.roundabouts},
           {"divided_node_pairs", st.divided_node_pairs},
           {"divided_streets", st.divided_streets},
+          {"staggered_node_pairs", st.staggered_node_pairs},
           {"dropped_fragments", st.dropped_fragments},
           {"seconds", st.seconds}};
 }

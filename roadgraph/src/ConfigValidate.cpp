@@ -58,6 +58,8 @@ void DividedRoadConfig::validate() const {
   requireNonNegative("max_along_m", max_along_m, 1000.0);
   requirePositive("arm_length_m", arm_length_m, 1000.0);
   requireNonNegative("parallel_angle_deg", parallel_angle_deg, 90.0);
+  requireNonNegative("stagger_max_gap_m", stagger_max_gap_m, 1000.0);
+  requireNonNegative("stagger_straight_deg", stagger_straight_deg, 90.0);
 }
 
 void DepthConfig::validate() const {

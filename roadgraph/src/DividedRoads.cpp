@@ -16,7 +16,10 @@
 // 2. Partners are merged (transitively: the four corners of a junction box become one node) at
 //    the mean of their positions; edges between nodes of one place are dropped and the polylines
 //    of the others start / end at the merged node.
-// 3. A one-way edge u -> v and a one-way edge v -> u of similar length are the two carriageways
+// 3. Staggered T junctions (StaggeredJunctions.cpp): two T junctions a street's length apart
+//    whose side streets leave on opposite sides of the through street are one place too; the
+//    merged node keeps one junction's position.
+// 4. A one-way edge u -> v and a one-way edge v -> u of similar length are the two carriageways
 //    of one street: they share one street id.
 #include "DividedRoads.hpp"
 
@@ -38,19 +41,6 @@ struct Arm {
   Eigen::Vector2d dir = Eigen::Vector2d::Zero();  ///< from the node towards `tip`, unit
   Eigen::Vector2d tip = Eigen::Vector2d::Zero();  ///< point arm_length_m along the edge
 };
-
-/// The point `s` metres along pl from its start (from its end when from_end).
-Eigen::Vector2d pointAlong(const Polyline& pl, double s, bool from_end) {
-  const std::size_t n = pl.size();
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    const Point3& a = from_end ? pl[n - 1 - k] : pl[k];
-    const Point3& b = from_end ? pl[n - 2 - k] : pl[k + 1];
-    const double len = (b - a).head<2>().norm();
-    if (s <= len && len > 0.0) return (a + (b - a) * (s / len)).head<2>();
-    s -= len;
-  }
-  return (from_end ? pl.front() : pl.back()).head<2>();
-}
 
 std::vector<int> edgesPerStreet(const RoadGraph& g) {
   int streets = 0;
@@ -99,20 +89,6 @@ bool sideBySide(const Arm& a, const Eigen::Vector2d& p, const Arm& b, const Eige
          (a.tip - b.tip).norm() <= cfg.max_node_gap_m;
 }
 
-/// Nodes that may be a carriageway crossing: intersections, not the junctions of a roundabout
-/// (whose one-way ring arcs run side by side with the split arms joining it).
-std::vector<char> mergeableNodes(const GraphBuildResult& out) {
-  std::vector<char> ok(out.graph.nodes.size(), 0);
-  for (std::size_t n = 0; n < ok.size(); ++n) {
-    const Point3& p = out.graph.nodes[n].pos;
-    ok[n] = !out.node_is_end[n];
-    for (const auto& rb : out.roundabouts)
-      for (const auto& j : rb.junctions)
-        if ((j - p).norm() < 1e-6) ok[n] = 0;
-  }
-  return ok;
-}
-
 /// Step 1: the carriageway partners, as sets of nodes (root = smallest id).
 UnionFind carriagewayPartners(const GraphBuildResult& out, const DividedRoadConfig& cfg,
                               double half_height_m, std::size_t& pairs) {
@@ -153,25 +129,25 @@ void moveEnd(Polyline& pl, bool front, const Point3& old_pos, const Point3& new_
     pl.push_back(new_pos);
 }
 
-/// Step 2: one node per set at the mean of its members, the edges between sets.
-void contractPlaces(GraphBuildResult& out, UnionFind& sets) {
+/// Step 2: one node per set at the weighted mean of its members, the edges between sets.
+void contractPlaces(GraphBuildResult& out, UnionFind& sets, const std::vector<double>& weight) {
   RoadGraph& g = out.graph;
   const std::size_t n = g.nodes.size();
   std::vector<int> new_id(n, -1);
   std::vector<Point3> sum;
-  std::vector<int> members;
+  std::vector<double> members;
   std::vector<char> is_end;
   for (std::size_t v = 0; v < n; ++v) {
     const auto root = static_cast<std::size_t>(sets.find(static_cast<int>(v)));
     if (new_id[root] < 0) {
       new_id[root] = static_cast<int>(sum.size());
       sum.push_back(Point3::Zero());
-      members.push_back(0);
+      members.push_back(0.0);
       is_end.push_back(out.node_is_end[v]);
     }
     new_id[v] = new_id[root];
-    sum[static_cast<std::size_t>(new_id[v])] += g.nodes[v].pos;
-    ++members[static_cast<std::size_t>(new_id[v])];
+    sum[static_cast<std::size_t>(new_id[v])] += weight[v] * g.nodes[v].pos;
+    members[static_cast<std::size_t>(new_id[v])] += weight[v];
   }
   std::vector<RoadNode> nodes(sum.size());
   for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -264,17 +240,51 @@ void recount(const RoadGraph& g, const std::vector<char>& node_is_end, GraphBuil
 
 }  // namespace
 
+/// The point `s` metres along pl from its start (from its end when from_end).
+Eigen::Vector2d pointAlong(const Polyline& pl, double s, bool from_end) {
+  const std::size_t n = pl.size();
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const Point3& a = from_end ? pl[n - 1 - k] : pl[k];
+    const Point3& b = from_end ? pl[n - 2 - k] : pl[k + 1];
+    const double len = (b - a).head<2>().norm();
+    if (s <= len && len > 0.0) return (a + (b - a) * (s / len)).head<2>();
+    s -= len;
+  }
+  return (from_end ? pl.front() : pl.back()).head<2>();
+}
+
+std::vector<char> mergeableNodes(const GraphBuildResult& out) {
+  std::vector<char> ok(out.graph.nodes.size(), 0);
+  for (std::size_t n = 0; n < ok.size(); ++n) {
+    const Point3& p = out.graph.nodes[n].pos;
+    ok[n] = !out.node_is_end[n];
+    for (const auto& rb : out.roundabouts)
+      for (const auto& j : rb.junctions)
+        if ((j - p).norm() < 1e-6) ok[n] = 0;
+  }
+  return ok;
+}
+
 void mergeDividedRoads(GraphBuildResult& out, const DividedRoadConfig& cfg, double half_height_m) {
   if (!cfg.enabled) return;
   std::size_t pairs = 0;
   UnionFind sets = carriagewayPartners(out, cfg, half_height_m, pairs);
   out.stats.divided_node_pairs = pairs;
   if (pairs > 0) {
-    contractPlaces(out, sets);
+    contractPlaces(out, sets, std::vector<double>(out.graph.nodes.size(), 1.0));
+    dropNodesWithoutEdges(out);
+  }
+  std::size_t staggered = 0;
+  std::vector<double> weight;
+  UnionFind stagger_sets = staggeredPairs(out, cfg, half_height_m, staggered, weight);
+  out.stats.staggered_node_pairs = staggered;
+  if (staggered > 0) {
+    contractPlaces(out, stagger_sets, weight);
     dropNodesWithoutEdges(out);
   }
   out.stats.divided_streets = pairCarriageways(out.graph, cfg);
-  if (pairs > 0 || out.stats.divided_streets > 0) recount(out.graph, out.node_is_end, out.stats);
+  if (pairs > 0 || staggered > 0 || out.stats.divided_streets > 0)
+    recount(out.graph, out.node_is_end, out.stats);
 }
 
 }  // namespace slamroute::roadgraph::detail

@@ -165,6 +165,103 @@ TEST(DividedRoads, CarriagewayNodesMergeIntoOnePlaceEach) {
   g.validate("merged graph");
 }
 
+/// Two-way straight streets between the given nodes; node_is_end marks the dead ends.
+GraphBuildResult twoWayGraph(const std::vector<Point3>& pos, std::vector<char> node_is_end,
+                             const std::vector<std::pair<int, int>>& streets) {
+  GraphBuildResult out;
+  RoadGraph& g = out.graph;
+  for (std::size_t k = 0; k < pos.size(); ++k) g.nodes.push_back({static_cast<int>(k), pos[k], ""});
+  out.node_is_end = std::move(node_is_end);
+  for (const auto& [u, v] : streets) {
+    const int street = static_cast<int>(g.edges.size()) / 2;
+    const auto a = static_cast<std::size_t>(u), b = static_cast<std::size_t>(v);
+    g.edges.push_back(straightEdge(static_cast<int>(g.edges.size()), street, u, v, pos[a], pos[b]));
+    g.edges.push_back(straightEdge(static_cast<int>(g.edges.size()), street, v, u, pos[b], pos[a]));
+  }
+  return out;
+}
+
+/// A through street along y = 0 from A (-200, 0) over P (0, 0) and Q (32, 0) to B (232, 0), with
+/// a side street from P to (0, 150 * side_p) and one from Q to (32 + q_dx, 150 * side_q); the
+/// far ends are dead ends.
+GraphBuildResult staggeredGraph(double side_p, double side_q, double q_dx = 0.0) {
+  return twoWayGraph({{-200, 0, 0}, {0, 0, 0}, {32, 0, 0}, {232, 0, 0}, {0, 150 * side_p, 0},
+                      {32 + q_dx, 150 * side_q, 0}},
+                     {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {2, 3}, {1, 4}, {2, 5}});
+}
+
+DividedRoadConfig staggerConfig(double max_gap_m = 40.0) {
+  DividedRoadConfig cfg;
+  cfg.stagger_max_gap_m = max_gap_m;
+  return cfg;
+}
+
+TEST(DividedRoads, StaggeredTJunctionsAreOnePlace) {
+  GraphBuildResult out = staggeredGraph(1.0, -1.0);
+  detail::mergeDividedRoads(out, staggerConfig(), 5.0);
+  const RoadGraph& g = out.graph;
+  EXPECT_EQ(out.stats.staggered_node_pairs, 1u);
+  ASSERT_EQ(g.nodes.size(), 5u);
+  EXPECT_NE(nodeNear(g, 0, 0, 0.1), nullptr);
+  EXPECT_EQ(nodeNear(g, 32, 0, 10.0), nullptr);
+  EXPECT_EQ(g.edges.size(), 8u);
+  EXPECT_EQ(out.stats.intersections, 1u);
+  EXPECT_EQ(out.stats.streets, 4u);
+  EXPECT_NE(edgeBetween(g, {0, 0}, {32, -150}), nullptr);
+  EXPECT_NE(edgeBetween(g, {232, 0}, {0, 0}), nullptr);
+  g.validate("merged staggered graph");
+  GraphBuildResult kept = staggeredGraph(1.0, -1.0);
+  detail::mergeDividedRoads(kept, DividedRoadConfig{}, 5.0);  // off by default
+  EXPECT_EQ(kept.graph.nodes.size(), 6u);
+}
+
+// Not staggered pairs, so two places each: both side streets on the same side (two T junctions
+// along one kerb), Q's side street running on nearly straight (a fork, not a T), and the pair
+// farther apart than stagger_max_gap_m.
+TEST(DividedRoads, TJunctionsOnOneSideOrFarApartStayTwoPlaces) {
+  for (const auto& [name, out] : {std::pair{"same side", staggeredGraph(1.0, 1.0)},
+                                  {"side arm straight on", staggeredGraph(1.0, -1.0 / 150.0, 300)}}) {
+    GraphBuildResult merged = out;
+    detail::mergeDividedRoads(merged, staggerConfig(), 5.0);
+    EXPECT_EQ(merged.stats.staggered_node_pairs, 0u) << name;
+    EXPECT_EQ(merged.graph.nodes.size(), 6u) << name;
+  }
+  GraphBuildResult far = staggeredGraph(1.0, -1.0);
+  detail::mergeDividedRoads(far, staggerConfig(30.0), 5.0);
+  EXPECT_EQ(far.graph.nodes.size(), 6u);
+}
+
+// A street that jogs: from A (-200, 0) east through the T at P (0, 0), whose side street goes
+// north, to Q (32, 0) on a north-south street, where it ends (Q is a T whose side arm is P - Q).
+// Known answer: with stagger_jogs one node at P (Q's position is given up: both have 6 edges,
+// the lower id keeps its own), its arms west, north and Q's north and south; without, two.
+TEST(DividedRoads, StreetJoggingAcrossACrossingStreetIsOnePlaceWithJogs) {
+  const auto jogGraph = [] {
+    return twoWayGraph({{-200, 0, 0}, {0, 0, 0}, {32, 0, 0}, {0, 150, 0}, {32, 150, 0},
+                        {32, -150, 0}},
+                       {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {1, 3}, {2, 4}, {2, 5}});
+  };
+  GraphBuildResult plain = jogGraph();
+  detail::mergeDividedRoads(plain, staggerConfig(), 5.0);
+  EXPECT_EQ(plain.graph.nodes.size(), 6u);
+  DividedRoadConfig cfg = staggerConfig();
+  cfg.stagger_jogs = true;
+  GraphBuildResult jog = jogGraph();
+  detail::mergeDividedRoads(jog, cfg, 5.0);
+  EXPECT_EQ(jog.stats.staggered_node_pairs, 1u);
+  ASSERT_EQ(jog.graph.nodes.size(), 5u);
+  EXPECT_NE(nodeNear(jog.graph, 0, 0, 0.1), nullptr);
+  EXPECT_NE(edgeBetween(jog.graph, {0, 0}, {32, -150}), nullptr);
+  EXPECT_NE(edgeBetween(jog.graph, {32, 150}, {0, 0}), nullptr);
+  EXPECT_EQ(jog.graph.edges.size(), 8u);
+  // Two stems (a short street between two parallel streets) stay two places.
+  GraphBuildResult rung = twoWayGraph({{0, -150, 0}, {0, 0, 0}, {32, 0, 0}, {0, 150, 0},
+                                       {32, 150, 0}, {32, -150, 0}},
+                                      {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {1, 3}, {2, 4}, {2, 5}});
+  detail::mergeDividedRoads(rung, cfg, 5.0);
+  EXPECT_EQ(rung.graph.nodes.size(), 6u);
+}
+
 // Without the merge each carriageway crossing is a node of its own: the junction-level answer.
 TEST(DividedRoads, WithoutTheMergeEachCarriagewayCrossingIsANode) {
   const SumoNet net = shippedNet("divided_avenue");

@@ -162,6 +162,16 @@ struct DividedRoadConfig {
   double max_along_m = 15.0;         ///< ... and at most this far ahead of / behind the node [m]
   double arm_length_m = 25.0;        ///< an arm's direction from the node to this far along [m]
   double parallel_angle_deg = 20.0;  ///< the two carriageways' arms are parallel within [deg]
+  /// Staggered junctions (StaggeredJunctions.cpp): two T junctions joined by a street of at most
+  /// this length whose side streets leave on opposite sides of it are one place (0 = off) [m].
+  /// Off by default: each such merge is one SUMO junction less at junction level (Braunschweig's
+  /// node F1 0.905 -> 0.878, below the held-out test's 0.9), while at place level it is one
+  /// true place (bench/RESULTS.md "Divided roads"). 40 m: the pairs on Berlin-Adlershof stand
+  /// 31-36 m apart.
+  double stagger_max_gap_m = 0.0;
+  double stagger_straight_deg = 30.0;  ///< the through street bends less than this [deg]
+  /// Also a T and the T whose side arm it stands on (the street jogs across a crossing street).
+  bool stagger_jogs = false;
 };
 template <class V>
 void visitFields(V& v, DividedRoadConfig& c) {
@@ -173,6 +183,14 @@ void visitFields(V& v, DividedRoadConfig& c) {
   v.field("arm_length_m", c.arm_length_m, "arm direction from the node to this far along [m]");
   v.field("parallel_angle_deg", c.parallel_angle_deg,
           "the two carriageways' arms are parallel within this [deg]");
+  v.field("stagger_max_gap_m", c.stagger_max_gap_m,
+          "two T junctions at most this far apart with side streets on opposite sides of the "
+          "street joining them are one place (0 = off) [m]");
+  v.field("stagger_straight_deg", c.stagger_straight_deg,
+          "... the street through them bends less than this at each [deg]");
+  v.field("stagger_jogs", c.stagger_jogs,
+          "also merge a T with the T whose side arm it stands on (a street jogging across "
+          "another)");
 }
 
 /// Edge weights from depth images (paper §3.1, eqs. 3-4).
