@@ -29,6 +29,7 @@ std::vector<char> mergeableNodes(const GraphBuildResult& out);
 /// `weight` is 0 for the node of a pair that gives up its position (the other keeps its own, so
 /// the merged node stays on a junction).
 slamroute::UnionFind staggeredPairs(const GraphBuildResult& out, const DividedRoadConfig& cfg,
-                         double half_height_m, std::size_t& pairs, std::vector<double>& weight);
+                                    double half_height_m, std::size_t& pairs,
+                                    std::vector<double>& weight);
 
 }  // namespace slamroute::roadgraph::detail

@@ -35,10 +35,10 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 /// What a node with three arms is to the street `link` (unit, from the node towards its
 /// partner) joining it to its partner.
 enum class Role {
-  kNone,        ///< not a T on that street
-  kThroughLeft, ///< the street runs straight on through the node; the third arm leaves left
+  kNone,         ///< not a T on that street
+  kThroughLeft,  ///< the street runs straight on through the node; the third arm leaves left
   kThroughRight,
-  kStem,        ///< the street is the T's side arm: the other two run straight on, across it
+  kStem,  ///< the street is the T's side arm: the other two run straight on, across it
 };
 
 Role roleOf(const std::map<int, Eigen::Vector2d>& arms, int partner, const Eigen::Vector2d& link,
@@ -84,9 +84,11 @@ std::vector<Candidate> candidates(const GraphBuildResult& out, const DividedRoad
   std::vector<Candidate> found;
   for (const auto& e : g.edges) {
     const int p = std::min(e.u, e.v), q = std::max(e.u, e.v);
-    if (p == q || !mergeable[static_cast<std::size_t>(p)] || !mergeable[static_cast<std::size_t>(q)])
+    if (p == q || !mergeable[static_cast<std::size_t>(p)] ||
+        !mergeable[static_cast<std::size_t>(q)])
       continue;
-    const Point3 d = g.nodes[static_cast<std::size_t>(q)].pos - g.nodes[static_cast<std::size_t>(p)].pos;
+    const Point3 d =
+        g.nodes[static_cast<std::size_t>(q)].pos - g.nodes[static_cast<std::size_t>(p)].pos;
     const double gap = d.head<2>().norm();
     if (gap > cfg.stagger_max_gap_m || gap < 1e-6 || std::abs(d.z()) > half_height_m) continue;
     const Eigen::Vector2d link = d.head<2>() / gap;

@@ -185,7 +185,11 @@ GraphBuildResult twoWayGraph(const std::vector<Point3>& pos, std::vector<char> n
 /// a side street from P to (0, 150 * side_p) and one from Q to (32 + q_dx, 150 * side_q); the
 /// far ends are dead ends.
 GraphBuildResult staggeredGraph(double side_p, double side_q, double q_dx = 0.0) {
-  return twoWayGraph({{-200, 0, 0}, {0, 0, 0}, {32, 0, 0}, {232, 0, 0}, {0, 150 * side_p, 0},
+  return twoWayGraph({{-200, 0, 0},
+                      {0, 0, 0},
+                      {32, 0, 0},
+                      {232, 0, 0},
+                      {0, 150 * side_p, 0},
                       {32 + q_dx, 150 * side_q, 0}},
                      {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {2, 3}, {1, 4}, {2, 5}});
 }
@@ -219,8 +223,9 @@ TEST(DividedRoads, StaggeredTJunctionsAreOnePlace) {
 // along one kerb), Q's side street running on nearly straight (a fork, not a T), and the pair
 // farther apart than stagger_max_gap_m.
 TEST(DividedRoads, TJunctionsOnOneSideOrFarApartStayTwoPlaces) {
-  for (const auto& [name, out] : {std::pair{"same side", staggeredGraph(1.0, 1.0)},
-                                  {"side arm straight on", staggeredGraph(1.0, -1.0 / 150.0, 300)}}) {
+  for (const auto& [name, out] :
+       {std::pair{"same side", staggeredGraph(1.0, 1.0)},
+        {"side arm straight on", staggeredGraph(1.0, -1.0 / 150.0, 300)}}) {
     GraphBuildResult merged = out;
     detail::mergeDividedRoads(merged, staggerConfig(), 5.0);
     EXPECT_EQ(merged.stats.staggered_node_pairs, 0u) << name;
@@ -237,9 +242,9 @@ TEST(DividedRoads, TJunctionsOnOneSideOrFarApartStayTwoPlaces) {
 // the lower id keeps its own), its arms west, north and Q's north and south; without, two.
 TEST(DividedRoads, StreetJoggingAcrossACrossingStreetIsOnePlaceWithJogs) {
   const auto jogGraph = [] {
-    return twoWayGraph({{-200, 0, 0}, {0, 0, 0}, {32, 0, 0}, {0, 150, 0}, {32, 150, 0},
-                        {32, -150, 0}},
-                       {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {1, 3}, {2, 4}, {2, 5}});
+    return twoWayGraph(
+        {{-200, 0, 0}, {0, 0, 0}, {32, 0, 0}, {0, 150, 0}, {32, 150, 0}, {32, -150, 0}},
+        {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {1, 3}, {2, 4}, {2, 5}});
   };
   GraphBuildResult plain = jogGraph();
   detail::mergeDividedRoads(plain, staggerConfig(), 5.0);
@@ -255,9 +260,9 @@ TEST(DividedRoads, StreetJoggingAcrossACrossingStreetIsOnePlaceWithJogs) {
   EXPECT_NE(edgeBetween(jog.graph, {32, 150}, {0, 0}), nullptr);
   EXPECT_EQ(jog.graph.edges.size(), 8u);
   // Two stems (a short street between two parallel streets) stay two places.
-  GraphBuildResult rung = twoWayGraph({{0, -150, 0}, {0, 0, 0}, {32, 0, 0}, {0, 150, 0},
-                                       {32, 150, 0}, {32, -150, 0}},
-                                      {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {1, 3}, {2, 4}, {2, 5}});
+  GraphBuildResult rung =
+      twoWayGraph({{0, -150, 0}, {0, 0, 0}, {32, 0, 0}, {0, 150, 0}, {32, 150, 0}, {32, -150, 0}},
+                  {1, 0, 0, 1, 1, 1}, {{0, 1}, {1, 2}, {1, 3}, {2, 4}, {2, 5}});
   detail::mergeDividedRoads(rung, cfg, 5.0);
   EXPECT_EQ(rung.graph.nodes.size(), 6u);
 }

@@ -21,8 +21,8 @@ struct GraphBuildStats {
   std::size_t stop_line_junctions = 0;  ///< dead ends just short of a street made a T junction
   std::size_t u_turn_streets = 0;  ///< U-shaped clusters (separate lanes) attached at their bend
   std::size_t roundabouts = 0;     ///< rings whose junctions replaced the nodes there
-  std::size_t divided_node_pairs = 0;  ///< carriageway nodes of divided roads merged (pairs)
-  std::size_t divided_streets = 0;     ///< carriageway pairs made one street
+  std::size_t divided_node_pairs = 0;    ///< carriageway nodes of divided roads merged (pairs)
+  std::size_t divided_streets = 0;       ///< carriageway pairs made one street
   std::size_t staggered_node_pairs = 0;  ///< T junctions on opposite sides merged (pairs)
   double seconds = 0.0;
 };
