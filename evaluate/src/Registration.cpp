@@ -141,7 +141,7 @@ void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& sr
     for (const auto& pf : src_edges) {
       const Vec3 p = pf.cast<double>();
       const Vec3 q = R * p + t;
-      if (target.edge_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
+      if (target.edge_tree.knnWithin(q.cast<float>(), kK, max_d2, idx, d2) < kK) continue;
       const Pca s = pca(target.edges, idx);
       const Vec3 ev = s.es.eigenvalues();
       if (ev(2) < 3.0 * ev(1)) continue;  // neighbours are not on a line
@@ -152,7 +152,7 @@ void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& sr
     for (const auto& pf : src_planes) {
       const Vec3 p = pf.cast<double>();
       const Vec3 q = R * p + t;
-      if (target.plane_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
+      if (target.plane_tree.knnWithin(q.cast<float>(), kK, max_d2, idx, d2) < kK) continue;
       const Pca s = pca(target.planes, idx);
       const Vec3 n = s.es.eigenvectors().col(0);
       bool planar = true;
@@ -259,7 +259,7 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
     for (const auto& pf : source) {
       const Vec3 p = pf.cast<double>();
       const Vec3 q = R * p + T.translation();
-      if (tree.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > corr2) continue;
+      if (tree.knnWithin(q.cast<float>(), 1, corr2, idx, d2) < 1) continue;
       const Vec3& n = normals[static_cast<std::size_t>(idx[0])];
       if (n.isZero()) continue;
       ne.add(R, p, n, n.dot(q - target[static_cast<std::size_t>(idx[0])].cast<double>()), corr);
@@ -276,11 +276,14 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   res.T_target_source = T;
   // Fitness as in PCL's getFitnessScore, restricted to inliers within the final radius.
   const double final_corr = max_corr_m / 3.0;
+  const auto final_corr2 = static_cast<float>(final_corr * final_corr);
   double sum = 0;
   int inl = 0;
   for (const auto& pf : source) {
     const Vec3 q = T * pf.cast<double>();
-    if (tree.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > final_corr * final_corr) continue;
+    if (tree.knnWithin(q.cast<float>(), 1, final_corr2, idx, d2) < 1 ||
+        d2[0] > final_corr * final_corr)
+      continue;
     sum += d2[0];
     ++inl;
   }
@@ -299,7 +302,10 @@ Mat3 IcpTarget::translationInformation(const Cloud& source, const Pose3& T,
   int matched = 0;
   for (const auto& pf : source) {
     const Vec3 q = T * pf.cast<double>();
-    if (tree_.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > max_corr_m * max_corr_m) continue;
+    const auto max_corr2 = static_cast<float>(max_corr_m * max_corr_m);
+    if (tree_.knnWithin(q.cast<float>(), 1, max_corr2, idx, d2) < 1 ||
+        d2[0] > max_corr_m * max_corr_m)
+      continue;
     const Vec3& n = normals_[static_cast<std::size_t>(idx[0])];
     if (n.isZero()) continue;
     info += n * n.transpose();
