@@ -156,9 +156,9 @@ Fit planeFit(const Cloud& cloud, const std::vector<int>& idx, double max_dev_m) 
   f.axis = s.es.eigenvectors().col(0);
   f.ok = true;
   for (int i : idx)
-    f.ok = f.ok &&
-           std::abs(f.axis.dot(cloud[static_cast<std::size_t>(i)].cast<double>() - s.mean)) <
-               max_dev_m;
+    f.ok =
+        f.ok && std::abs(f.axis.dot(cloud[static_cast<std::size_t>(i)].cast<double>() - s.mean)) <
+                    max_dev_m;
   return f;
 }
 
@@ -176,8 +176,7 @@ void associateKind(const KdTree& tree, const Cloud& target, const Cloud& src, co
   for (std::size_t i = 0; i < src.size(); ++i) {
     const Vec3 p = src[i].cast<double>();
     const Vec3 q = R * p + t;
-    if (tree.knnWithin(q.cast<float>(), kFitNeighbours, max_d2, idx, d2) < kFitNeighbours)
-      continue;
+    if (tree.knnWithin(q.cast<float>(), kFitNeighbours, max_d2, idx, d2) < kFitNeighbours) continue;
     Fit& f = fits[i];
     if (!std::equal(idx.begin(), idx.end(), f.from.begin())) {
       f = fit(idx);
