@@ -3,6 +3,8 @@
 // (body) frame and LeGO-LOAM's split into z/roll/pitch and x/y/yaw is a mask on delta.
 #include "slamroute/evaluate/Registration.hpp"
 
+#include "KeptNeighbours.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
@@ -130,28 +132,34 @@ struct Corr {
 
 constexpr int kFitNeighbours = 5;
 
-/// A line or plane fitted to a source point's target neighbours, kept with the neighbours it
-/// came from: when a later association finds the same neighbours (the usual case once the pose
-/// settles), the fit is the same and is not computed again.
-struct Fit {
-  std::array<int, kFitNeighbours> from{-1, -1, -1, -1, -1};
+/// A line or plane fitted to target neighbours.
+struct Shape {
   bool ok = false;  ///< the neighbours lie on a line / plane
   Vec3 mean = Vec3::Zero(), axis = Vec3::Zero();
 };
 
-Fit lineFit(const Cloud& cloud, const std::vector<int>& idx) {
+/// A source point's fitted shape, kept with the neighbours it came from: when a later
+/// association finds the same neighbours (the usual case once the pose settles), the shape is
+/// the same and is not computed again.
+struct Fit {
+  KeptNeighbours<kFitNeighbours> near;
+  std::array<int, kFitNeighbours> shape_from{-1, -1, -1, -1, -1};
+  Shape shape;
+};
+
+Shape lineFit(const Cloud& cloud, const std::vector<int>& idx) {
   const Pca s = pca(cloud, idx);
   const Vec3 ev = s.es.eigenvalues();
-  Fit f;
+  Shape f;
   f.ok = ev(2) >= 3.0 * ev(1);  // else the neighbours are not on a line
   f.mean = s.mean;
   f.axis = s.es.eigenvectors().col(2);
   return f;
 }
 
-Fit planeFit(const Cloud& cloud, const std::vector<int>& idx, double max_dev_m) {
+Shape planeFit(const Cloud& cloud, const std::vector<int>& idx, double max_dev_m) {
   const Pca s = pca(cloud, idx);
-  Fit f;
+  Shape f;
   f.mean = s.mean;
   f.axis = s.es.eigenvectors().col(0);
   f.ok = true;
@@ -176,13 +184,13 @@ void associateKind(const KdTree& tree, const Cloud& target, const Cloud& src, co
   for (std::size_t i = 0; i < src.size(); ++i) {
     const Vec3 p = src[i].cast<double>();
     const Vec3 q = R * p + t;
-    if (tree.knnWithin(q.cast<float>(), kFitNeighbours, max_d2, idx, d2) < kFitNeighbours) continue;
     Fit& f = fits[i];
-    if (!std::equal(idx.begin(), idx.end(), f.from.begin())) {
-      f = fit(idx);
-      std::copy(idx.begin(), idx.end(), f.from.begin());
+    if (f.near.find(tree, target, q.cast<float>(), max_d2, idx, d2) < kFitNeighbours) continue;
+    if (!std::equal(idx.begin(), idx.end(), f.shape_from.begin())) {
+      f.shape = fit(idx);
+      std::copy(idx.begin(), idx.end(), f.shape_from.begin());
     }
-    if (f.ok) out.push_back({p, f.mean, f.axis});
+    if (f.shape.ok) out.push_back({p, f.shape.mean, f.shape.axis});
   }
 }
 
