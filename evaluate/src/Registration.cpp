@@ -297,6 +297,9 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   const Cloud& target = cloud_;
   std::vector<int> idx;
   std::vector<float> d2;
+  // Each source point's nearest target point, found again without a search while it must be the
+  // same (most iterations move the points by millimetres).
+  std::vector<KeptNeighbours<1>> nearest(source.size());
   Pose3 T = init;
   for (int it = 0; it < iterations; ++it) {
     const double frac = iterations > 1 ? static_cast<double>(it) / (iterations - 1) : 1.0;
@@ -304,10 +307,10 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
     const float corr2 = static_cast<float>(corr * corr);
     Normal ne;
     const Mat3 R = T.rotation();
-    for (const auto& pf : source) {
-      const Vec3 p = pf.cast<double>();
+    for (std::size_t i = 0; i < source.size(); ++i) {
+      const Vec3 p = source[i].cast<double>();
       const Vec3 q = R * p + T.translation();
-      if (tree.knnWithin(q.cast<float>(), 1, corr2, idx, d2) < 1) continue;
+      if (nearest[i].find(tree, target, q.cast<float>(), corr2, idx, d2) < 1) continue;
       const Vec3& n = normals[static_cast<std::size_t>(idx[0])];
       if (n.isZero()) continue;
       ne.add(R, p, n, n.dot(q - target[static_cast<std::size_t>(idx[0])].cast<double>()), corr);
@@ -327,9 +330,9 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   const auto final_corr2 = static_cast<float>(final_corr * final_corr);
   double sum = 0;
   int inl = 0;
-  for (const auto& pf : source) {
-    const Vec3 q = T * pf.cast<double>();
-    if (tree.knnWithin(q.cast<float>(), 1, final_corr2, idx, d2) < 1 ||
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    const Vec3 q = T * source[i].cast<double>();
+    if (nearest[i].find(tree, target, q.cast<float>(), final_corr2, idx, d2) < 1 ||
         d2[0] > final_corr * final_corr)
       continue;
     sum += d2[0];
