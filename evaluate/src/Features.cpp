@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 #include "slamroute/evaluate/Features.hpp"
 
@@ -126,13 +127,34 @@ FeatureSet extractFeatures(const RangeImage& img, const Config& cfg) {
 
 namespace {
 
+using KeyIndex = std::pair<std::uint64_t, std::uint32_t>;
+
+/// Stable sort by key, least significant 11 bits first; a digit all keys share is skipped (a
+/// scan's keys differ in few of their bits). Stable with the indices starting in input order, it
+/// gives the order std::sort of the (key, index) pairs gives, at a fraction of its cost.
+void radixSortByKey(std::vector<KeyIndex>& keys) {
+  constexpr int kBits = 11;
+  constexpr std::size_t kBuckets = std::size_t{1} << kBits;
+  std::vector<KeyIndex> tmp(keys.size());
+  std::vector<std::size_t> count(kBuckets);
+  for (int shift = 0; shift < 64; shift += kBits) {
+    std::fill(count.begin(), count.end(), 0);
+    for (const KeyIndex& k : keys) ++count[(k.first >> shift) & (kBuckets - 1)];
+    if (count[(keys.front().first >> shift) & (kBuckets - 1)] == keys.size()) continue;
+    std::size_t sum = 0;
+    for (std::size_t& c : count) sum += std::exchange(c, sum);
+    for (const KeyIndex& k : keys) tmp[count[(k.first >> shift) & (kBuckets - 1)]++] = k;
+    keys.swap(tmp);
+  }
+}
+
 /// (voxel, index) of every point, sorted: each voxel's points in input order.
-std::vector<std::pair<std::uint64_t, std::uint32_t>> sortedKeys(const Cloud& in, float inv) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+std::vector<KeyIndex> sortedKeys(const Cloud& in, float inv) {
+  std::vector<KeyIndex> keys;
   keys.reserve(in.size());
   for (std::size_t i = 0; i < in.size(); ++i)
     keys.emplace_back(voxelKey(in[i], inv), static_cast<std::uint32_t>(i));
-  std::sort(keys.begin(), keys.end());
+  if (!keys.empty()) radixSortByKey(keys);
   return keys;
 }
 

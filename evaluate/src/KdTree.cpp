@@ -3,6 +3,8 @@
 // SLAM time and the search ~60 %).
 #include "slamroute/evaluate/KdTree.hpp"
 
+#include <cmath>
+#include <limits>
 #include <nanoflann.hpp>
 
 namespace slamroute::evaluate {
@@ -50,14 +52,27 @@ void KdTree::build(const std::vector<Eigen::Vector3f>& points) {
 
 int KdTree::knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
                 std::vector<float>& sq_dist) const {
+  return knnWithin(q, k, std::numeric_limits<float>::infinity(), idx, sq_dist);
+}
+
+int KdTree::knnWithin(const Eigen::Vector3f& q, int k, float max_sq_dist, std::vector<int>& idx,
+                      std::vector<float>& sq_dist) const {
   idx.clear();
   sq_dist.clear();
   if (n_ == 0 || k <= 0) return 0;
   thread_local std::vector<std::uint32_t> found;
-  found.resize(static_cast<std::size_t>(k));
-  sq_dist.resize(static_cast<std::size_t>(k));
-  const std::size_t n =
-      impl_->tree->knnSearch(q.data(), static_cast<std::size_t>(k), found.data(), sq_dist.data());
+  const auto cap = static_cast<std::size_t>(k);
+  found.resize(cap);
+  sq_dist.resize(cap);
+  nanoflann::KNNResultSet<float, std::uint32_t> result(cap);
+  result.init(found.data(), sq_dist.data());
+  // The result set takes only points closer than its last slot, which init sets to the largest
+  // float: a bound there prunes every branch beyond it. The next float up keeps points at
+  // exactly the bound.
+  if (std::isfinite(max_sq_dist))
+    sq_dist[cap - 1] = std::nextafter(max_sq_dist, std::numeric_limits<float>::infinity());
+  impl_->tree->findNeighbors(result, q.data(), nanoflann::SearchParams());
+  const std::size_t n = result.size();
   sq_dist.resize(n);
   idx.assign(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(n));
   return static_cast<int>(n);

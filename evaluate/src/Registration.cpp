@@ -3,7 +3,10 @@
 // (body) frame and LeGO-LOAM's split into z/roll/pitch and x/y/yaw is a mask on delta.
 #include "slamroute/evaluate/Registration.hpp"
 
+#include "KeptNeighbours.hpp"
+
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -127,44 +130,88 @@ struct Corr {
   Vec3 p, mean, axis;
 };
 
-/// Nearest-neighbour line fits for the edges and plane fits for the planar points at pose (R, t).
-void associate(const FeatureMap& target, const Cloud& src_edges, const Cloud& src_planes,
-               const Mat3& R, const Vec3& t, const AlignOptions& opt, std::vector<Corr>& lines,
-               std::vector<Corr>& planes) {
-  constexpr int kK = 5;
+constexpr int kFitNeighbours = 5;
+
+/// A line or plane fitted to target neighbours.
+struct Shape {
+  bool ok = false;  ///< the neighbours lie on a line / plane
+  Vec3 mean = Vec3::Zero(), axis = Vec3::Zero();
+};
+
+/// A source point's fitted shape, kept with the neighbours it came from: when a later
+/// association finds the same neighbours (the usual case once the pose settles), the shape is
+/// the same and is not computed again.
+struct Fit {
+  KeptNeighbours<kFitNeighbours> near;
+  std::array<int, kFitNeighbours> shape_from{-1, -1, -1, -1, -1};
+  Shape shape;
+};
+
+Shape lineFit(const Cloud& cloud, const std::vector<int>& idx) {
+  const Pca s = pca(cloud, idx);
+  const Vec3 ev = s.es.eigenvalues();
+  Shape f;
+  f.ok = ev(2) >= 3.0 * ev(1);  // else the neighbours are not on a line
+  f.mean = s.mean;
+  f.axis = s.es.eigenvectors().col(2);
+  return f;
+}
+
+Shape planeFit(const Cloud& cloud, const std::vector<int>& idx, double max_dev_m) {
+  const Pca s = pca(cloud, idx);
+  Shape f;
+  f.mean = s.mean;
+  f.axis = s.es.eigenvectors().col(0);
+  f.ok = true;
+  for (int i : idx)
+    f.ok =
+        f.ok && std::abs(f.axis.dot(cloud[static_cast<std::size_t>(i)].cast<double>() - s.mean)) <
+                    max_dev_m;
+  return f;
+}
+
+/// Correspondences of one feature kind at pose (R, t): the neighbours of each source point in
+/// `tree` (over `target`) and their fit, taken from `fits` when the neighbours are the same.
+template <class FitFn>
+void associateKind(const KdTree& tree, const Cloud& target, const Cloud& src, const Mat3& R,
+                   const Vec3& t, float max_d2, std::vector<Fit>& fits, std::vector<Corr>& out,
+                   FitFn fit) {
+  out.clear();
+  if (target.size() < static_cast<std::size_t>(kFitNeighbours)) return;
+  fits.resize(src.size());
   std::vector<int> idx;
   std::vector<float> d2;
-  const float max_d2 = static_cast<float>(opt.max_nn_m * opt.max_nn_m);
-  lines.clear();
-  planes.clear();
-  if (target.edges.size() >= kK) {
-    for (const auto& pf : src_edges) {
-      const Vec3 p = pf.cast<double>();
-      const Vec3 q = R * p + t;
-      if (target.edge_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
-      const Pca s = pca(target.edges, idx);
-      const Vec3 ev = s.es.eigenvalues();
-      if (ev(2) < 3.0 * ev(1)) continue;  // neighbours are not on a line
-      lines.push_back({p, s.mean, s.es.eigenvectors().col(2)});
+  for (std::size_t i = 0; i < src.size(); ++i) {
+    const Vec3 p = src[i].cast<double>();
+    const Vec3 q = R * p + t;
+    Fit& f = fits[i];
+    if (f.near.find(tree, target, q.cast<float>(), max_d2, idx, d2) < kFitNeighbours) continue;
+    if (!std::equal(idx.begin(), idx.end(), f.shape_from.begin())) {
+      f.shape = fit(idx);
+      std::copy(idx.begin(), idx.end(), f.shape_from.begin());
     }
-  }
-  if (target.planes.size() >= kK) {
-    for (const auto& pf : src_planes) {
-      const Vec3 p = pf.cast<double>();
-      const Vec3 q = R * p + t;
-      if (target.plane_tree.knn(q.cast<float>(), kK, idx, d2) < kK || d2.back() > max_d2) continue;
-      const Pca s = pca(target.planes, idx);
-      const Vec3 n = s.es.eigenvectors().col(0);
-      bool planar = true;
-      for (int i : idx)
-        planar =
-            planar &&
-            std::abs(n.dot(target.planes[static_cast<std::size_t>(i)].cast<double>() - s.mean)) <
-                opt.plane_max_dev_m;
-      if (planar) planes.push_back({p, s.mean, n});
-    }
+    if (f.shape.ok) out.push_back({p, f.shape.mean, f.shape.axis});
   }
 }
+
+/// Nearest-neighbour line fits for the edges and plane fits for the planar points at pose (R, t).
+struct Associator {
+  const FeatureMap& target;
+  const Cloud& src_edges;
+  const Cloud& src_planes;
+  std::vector<Fit> edge_fits, plane_fits;
+
+  void operator()(const Mat3& R, const Vec3& t, const AlignOptions& opt, std::vector<Corr>& lines,
+                  std::vector<Corr>& planes) {
+    const auto max_d2 = static_cast<float>(opt.max_nn_m * opt.max_nn_m);
+    associateKind(target.edge_tree, target.edges, src_edges, R, t, max_d2, edge_fits, lines,
+                  [&](const std::vector<int>& idx) { return lineFit(target.edges, idx); });
+    associateKind(target.plane_tree, target.planes, src_planes, R, t, max_d2, plane_fits, planes,
+                  [&](const std::vector<int>& idx) {
+                    return planeFit(target.planes, idx, opt.plane_max_dev_m);
+                  });
+  }
+};
 
 }  // namespace
 
@@ -177,11 +224,12 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
   Normal last;
   bool force = false;
   const bool has_prior = (opt.prior_weight.array() > 0).any();
+  Associator associate{target, src_edges, src_planes, {}, {}};
   for (int it = 0; it < opt.iterations; ++it) {
     const Mat3 R = T.rotation();
     const Vec3 t = T.translation();
     const bool fresh = force || it % every == 0;
-    if (fresh) associate(target, src_edges, src_planes, R, t, opt, lines, planes);
+    if (fresh) associate(R, t, opt, lines, planes);
     force = false;
     Normal ne;
     int inliers = 0;
@@ -249,6 +297,9 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   const Cloud& target = cloud_;
   std::vector<int> idx;
   std::vector<float> d2;
+  // Each source point's nearest target point, found again without a search while it must be the
+  // same (most iterations move the points by millimetres).
+  std::vector<KeptNeighbours<1>> nearest(source.size());
   Pose3 T = init;
   for (int it = 0; it < iterations; ++it) {
     const double frac = iterations > 1 ? static_cast<double>(it) / (iterations - 1) : 1.0;
@@ -256,10 +307,10 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
     const float corr2 = static_cast<float>(corr * corr);
     Normal ne;
     const Mat3 R = T.rotation();
-    for (const auto& pf : source) {
-      const Vec3 p = pf.cast<double>();
+    for (std::size_t i = 0; i < source.size(); ++i) {
+      const Vec3 p = source[i].cast<double>();
       const Vec3 q = R * p + T.translation();
-      if (tree.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > corr2) continue;
+      if (nearest[i].find(tree, target, q.cast<float>(), corr2, idx, d2) < 1) continue;
       const Vec3& n = normals[static_cast<std::size_t>(idx[0])];
       if (n.isZero()) continue;
       ne.add(R, p, n, n.dot(q - target[static_cast<std::size_t>(idx[0])].cast<double>()), corr);
@@ -276,11 +327,14 @@ IcpResult IcpTarget::align(const Cloud& source, const Pose3& init, int iteration
   res.T_target_source = T;
   // Fitness as in PCL's getFitnessScore, restricted to inliers within the final radius.
   const double final_corr = max_corr_m / 3.0;
+  const auto final_corr2 = static_cast<float>(final_corr * final_corr);
   double sum = 0;
   int inl = 0;
-  for (const auto& pf : source) {
-    const Vec3 q = T * pf.cast<double>();
-    if (tree.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > final_corr * final_corr) continue;
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    const Vec3 q = T * source[i].cast<double>();
+    if (nearest[i].find(tree, target, q.cast<float>(), final_corr2, idx, d2) < 1 ||
+        d2[0] > final_corr * final_corr)
+      continue;
     sum += d2[0];
     ++inl;
   }
@@ -299,7 +353,10 @@ Mat3 IcpTarget::translationInformation(const Cloud& source, const Pose3& T,
   int matched = 0;
   for (const auto& pf : source) {
     const Vec3 q = T * pf.cast<double>();
-    if (tree_.knn(q.cast<float>(), 1, idx, d2) < 1 || d2[0] > max_corr_m * max_corr_m) continue;
+    const auto max_corr2 = static_cast<float>(max_corr_m * max_corr_m);
+    if (tree_.knnWithin(q.cast<float>(), 1, max_corr2, idx, d2) < 1 ||
+        d2[0] > max_corr_m * max_corr_m)
+      continue;
     const Vec3& n = normals_[static_cast<std::size_t>(idx[0])];
     if (n.isZero()) continue;
     info += n * n.transpose();

@@ -1,5 +1,7 @@
 #include "FrontEnd.hpp"
 
+#include <limits>
+
 #include "SlamClock.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
 #include "slamroute/evaluate/RangeImage.hpp"
@@ -9,8 +11,15 @@ namespace slamroute::evaluate::slam {
 Scan deskewed(const Scan& scan, const Pose3& sweep_motion, double sweep_s) {
   if (!scan.has_point_times || !(sweep_s > 0)) return scan;
   Scan out = scan;
+  // A column's points share their firing time and come one after another: its motion is
+  // worked out once, not per point.
+  float motion_dt = std::numeric_limits<float>::quiet_NaN();
+  Pose3 M = Pose3::Identity();
   for (ScanPoint& p : out.points) {
-    const Pose3 M = scaledMotion(sweep_motion, static_cast<double>(p.dt) / sweep_s);
+    if (!(p.dt == motion_dt)) {
+      M = scaledMotion(sweep_motion, static_cast<double>(p.dt) / sweep_s);
+      motion_dt = p.dt;
+    }
     const Vec3 q = M * Vec3(p.x, p.y, p.z);
     p.x = static_cast<float>(q.x());
     p.y = static_cast<float>(q.y());

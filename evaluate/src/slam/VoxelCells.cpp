@@ -10,7 +10,17 @@ VoxelCells::VoxelCells(double voxel_m) : inv_(static_cast<float>(1.0 / voxel_m))
 
 void VoxelCells::add(const Cloud& pts) {
   for (const auto& p : pts) {
-    Cell& c = cells_[voxelKey(p, inv_)];
+    const auto [it, fresh] = slot_of_.try_emplace(voxelKey(p, inv_), 0u);
+    if (fresh) {
+      if (free_.empty()) {
+        it->second = static_cast<std::uint32_t>(cells_.size());
+        cells_.emplace_back();
+      } else {
+        it->second = free_.back();
+        free_.pop_back();
+      }
+    }
+    Cell& c = cells_[it->second];
     c.sum += p.cast<double>();
     ++c.n;
   }
@@ -18,21 +28,31 @@ void VoxelCells::add(const Cloud& pts) {
 
 void VoxelCells::remove(const Cloud& pts) {
   for (const auto& p : pts) {
-    const auto it = cells_.find(voxelKey(p, inv_));
-    if (it == cells_.end())
+    const auto it = slot_of_.find(voxelKey(p, inv_));
+    if (it == slot_of_.end())
       throw std::logic_error("VoxelCells::remove: a point that was never added");
-    if (--it->second.n == 0) {
-      cells_.erase(it);
+    Cell& c = cells_[it->second];
+    if (--c.n == 0) {
+      c.sum.setZero();
+      free_.push_back(it->second);
+      slot_of_.erase(it);
     } else {
-      it->second.sum -= p.cast<double>();
+      c.sum -= p.cast<double>();
     }
   }
 }
 
+void VoxelCells::clear() {
+  cells_.clear();
+  free_.clear();
+  slot_of_.clear();
+}
+
 Cloud VoxelCells::centroids() const {
   Cloud out;
-  out.reserve(cells_.size());
-  for (const auto& [key, c] : cells_) out.push_back((c.sum / c.n).cast<float>());
+  out.reserve(slot_of_.size());
+  for (const Cell& c : cells_)
+    if (c.n > 0) out.push_back((c.sum / c.n).cast<float>());
   return out;
 }
 

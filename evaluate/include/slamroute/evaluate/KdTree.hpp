@@ -18,6 +18,10 @@ class KdTree {
   /// k nearest neighbours of q; fills idx / sq_dist (ascending); returns how many were found.
   int knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
           std::vector<float>& sq_dist) const;
+  /// The same, among the points at most sqrt(max_sq_dist) from q: the same neighbours as knn
+  /// whenever its k-th lies within the bound, found without visiting the farther branches.
+  int knnWithin(const Eigen::Vector3f& q, int k, float max_sq_dist, std::vector<int>& idx,
+                std::vector<float>& sq_dist) const;
 
  private:
   struct Impl;
