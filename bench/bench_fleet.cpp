@@ -47,6 +47,8 @@ int main(int argc, char** argv) {
       defaults.candidates_per_move = std::stoi(argv[i + 1]);
     else if (a == "--moves")
       defaults.balance_moves = std::stoi(argv[i + 1]);
+    else if (a == "--kicks")
+      defaults.kick_rounds = std::stoi(argv[i + 1]);
   }
   const std::string src = SLAMROUTE_SOURCE_DIR, shared = SLAMROUTE_SHARED_DIR;
   const std::vector<Net> nets{

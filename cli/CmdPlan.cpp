@@ -17,6 +17,7 @@
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/SumoCoverage.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/export/ExportFleet.hpp"
 #include "slamroute/export/ExportRoute.hpp"
 #include "slamroute/rl/Planners.hpp"
 
@@ -32,13 +33,15 @@ int nodeOfJunction(const RoadGraph& g, const std::string& junction) {
 }
 
 /// OUT and, when the route has SUMO edges, OUT.rou.xml, replaced together: an older OUT.rou.xml
-/// (or crew files) never stays beside a route it does not belong to. Returns the .rou.xml written
+/// (or crew files, or a former fleet's vehicle files) never stays beside a route it does not
+/// belong to. Returns the .rou.xml written
 /// (or empty).
 std::filesystem::path writeRouteFiles(const Route& r, const std::filesystem::path& out) {
   std::filesystem::path rou = out;
   rou.replace_extension(".rou.xml");
   AtomicFileSet files;
   r.writeJson(files.staged(out));
+  for (const auto& old : exports::existingVehicleFiles(out)) files.dropAtCommit(old);
   if (r.sumo_edges.empty()) {
     files.dropAtCommit(rou);
     for (const auto& crew : exports::crewFilePaths(out)) files.dropAtCommit(crew);
@@ -146,8 +149,11 @@ void runPlan(Context& ctx, const PlanOpts& o) {
   if (o.start >= 0) cfg.start_node = o.start;
   if (!o.start_junction.empty()) cfg.start_node = nodeOfJunction(g, o.start_junction);
   const std::filesystem::path out(o.out);
-  if (isFleetRequest(cfg, o.fleet))
-    return planFleetCommand(ctx, g, cfg, o.fleet, where, out, net.has_value());
+  if (isFleetRequest(cfg, o.fleet)) {
+    FleetPlanOptions fleet = o.fleet;
+    fleet.geo_origin = o.geo_origin;
+    return planFleetCommand(ctx, g, cfg, fleet, where, out, net ? &*net : nullptr);
+  }
   Route r = rl::plan(g, cfg, ctx.cfg.seed, where);
   if (r.sumo_edges.empty() && !o.net.empty())
     throw std::runtime_error("plan: the route has no SUMO edges; cannot write the .rou.xml");

@@ -75,8 +75,8 @@ std::vector<pipeline::PlanRequest> allPlanRequests(const std::vector<std::string
   return out;
 }
 
-/// Legal repair of every route and its crew files (.gpx, .kml, ...); the fleet's routes are
-/// repaired too (a fleet has no crew files: one .gpx per vehicle is not written yet).
+/// Legal repair of every route and its crew files (.gpx, .kml, ...); the fleet's routes too, with
+/// one set of crew files per vehicle (fleet.vehicle_0.gpx, ...).
 void repairRoutes(const Context& ctx, const SumoNet& net, const pipeline::RunLayout& run,
                   const std::vector<std::string>& planners, const RunOpts& o) {
   std::string geo_note;
@@ -84,7 +84,10 @@ void repairRoutes(const Context& ctx, const SumoNet& net, const pipeline::RunLay
     pipeline::makeRouteDrivable(net, run.route(p));
     geo_note = writeCrewFiles(ctx, net, run.route(p), o.geo_origin);
   }
-  if (o.vehicles > 1) pipeline::makeFleetRouteDrivable(net, run.route(kFleetId));
+  if (o.vehicles > 1) {
+    pipeline::makeFleetRouteDrivable(net, run.route(kFleetId));
+    geo_note = writeFleetCrewFiles(ctx, net, run.route(kFleetId), o.geo_origin);
+  }
   if (!geo_note.empty()) logInfo("  note: " + geo_note);
 }
 

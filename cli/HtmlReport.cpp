@@ -3,11 +3,12 @@
 
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
+#include "HtmlFleet.hpp"
+#include "HtmlLayers.hpp"
 #include "HtmlPage.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/RoadGraph.hpp"
@@ -26,23 +27,6 @@ namespace {
 
 constexpr std::size_t kMaxDrivePoints = 2000;  // per drive: enough for the slider, small file
 
-double rounded(double v, double unit) { return std::round(v / unit) * unit; }
-
-/// Map coordinates: [lat, lon] on the globe, else [y, x] in metres (Leaflet's plain CRS).
-struct MapFrame {
-  std::optional<exports::GeoProjection> proj;
-  json at(const Point2& p) const {
-    if (!proj) return json::array({rounded(p.y(), 0.01), rounded(p.x(), 0.01)});
-    const exports::LonLat ll = proj->toLonLat(p);
-    return json::array({rounded(ll.lat_deg, 1e-7), rounded(ll.lon_deg, 1e-7)});
-  }
-  json line(const Polyline& pl) const {
-    json out = json::array();
-    for (const auto& p : pl) out.push_back(at(p.head<2>()));
-    return out;
-  }
-};
-
 json streetsLayer(const SumoNet& net, const MapFrame& f) {
   json out = json::array();
   for (const auto& e : net.edges)
@@ -54,22 +38,7 @@ json streetsLayer(const SumoNet& net, const MapFrame& f) {
 json weightLayer(const RoadGraph& g, const MapFrame& f) {
   json out = json::array();
   for (const auto& e : g.edges)
-    out.push_back({{"id", e.id}, {"w", rounded(e.weight, 1e-4)}, {"pts", f.line(e.polyline)}});
-  return out;
-}
-
-/// One feature per SUMO edge of the route, in driving order, with how often the route drives it.
-json routeLayer(const SumoNet& net, const Route& r, const MapFrame& f) {
-  std::map<std::string, int> times;
-  for (const auto& id : r.sumo_edges) ++times[id];
-  json out = json::array();
-  for (const auto& id : r.sumo_edges) {
-    const SumoEdge* e = net.findEdge(id);
-    out.push_back({{"edge", id},
-                   {"name", e ? e->name : ""},
-                   {"n", times[id]},
-                   {"pts", e ? f.line(e->shape) : json::array()}});
-  }
+    out.push_back({{"id", e.id}, {"w", htmlRounded(e.weight, 1e-4)}, {"pts", f.line(e.polyline)}});
   return out;
 }
 
@@ -89,9 +58,9 @@ json driftLayer(const SumoNet& net, const fs::path& csv, const MapFrame& f) {
                  len = std::strtod(c[3].c_str(), nullptr);
     if (!std::isfinite(drift)) continue;
     out.push_back({{"edge", c[0]},
-                   {"pct", rounded(drift, 1e-3)},
-                   {"len", rounded(len, 0.1)},
-                   {"ate", rounded(std::strtod(c[4].c_str(), nullptr), 1e-3)},
+                   {"pct", htmlRounded(drift, 1e-3)},
+                   {"len", htmlRounded(len, 0.1)},
+                   {"ate", htmlRounded(std::strtod(c[4].c_str(), nullptr), 1e-3)},
                    {"pts", f.line(e->shape)}});
   }
   return out;
@@ -110,9 +79,9 @@ json driveLayer(const fs::path& drive, const fs::path& eval, const MapFrame& f) 
     const auto& p = m.pairs[i];
     gt.push_back(f.at(p.gt.translation().head<2>()));
     est.push_back(f.at((m.T_gt_est * p.est).translation().head<2>()));
-    d.push_back(rounded(m.distance_m[i], 0.1));
-    err.push_back(rounded(m.errors_m[i], 1e-3));
-    t.push_back(rounded(p.t, 0.01));
+    d.push_back(htmlRounded(m.distance_m[i], 0.1));
+    err.push_back(htmlRounded(m.errors_m[i], 1e-3));
+    t.push_back(htmlRounded(p.t, 0.01));
   }
   return {{"gt", gt}, {"est", est}, {"d", d}, {"err", err}, {"t", t}};
 }
@@ -159,28 +128,6 @@ json stepTable(const ReportInputs& in) {
   return {{"title", "Step times"}, {"head", {"step", "seconds"}}, {"rows", rows}};
 }
 
-/// `bytes` as base64 (RFC 4648), for a data: URI.
-std::string base64(const std::string& bytes) {
-  static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    for (int k = 18; k >= 0; k -= 6) out += abc[(v >> k) & 63];
-  }
-  if (const std::size_t rest = bytes.size() - i; rest > 0) {
-    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    if (rest == 2) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    out += abc[(v >> 18) & 63];
-    out += abc[(v >> 12) & 63];
-    out += rest == 2 ? abc[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-
 json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& net,
                  const MapFrame& f) {
   json pd = {{"name", p}};
@@ -190,7 +137,7 @@ json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& ne
   pd["drive"] = driveLayer(in.out / "drives" / p, in.out / "eval" / p, f);
   // The map from above coloured by its distance to the world surface (evaluate's picture).
   if (const fs::path png = in.out / "eval" / p / "map_error_top.png"; fs::exists(png))
-    pd["map_error_png"] = "data:image/png;base64," + base64(readFile(png));
+    pd["map_error_png"] = pngDataUri(png);
   const json m = pipeline::readJsonIfPresent(in.out / "eval" / p / "metrics.json");
   pd["metrics"] = json::object();
   for (const char* k : {"ate_rmse_m", "ate_max_m", "rpe_trans_pct", "map_median_dist_m",
@@ -218,6 +165,7 @@ std::string writeHtmlReport(const ReportInputs& in, const std::string& geo_origi
                {"planners", json::array()},
                {"tables", json::array({resultsTable(in), stepTable(in)})}};
   for (const auto& p : in.planners) data["planners"].push_back(plannerData(in, p, net, frame));
+  if (!in.fleet.empty()) addFleetData(data, in, net, frame);
   writeFileAtomic(in.out / "report.html", selfContainedPage(data["title"], data, parts));
   return "";
 }

@@ -1,8 +1,9 @@
 #pragma once
 // report.html of a pipeline run, beside report.md: the street network, each route (one feature
 // per SUMO edge driven, with a slider along the drive), the streets coloured by their weight,
-// times driven, measured drift, the trajectory error along the drive, map error and the tables;
-// pan and zoom. One self-contained file (HtmlPage.hpp).
+// times driven, measured drift, the trajectory error along the drive, map error and the tables,
+// and a fleet's routes in one colour per vehicle with its merged map (HtmlFleet.hpp); pan and
+// zoom. One self-contained file (HtmlPage.hpp).
 #include <string>
 
 #include "Report.hpp"

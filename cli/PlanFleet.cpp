@@ -5,8 +5,11 @@
 #include <iostream>
 #include <sstream>
 
+#include "CrewFiles.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/FleetRoute.hpp"
+#include "slamroute/core/Log.hpp"
+#include "slamroute/export/ExportFleet.hpp"
 #include "slamroute/export/ExportRoute.hpp"
 #include "slamroute/rl/Fleet.hpp"
 
@@ -39,7 +42,11 @@ std::string strategyOf(const std::string& planner, int vehicles) {
                               std::to_string(vehicles) + " vehicles (use postman or partition)");
 }
 
-void writeFleetFiles(const FleetRoute& f, const std::filesystem::path& out, bool with_rou) {
+/// route.json, .rou.xml and the vehicles' crew files replaced together; returns the note on a
+/// net without geo-reference.
+std::string writeFleetFiles(const Context& ctx, const FleetRoute& f,
+                            const std::filesystem::path& out, bool with_rou, const SumoNet* net,
+                            const std::string& geo_origin) {
   std::filesystem::path rou = out;
   rou.replace_extension(".rou.xml");
   AtomicFileSet files;
@@ -49,7 +56,13 @@ void writeFleetFiles(const FleetRoute& f, const std::filesystem::path& out, bool
   else
     files.dropAtCommit(rou);
   for (const auto& crew : exports::crewFilePaths(out)) files.dropAtCommit(crew);
+  std::string note;
+  if (net)
+    note = stageFleetCrewFiles(ctx, *net, f, out, geo_origin, files);
+  else
+    for (const auto& old : exports::existingVehicleFiles(out)) files.dropAtCommit(old);
   files.commit();
+  return note;
 }
 
 void printSummary(const FleetRoute& f, const std::filesystem::path& out, bool with_rou) {
@@ -75,17 +88,18 @@ bool isFleetRequest(const rl::Config& cfg, const FleetPlanOptions& o) {
 
 void planFleetCommand(const Context& ctx, const RoadGraph& g, rl::Config cfg,
                       const FleetPlanOptions& o, const std::string& where,
-                      const std::filesystem::path& out, bool from_net) {
+                      const std::filesystem::path& out, const SumoNet* net) {
   if (o.vehicles > 0) cfg.fleet.vehicles = o.vehicles;
   cfg.fleet.strategy = strategyOf(cfg.planner, cfg.fleet.vehicles);
   const FleetRoute f = rl::planFleet(g, cfg, depotNodes(g, o, where), ctx.cfg.seed, where);
   bool with_rou = true;
   for (const Route& r : f.vehicles) with_rou = with_rou && !r.sumo_edges.empty();
-  if (from_net && !with_rou)
+  if (net && !with_rou)
     throw std::runtime_error(
         "plan: a vehicle's route has no SUMO edges; cannot write the .rou.xml");
-  writeFleetFiles(f, out, with_rou);
+  const std::string note = writeFleetFiles(ctx, f, out, with_rou, net, o.geo_origin);
   printSummary(f, out, with_rou);
+  if (!note.empty()) logInfo("note: " + note);
 }
 
 }  // namespace slamroute::cli

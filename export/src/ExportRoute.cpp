@@ -32,34 +32,42 @@ std::vector<fs::path> crewFilePaths(const fs::path& route_json) {
           besideRoute(route_json, ".gpx"), besideRoute(route_json, ".kml")};
 }
 
-RouteExportResult exportRoute(const SumoNet& net, const Route& route, const fs::path& route_json,
-                              const RouteExportOptions& opt) {
+RouteFileTexts routeFileTexts(const SumoNet& net, const Route& route, const fs::path& route_json,
+                              const std::string& title, const RouteExportOptions& opt) {
   if (route.sumo_edges.empty())
     throw std::invalid_argument(route_json.string() +
                                 ": the route has no SUMO edges (plan it with --net)");
   const DrivenPath path = drivenPath(net, route.sumo_edges);
   const std::vector<Instruction> steps = turnByTurn(net, route.sumo_edges, opt.instructions);
   const std::optional<GeoProjection> proj = GeoProjection::forNet(net, opt.geo_origin);
-  const std::string title = route.planner + " route";
-  RouteExportResult res;
-  auto write = [&res](const fs::path& p, const std::string& text) {
-    writeFileAtomic(p, text);
-    res.written.push_back(p);
-  };
-  write(besideRoute(route_json, "_instructions.md"),
-        instructionsMarkdown(title + ": turn by turn", steps, path.length_m,
-                             proj ? &*proj : nullptr));
-  write(besideRoute(route_json, "_instructions.csv"),
-        instructionsCsv(steps, proj ? &*proj : nullptr));
+  RouteFileTexts out;
+  out.files.emplace_back(besideRoute(route_json, "_instructions.md"),
+                         instructionsMarkdown(title + ": turn by turn", steps, path.length_m,
+                                              proj ? &*proj : nullptr));
+  out.files.emplace_back(besideRoute(route_json, "_instructions.csv"),
+                         instructionsCsv(steps, proj ? &*proj : nullptr));
   if (!proj) {
-    res.note = net.source.string() +
+    out.note = net.source.string() +
                " has no geo-reference (projParameter \"!\"): no GPX/KML written; "
                "--geo-origin LAT,LON places the net's centre there";
-    return res;
+    return out;
   }
   const GeoRoute geo = geoRoute(title, routeDescription(route, path, net), path, steps, *proj);
-  write(besideRoute(route_json, ".gpx"), gpxText(geo));
-  write(besideRoute(route_json, ".kml"), kmlText(geo));
+  out.files.emplace_back(besideRoute(route_json, ".gpx"), gpxText(geo));
+  out.files.emplace_back(besideRoute(route_json, ".kml"), kmlText(geo));
+  return out;
+}
+
+RouteExportResult exportRoute(const SumoNet& net, const Route& route, const fs::path& route_json,
+                              const RouteExportOptions& opt) {
+  const RouteFileTexts texts =
+      routeFileTexts(net, route, route_json, route.planner + " route", opt);
+  RouteExportResult res;
+  for (const auto& [p, text] : texts.files) {
+    writeFileAtomic(p, text);
+    res.written.push_back(p);
+  }
+  res.note = texts.note;
   return res;
 }
 

@@ -123,6 +123,29 @@ var planners = data.planners.map(function(p) {
   return {p: p, route: route, drift: drift, traj: traj, nmax: nmax, drange: dr};
 });
 
+// --- the fleet (run --vehicles K): one more choice of route, each vehicle in its own colour.
+// Vehicles drawn first are wider, so a street two vehicles share shows both colours.
+var fleetCounts = [];
+if (data.fleet) {
+  var fv = data.fleet.vehicles, fleetRoute = L.featureGroup();
+  fv.forEach(function(v, k) {
+    v.route.forEach(function(r, i) {
+      fleetRoute.addLayer(polyline(
+          r.pts, {color: v.colour, weight: 3 + 3 * (fv.length - 1 - k), opacity: 0.9},
+          v.id + ' #' + (i + 1) + ' ' + (r.name || r.edge)));
+    });
+    fleetCounts.push(v.id + ':' + v.route.length);
+  });
+  planners.push({
+    p: {name: data.fleet.name + ' (' + fv.length + ' vehicles)', fleet: data.fleet, drive: null},
+    route: fleetRoute,
+    drift: L.featureGroup(),
+    traj: L.featureGroup(),
+    nmax: 1,
+    drange: [0, 1]
+  });
+}
+
 // --- controls
 side.appendChild(el('h2', {}, 'Route'));
 var select = el('select', {id: 'planner'});
@@ -164,8 +187,21 @@ function current() {
   return planners[Number(select.value) || 0];
 }
 
+function showFleetLegend(fleet) {
+  fleet.vehicles.forEach(function(v) {
+    var row = el('div', {'class': 'vehicle'});
+    var swatch = el('span', {'class': 'swatch'});
+    swatch.style.background = v.colour;
+    row.appendChild(swatch);
+    row.appendChild(el('span', {}, ' ' + v.id + ': ' + fmt(v.length_km, 2) + ' km'));
+    legend.appendChild(row);
+  });
+}
+
 function showLegend(q) {
   legend.textContent = '';
+  if (q.p.fleet && toggles.route.checked && !toggles.weights.checked)
+    return showFleetLegend(q.p.fleet);
   var lo, hi, what;
   if (toggles.drift.checked) {
     lo = fmt(q.drange[0], 2) + ' %';
@@ -237,9 +273,27 @@ function moveTo(i) {
   drawChart(q, i);
 }
 
+function showFleetSummary(fleet) {
+  summary.appendChild(el('h2', {}, 'Fleet: ' + fleet.vehicles.length + ' vehicles'));
+  summary.appendChild(
+      el('div', {}, 'makespan (longest route): ' + fmt(fleet.makespan_km, 2) + ' km'));
+  if (fleet.campaign) summary.appendChild(el('div', {}, fleet.campaign));
+  summary.appendChild(el('div', {}, 'figures: the fleet tables below the map'));
+  if (fleet.merged_map_png) {
+    summary.appendChild(el('h2', {}, 'Merged map from above'));
+    summary.appendChild(el('img', {
+      id: 'fleet-map-error',
+      src: fleet.merged_map_png,
+      alt: 'the merged map of every vehicle coloured by its distance to the world surface',
+      style: 'width:100%'
+    }));
+  }
+}
+
 function showSummary(q) {
   var m = q.p.metrics || {};
   summary.textContent = '';
+  if (q.p.fleet) return showFleetSummary(q.p.fleet);
   summary.appendChild(el('h2', {}, q.p.name + ': SLAM'));
   [['ATE RMSE', fmt(m.ate_rmse_m, 3) + ' m'], ['ATE max', fmt(m.ate_max_m, 3) + ' m'],
    ['drift (RPE)', fmt(m.rpe_trans_pct, 2) + ' %'],
@@ -319,6 +373,13 @@ data.tables.forEach(function(t) {
   tables.appendChild(table);
 });
 
+// report.html#NAME opens with that route chosen (#fleet: the fleet's).
+var wanted = decodeURIComponent(location.hash.slice(1));
+planners.forEach(function(q, i) {
+  if (wanted && (q.p.name === wanted || (q.p.fleet && q.p.fleet.name === wanted)))
+    select.value = String(i);
+});
+
 var bounds = streets.getBounds();
 if (bounds.isValid())
   map.fitBounds(bounds, {padding: [10, 10]});
@@ -328,6 +389,7 @@ refresh();
 
 body.setAttribute('data-streets', String(streets.getLayers().length));
 body.setAttribute('data-route-features', featureCounts.join(','));
+body.setAttribute('data-fleet-features', fleetCounts.join(','));
 body.setAttribute('data-status', 'ok');
 document.title = document.title + ' (ready)';
 })();

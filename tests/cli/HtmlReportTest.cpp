@@ -5,8 +5,8 @@
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>
-#include <regex>
 
+#include "Chromium.hpp"
 #include "CliTestUtil.hpp"
 #include "HtmlReport.hpp"
 #include "slamroute/core/AtomicFile.hpp"
@@ -14,39 +14,6 @@
 namespace slamroute::test {
 namespace {
 namespace fs = std::filesystem;
-
-bool haveChromium() { return std::system("command -v chromium > /dev/null 2>&1") == 0; }
-
-struct Browser {
-  std::string dom, log;
-};
-
-/// Opens `page` in headless Chromium with every network request sent to a dead proxy (so a page
-/// that fetched anything would log the failure); returns the DOM after the scripts ran and the
-/// browser's log. With `screenshot`, also writes a PNG of the page.
-Browser openInChromium(const fs::path& page, const fs::path& work,
-                       const fs::path& screenshot = {}) {
-  const std::string common =
-      "chromium --headless --disable-gpu --no-sandbox --no-first-run "
-      "--proxy-server=127.0.0.1:9 --window-size=1400,1000 "
-      "--virtual-time-budget=8000 --enable-logging=stderr --v=0 --user-data-dir=" +
-      (work / "profile").string() + " ";
-  const std::string url = "file://" + fs::absolute(page).string();
-  std::system((common + "--dump-dom " + url + " > " + (work / "dom.html").string() + " 2> " +
-               (work / "chromium.log").string())
-                  .c_str());
-  if (!screenshot.empty())
-    std::system((common + "--screenshot=" + screenshot.string() + " " + url + " > /dev/null 2>> " +
-                 (work / "chromium.log").string())
-                    .c_str());
-  return {readFile(work / "dom.html"), readFile(work / "chromium.log")};
-}
-
-std::string bodyAttr(const std::string& dom, const std::string& name) {
-  const std::regex re("<body[^>]*\\s" + name + "=\"([^\"]*)\"");
-  std::smatch m;
-  return std::regex_search(dom, m, re) ? m[1].str() : std::string("(absent)");
-}
 
 void expectPageDrawn(const Browser& b, const std::string& route_features, std::size_t streets) {
   EXPECT_EQ(bodyAttr(b.dom, "data-status"), "ok") << b.log;

@@ -7,9 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Chromium.hpp"
 #include "CliTestUtil.hpp"
 #include "ReportFleet.hpp"
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/core/FleetRoute.hpp"
 
 namespace slamroute {
 namespace {
@@ -38,6 +40,10 @@ void expectFleetFiles(const fs::path& out) {
     EXPECT_TRUE(fs::exists(out / "eval" / "fleet" / ("merged_" + std::string(v) + ".tum"))) << v;
   }
   EXPECT_TRUE(fs::exists(out / "drives" / "fleet" / "fleet.json"));
+  // One set of crew files per vehicle (the plus net is not on the globe: no .gpx)
+  for (const char* f : {"fleet.vehicle_0_instructions.md", "fleet.vehicle_1_instructions.csv"})
+    EXPECT_TRUE(fs::exists(out / "routes" / f)) << f;
+  EXPECT_FALSE(fs::exists(out / "routes" / "fleet.vehicle_2_instructions.md"));
   EXPECT_TRUE(fs::exists(out / "eval" / "fleet" / "merged_map_error_top.png"));
   const auto m = nlohmann::json::parse(readFile(out / "eval" / "fleet" / "fleet_metrics.json"));
   ASSERT_EQ(m["vehicles"].size(), 2u);
@@ -64,6 +70,35 @@ void expectFleetReport(const fs::path& out) {
   EXPECT_EQ(pixelsOfVehicle(img, 2), 0);
 }
 
+/// report.html in Chromium: the postman route and the fleet (opened at #fleet) drawn without
+/// errors, one route feature per SUMO edge of each vehicle, its merged map and its tables.
+void expectFleetPage(const fs::path& out, const fs::path& work) {
+  if (!test::haveChromium()) GTEST_SKIP() << "chromium not installed (scripts/setup.sh does)";
+  ASSERT_TRUE(fs::exists(out / "report.html"));
+  const auto route = nlohmann::json::parse(readFile(out / "routes" / "fleet.json"));
+  std::string features;
+  for (std::size_t k = 0; k < route["vehicles"].size(); ++k)
+    features += (k ? "," : "") + FleetRoute::vehicleId(k) + ":" +
+                std::to_string(route["vehicles"][k]["sumo_edges"].size());
+  const test::Browser b = test::openInChromium(out / "report.html", work, {}, "#fleet");
+  EXPECT_EQ(test::bodyAttr(b.dom, "data-status"), "ok") << b.log;
+  EXPECT_EQ(test::bodyAttr(b.dom, "data-errors"), "0") << test::bodyAttr(b.dom, "data-last-error");
+  EXPECT_EQ(test::bodyAttr(b.dom, "data-fleet-features"), features);
+  EXPECT_EQ(b.log.find("CONSOLE"), std::string::npos) << b.log;
+  for (const char* s : {"<option value=\"1\">fleet (2 vehicles)</option>",
+                        "<img id=\"fleet-map-error\" src=\"data:image/png;base64,iVBORw0KGgo",
+                        "<h2>Fleet: makespan</h2>", "<td>makespan / bound</td>",
+                        "<h2>Fleet: per vehicle</h2>", "<td>mapper_1</td>",
+                        "<td>street facades covered by the merged map [%]</td>"})
+    EXPECT_NE(b.dom.find(s), std::string::npos) << s;
+  // The legend names each vehicle with its colour, the fleet being the route shown.
+  const auto c = cli::vehicleColour(1);
+  EXPECT_NE(b.dom.find("rgb(" + std::to_string(c[2]) + ", " + std::to_string(c[1]) + ", " +
+                       std::to_string(c[0]) + ")"),
+            std::string::npos);
+  EXPECT_NE(b.dom.find(" mapper_1: "), std::string::npos);
+}
+
 TEST(RunFleetCli, AFleetOfTwoBesideThePostmanOnThePlusNetThenResume) {
   const auto dir = test::cliTempDir("run_fleet");
   std::ofstream(dir / "fast.yaml") << "evaluate:\n  input:\n    scan_stride: 5\n";
@@ -75,6 +110,7 @@ TEST(RunFleetCli, AFleetOfTwoBesideThePostmanOnThePlusNetThenResume) {
   const fs::path out = dir / "out";
   expectFleetFiles(out);
   expectFleetReport(out);
+  expectFleetPage(out, dir);
   // survey, graph, two plans, two drives, two evaluations: all kept, the report written again.
   const std::string metrics = readFile(out / "eval" / "fleet" / "fleet_metrics.json");
   const auto again = test::runCli(cmd + " --resume");

@@ -1,7 +1,8 @@
 // The `postman` fleet strategy (tour splitting, after Frederickson, Hecht & Kim 1978): the
 // single-vehicle postman circuit is cut into at most K consecutive legs; a leg costs the legal
 // trip from the depot to its first edge, the leg, and the legal trip back. The smallest
-// makespan for which a greedy cut needs at most K legs is found by bisection.
+// makespan for which a greedy cut needs at most K legs is found by bisection, for several starts
+// of the closed circuit.
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -99,21 +100,47 @@ std::vector<int> legRoute(const FleetContext& ctx, const std::vector<int>& circu
   return route;
 }
 
-/// The legs of the circuit and, per vehicle, the index of its leg (-1: none).
+/// The circuit as cut (rotated to its best start), its legs and, per vehicle, the index of its
+/// leg (-1: none).
 struct AssignedLegs {
+  std::vector<int> circuit;
   std::vector<Leg> legs;
   std::vector<int> leg_of_vehicle;
 };
 
+double longestLeg(const LegCosts& c, const std::vector<Leg>& legs) {
+  double longest = 0.0;
+  for (const Leg& leg : legs) longest = std::max(longest, c.cost(leg.first, leg.last));
+  return longest;
+}
+
+/// The circuit is closed, so its legs may start anywhere: the cut of kRotations evenly spaced
+/// starts with the shortest longest leg (the first of equals: deterministic).
+std::vector<int> bestRotation(const FleetContext& ctx, const std::vector<int>& circuit) {
+  constexpr std::size_t kRotations = 32;
+  const std::size_t n = circuit.size(), tries = std::min(n, kRotations);
+  std::vector<int> best = circuit;
+  double best_longest = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < tries; ++t) {
+    std::vector<int> rotated = circuit;
+    std::rotate(rotated.begin(), rotated.begin() + static_cast<long>(t * n / tries), rotated.end());
+    const LegCosts costs = legCosts(ctx, rotated);
+    const double longest = longestLeg(costs, cheapestLegs(costs, ctx.vehicles()));
+    if (longest < best_longest - 1e-6) best_longest = longest, best = std::move(rotated);
+  }
+  return best;
+}
+
 AssignedLegs assignLegs(const FleetContext& ctx, const std::vector<int>& circuit) {
-  const LegCosts costs = legCosts(ctx, circuit);
-  AssignedLegs a{cheapestLegs(costs, ctx.vehicles()), {}};
+  AssignedLegs a{bestRotation(ctx, circuit), {}, {}};
+  const LegCosts costs = legCosts(ctx, a.circuit);
+  a.legs = cheapestLegs(costs, ctx.vehicles());
   std::vector<std::vector<double>> cost(sz(ctx.vehicles()));
   for (int v = 0; v < ctx.vehicles(); ++v)
     for (const Leg& leg : a.legs)
-      cost[sz(v)].push_back(ctx.from_depot[sz(v)][sz(circuit[sz(leg.first)])] +
+      cost[sz(v)].push_back(ctx.from_depot[sz(v)][sz(a.circuit[sz(leg.first)])] +
                             costs.prefix[sz(leg.last + 1)] - costs.prefix[sz(leg.first + 1)] +
-                            ctx.to_depot[sz(v)][sz(circuit[sz(leg.last)])]);
+                            ctx.to_depot[sz(v)][sz(a.circuit[sz(leg.last)])]);
   a.leg_of_vehicle = assignToVehicles(cost);
   return a;
 }
@@ -128,7 +155,7 @@ std::vector<std::vector<int>> splitCircuitRoutes(const FleetContext& ctx,
   std::vector<std::vector<int>> routes(sz(ctx.vehicles()));
   for (int v = 0; v < ctx.vehicles(); ++v)
     if (a.leg_of_vehicle[sz(v)] >= 0)
-      routes[sz(v)] = legRoute(ctx, circuit, a.legs[sz(a.leg_of_vehicle[sz(v)])], v);
+      routes[sz(v)] = legRoute(ctx, a.circuit, a.legs[sz(a.leg_of_vehicle[sz(v)])], v);
   return routes;
 }
 
@@ -140,7 +167,7 @@ std::vector<int> circuitLegParts(const FleetContext& ctx, const std::vector<int>
   std::vector<int> part_of_edge(sz(ctx.pg.m), -1);
   for (std::size_t l = 0; l < a.legs.size(); ++l)
     for (int i = a.legs[l].first; i <= a.legs[l].last; ++i) {
-      int& part = part_of_edge[sz(circuit[sz(i)])];
+      int& part = part_of_edge[sz(a.circuit[sz(i)])];
       if (part < 0) part = vehicle_of_leg[l];
     }
   return part_of_edge;

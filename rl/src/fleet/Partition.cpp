@@ -1,14 +1,18 @@
 // The `partition` fleet strategy (seed paper: K-means segments, Hungarian assignment of
 // segments to groups), on streets: parts by K-means on street midpoints, parts to vehicles by
 // the Hungarian algorithm, a rural postman route per part, then moves of boundary streets from
-// the longest route to a neighbouring part while each move shortens the longest route. A
+// the longest route to another part while each move shortens the longest route: first streets
+// the other part's route drives anyway (on its way from the depot, the far parts' routes cross
+// the near parts), then streets on the boundary to a neighbouring part. A
 // second start, the postman circuit's legs (routes and the edges each drives first), is
 // balanced the same way and kept when its makespan is shorter (K-means parts ignore how far
 // the depot is; the legs do not), so partition is never longer than the postman strategy.
 // Parts hold directed edges: a street starts with both directions in one part, a move takes
 // the directions of the street that the longest route's part holds.
 #include <algorithm>
+#include <cstdint>
 #include <limits>
+#include <random>
 #include <set>
 
 #include "FleetParts.hpp"
@@ -24,6 +28,7 @@ struct Partition {
   std::vector<int> part_of_edge;        ///< per directed edge: the vehicle driving it
   std::vector<std::vector<int>> route;  ///< per vehicle
   std::vector<double> length;           ///< per vehicle [m]
+  std::int64_t work = 0;  ///< the re-plans' work so far (replanWork), the kicks' budget
 };
 
 /// Street midpoints (what K-means clusters) and the edges meeting at each node.
@@ -115,6 +120,25 @@ Partition routesOf(const FleetContext& ctx, std::vector<int> part_of_edge) {
   return p;
 }
 
+/// (edge of part p, other part q) pairs where q's route drives the edge already, on its way to
+/// its own streets: q takes it over at little or no extra length. Shortest q routes first.
+std::vector<std::pair<int, int>> drivenByOthers(const PlanGraph& pg, const Partition& part, int p) {
+  std::vector<int> order;
+  for (int q = 0; q < static_cast<int>(part.route.size()); ++q)
+    if (q != p) order.push_back(q);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return part.length[sz(a)] < part.length[sz(b)]; });
+  std::vector<std::pair<int, int>> moves;
+  std::vector<char> taken(sz(pg.m), 0);
+  for (int q : order)
+    for (int e : part.route[sz(q)])
+      if (part.part_of_edge[sz(e)] == p && !taken[sz(e)]) {
+        taken[sz(e)] = 1;
+        moves.push_back({e, q});
+      }
+  return moves;
+}
+
 /// (edge of part p, neighbouring part) pairs, the edges nearest the other part's centre
 /// relative to their own first.
 std::vector<std::pair<int, int>> boundaryMoves(const Layout& layout, const PlanGraph& pg,
@@ -158,18 +182,38 @@ std::vector<int> movedStreet(const Layout& layout, const PlanGraph& pg,
   return trial;
 }
 
-/// One improving move of a boundary street off the longest route; false when none is found.
+/// Candidate moves off part p: up to candidates_per_move of each kind, streets other routes
+/// drive anyway, then boundary streets.
+std::vector<std::pair<int, int>> candidateMoves(const FleetConfig& cfg, const Layout& layout,
+                                                const PlanGraph& pg, const Partition& part, int p) {
+  const auto limit = static_cast<std::size_t>(cfg.candidates_per_move);
+  std::vector<std::pair<int, int>> moves = drivenByOthers(pg, part, p);
+  if (moves.size() > limit) moves.resize(limit);
+  const auto boundary = boundaryMoves(layout, pg, part, p);
+  moves.insert(moves.end(), boundary.begin(),
+               boundary.begin() + static_cast<long>(std::min(limit, boundary.size())));
+  return moves;
+}
+
+/// What re-planning part v costs, for the kicks' budget: its directed edges squared (the
+/// rural postman's matching grows faster than the part).
+std::int64_t replanWork(const std::vector<int>& part_of_edge, int v) {
+  const auto n = static_cast<std::int64_t>(std::count(part_of_edge.begin(), part_of_edge.end(), v));
+  return n * n;
+}
+
+/// One move of a street off the longest route p that shortens it without the receiving route
+/// reaching p's old length, applied; false when no candidate does.
 bool improveOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
                  Partition& part) {
   const int p = static_cast<int>(std::max_element(part.length.begin(), part.length.end()) -
                                  part.length.begin());
   if (std::count(part.part_of_edge.begin(), part.part_of_edge.end(), p) <= 1) return false;
-  const auto moves = boundaryMoves(layout, ctx.pg, part, p);
-  for (std::size_t i = 0; i < moves.size() && static_cast<int>(i) < cfg.candidates_per_move; ++i) {
-    const auto [e, q] = moves[i];
+  for (const auto& [e, q] : candidateMoves(cfg, layout, ctx.pg, part, p)) {
     std::vector<int> trial = movedStreet(layout, ctx.pg, part.part_of_edge, e, q);
     if (std::find(trial.begin(), trial.end(), p) == trial.end()) continue;  // p keeps an edge
     std::vector<int> route_p = solvePart(ctx, trial, p), route_q = solvePart(ctx, trial, q);
+    part.work += replanWork(trial, p) + replanWork(trial, q);
     const double lp = routeLength(ctx.pg, route_p), lq = routeLength(ctx.pg, route_q);
     if (std::max(lp, lq) >= part.length[sz(p)] - 1e-6) continue;
     part.part_of_edge = std::move(trial);
@@ -178,6 +222,63 @@ bool improveOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& 
     return true;
   }
   return false;
+}
+
+/// A random street on a part's boundary moved to a neighbouring part (seeded `rng`): a kick
+/// out of the local optimum the moves stop in. False when the drawn street has no neighbour
+/// part or is its part's last.
+bool kick(const FleetContext& ctx, const Layout& layout, Partition& part, std::mt19937_64& rng) {
+  const PlanGraph& pg = ctx.pg;
+  const int e = static_cast<int>(rng() % static_cast<std::uint64_t>(pg.m));
+  const int p = part.part_of_edge[sz(e)];
+  std::vector<int> neighbours;
+  for (int node : {pg.u[sz(e)], pg.v[sz(e)]})
+    for (int other : layout.edges_at_node[sz(node)])
+      if (const int q = part.part_of_edge[sz(other)];
+          q != p && std::find(neighbours.begin(), neighbours.end(), q) == neighbours.end())
+        neighbours.push_back(q);
+  if (neighbours.empty()) return false;
+  const int q = neighbours[rng() % neighbours.size()];
+  std::vector<int> trial = movedStreet(layout, pg, part.part_of_edge, e, q);
+  if (std::find(trial.begin(), trial.end(), p) == trial.end()) return false;
+  part.part_of_edge = std::move(trial);
+  for (int v : {p, q}) {
+    part.work += replanWork(part.part_of_edge, v);
+    part.route[sz(v)] = solvePart(ctx, part.part_of_edge, v);
+    part.length[sz(v)] = routeLength(pg, part.route[sz(v)]);
+  }
+  return true;
+}
+
+double makespanOf(const Partition& part) {
+  return *std::max_element(part.length.begin(), part.length.end());
+}
+
+/// The balancing moves until none helps (at most balance_moves); returns how many were made.
+int descend(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
+            Partition& part) {
+  int moves = 0;
+  while (moves < cfg.balance_moves && improveOnce(ctx, cfg, layout, part)) ++moves;
+  return moves;
+}
+
+/// Iterated local search: kick_rounds times, a few kicks of the best partition so far, the
+/// moves again, kept when the makespan is shorter. The rounds stop early once their re-plans'
+/// work reaches kick_budget (large nets: each re-plan costs more); a count, not a time, so the
+/// same seed gives the same routes on any machine.
+void kickAndDescend(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
+                    std::uint64_t seed, Partition& best) {
+  std::mt19937_64 rng(seed);
+  std::int64_t spent = 0;
+  for (int round = 0; round < cfg.kick_rounds && spent < cfg.kick_budget; ++round) {
+    Partition trial = best;
+    trial.work = 0;
+    const int kicks = 1 + static_cast<int>(rng() % 3);
+    for (int k = 0, tries = 0; k < kicks && tries < 20; ++tries) k += kick(ctx, layout, trial, rng);
+    descend(ctx, cfg, layout, trial);
+    spent += trial.work;
+    if (makespanOf(trial) < makespanOf(best) - 1e-6) best = std::move(trial);
+  }
 }
 
 }  // namespace
@@ -199,10 +300,10 @@ std::vector<std::vector<int>> partitionRoutes(const FleetContext& ctx, const Fle
   std::vector<std::vector<int>> best;
   double best_makespan = std::numeric_limits<double>::infinity();
   for (auto& [name, part] : starts) {
-    const double before = *std::max_element(part.length.begin(), part.length.end());
-    int moves = 0;
-    while (moves < cfg.balance_moves && improveOnce(ctx, cfg, layout, part)) ++moves;
-    const double makespan = *std::max_element(part.length.begin(), part.length.end());
+    const double before = makespanOf(part);
+    const int moves = descend(ctx, cfg, layout, part);
+    kickAndDescend(ctx, cfg, layout, seed, part);
+    const double makespan = makespanOf(part);
     if (makespan >= best_makespan) continue;
     best_makespan = makespan;
     best = std::move(part.route);

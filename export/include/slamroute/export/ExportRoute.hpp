@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slamroute/core/Route.hpp"
@@ -24,6 +25,19 @@ struct RouteExportResult {
   /// One line for the user when no GPX / KML could be written (empty otherwise).
   std::string note;
 };
+
+/// The crew files of one route, not yet written: each target path with its full text.
+struct RouteFileTexts {
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  /// One line for the user when no GPX / KML can be written (empty otherwise).
+  std::string note;
+};
+
+/// The texts exportRoute writes, named after `route_json`, the GPX / KML titled `title`. Throws
+/// like exportRoute.
+RouteFileTexts routeFileTexts(const SumoNet& net, const Route& route,
+                              const std::filesystem::path& route_json, const std::string& title,
+                              const RouteExportOptions& opt);
 
 /// ROUTE.json -> ROUTE.gpx, ROUTE.kml, ROUTE_instructions.md, ROUTE_instructions.csv. Throws
 /// std::invalid_argument when the route has no SUMO edges or names one the net lacks.

@@ -13,6 +13,10 @@ struct FleetConfig {
   int balance_moves = 200;       ///< partition: at most this many edge moves
   int candidates_per_move = 12;  ///< partition: boundary edges tried per move
   int kmeans_iterations = 100;   ///< partition: Lloyd iterations at most
+  int kick_rounds = 30;  ///< partition: rounds of random kicks of the parts, each re-balanced
+  /// partition: the kicks stop once their re-plans' work (sum of the re-planned parts' squared
+  /// directed-edge counts) reaches this
+  int kick_budget = 3000000;
 };
 
 template <class V>
@@ -23,6 +27,12 @@ void visitFields(V& v, FleetConfig& c) {
   v.field("candidates_per_move", c.candidates_per_move,
           "partition: boundary edges of the longest route tried per move before giving up");
   v.field("kmeans_iterations", c.kmeans_iterations, "partition: Lloyd iterations at most");
+  v.field("kick_rounds", c.kick_rounds,
+          "partition: rounds of random boundary-street moves, each followed by the balancing "
+          "moves and kept when the makespan is shorter (0: none)");
+  v.field("kick_budget", c.kick_budget,
+          "partition: the kicks stop once the re-planned parts' squared directed-edge counts "
+          "sum to this (a count, not a time: same seed, same routes)");
 }
 
 }  // namespace slamroute::rl

@@ -1,0 +1,31 @@
+#pragma once
+// Map data of report.html shared by its parts (HtmlReport.cpp, HtmlFleet.cpp): the map frame
+// (globe or the net's metres) and a route as one feature per SUMO edge driven.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "slamroute/core/Route.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/export/GeoProjection.hpp"
+
+namespace slamroute::cli {
+
+/// `v` rounded to a multiple of `unit` (keeps the page small).
+double htmlRounded(double v, double unit);
+
+/// Map coordinates: [lat, lon] on the globe, else [y, x] in metres (Leaflet's plain CRS).
+struct MapFrame {
+  std::optional<exports::GeoProjection> proj;
+  nlohmann::json at(const Point2& p) const;
+  nlohmann::json line(const Polyline& pl) const;
+};
+
+/// One feature per SUMO edge of the route, in driving order, with how often the route drives it.
+nlohmann::json routeLayer(const SumoNet& net, const Route& r, const MapFrame& f);
+
+/// The PNG at `png` as a data: URI (base64), for an <img> inside the page.
+std::string pngDataUri(const std::filesystem::path& png);
+
+}  // namespace slamroute::cli
