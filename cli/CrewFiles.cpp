@@ -1,7 +1,7 @@
 #include "CrewFiles.hpp"
 
-#include "Commands.hpp"
 #include <algorithm>
+#include "Commands.hpp"
 
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/FleetRoute.hpp"

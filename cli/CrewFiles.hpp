@@ -7,7 +7,7 @@ namespace slamroute {
 struct SumoNet;
 struct FleetRoute;
 class AtomicFileSet;
-}
+}  // namespace slamroute
 
 namespace slamroute::cli {
 

@@ -11,9 +11,9 @@
 namespace slamroute::cli {
 
 struct FleetPlanOptions {
-  int vehicles = 0;    ///< --vehicles (0: rl.fleet.vehicles)
-  std::string depot;   ///< --depot EDGE: one depot for all
-  std::string depots;  ///< --depots E1,E2,..: one per vehicle
+  int vehicles = 0;        ///< --vehicles (0: rl.fleet.vehicles)
+  std::string depot;       ///< --depot EDGE: one depot for all
+  std::string depots;      ///< --depots E1,E2,..: one per vehicle
   std::string geo_origin;  ///< --geo-origin LAT,LON for the vehicles' .gpx / .kml
 };
 

@@ -85,11 +85,11 @@ void expectFleetPage(const fs::path& out, const fs::path& work) {
   EXPECT_EQ(test::bodyAttr(b.dom, "data-errors"), "0") << test::bodyAttr(b.dom, "data-last-error");
   EXPECT_EQ(test::bodyAttr(b.dom, "data-fleet-features"), features);
   EXPECT_EQ(b.log.find("CONSOLE"), std::string::npos) << b.log;
-  for (const char* s : {"<option value=\"1\">fleet (2 vehicles)</option>",
-                        "<img id=\"fleet-map-error\" src=\"data:image/png;base64,iVBORw0KGgo",
-                        "<h2>Fleet: makespan</h2>", "<td>makespan / bound</td>",
-                        "<h2>Fleet: per vehicle</h2>", "<td>mapper_1</td>",
-                        "<td>street facades covered by the merged map [%]</td>"})
+  for (const char* s :
+       {"<option value=\"1\">fleet (2 vehicles)</option>",
+        "<img id=\"fleet-map-error\" src=\"data:image/png;base64,iVBORw0KGgo",
+        "<h2>Fleet: makespan</h2>", "<td>makespan / bound</td>", "<h2>Fleet: per vehicle</h2>",
+        "<td>mapper_1</td>", "<td>street facades covered by the merged map [%]</td>"})
     EXPECT_NE(b.dom.find(s), std::string::npos) << s;
   // The legend names each vehicle with its colour, the fleet being the route shown.
   const auto c = cli::vehicleColour(1);
