@@ -6,6 +6,9 @@
 // Edges alone are not enough for the graph built from the traces: at a junction with two arms
 // (a bend or corner) a cover may reach each outgoing edge by a U-turn, so no trace passes
 // round the bend, the traces on either side end there and the street is cut in two dead ends.
+// Except where a direction can only turn round (a U-turn is its only way on or off): a street
+// of the road graph cannot turn round part-way, so there the graph needs a node at the corner,
+// which the traces ending on either side give it.
 #include <limits>
 #include <queue>
 #include <set>
@@ -48,15 +51,42 @@ std::vector<bool> twoArmVertices(const DriveGraph& g) {
   return two;
 }
 
-/// Nothing driven yet; the turns to drive are those through a two-arm junction (not U-turns).
+bool isUTurn(const DriveGraph& g, std::size_t e, std::size_t next) {
+  return g.edges[next].v == g.edges[e].u;
+}
+
+/// Vertices where some direction can only turn round: an edge in whose every continuation is a
+/// U-turn, or an edge out that only a U-turn leads onto (a two-way street meeting a one-way one).
+std::vector<bool> turningPlaces(const DriveGraph& g) {
+  std::vector<bool> place(g.numVertices(), false);
+  std::vector<bool> entered(g.numEdges(), false), entered_not_by_u_turn(g.numEdges(), false);
+  for (std::size_t e = 0; e < g.numEdges(); ++e) {
+    bool only_u_turns = !g.allowed_next[e].empty();
+    for (std::size_t next : g.allowed_next[e]) {
+      entered[next] = true;
+      if (isUTurn(g, e, next)) continue;
+      only_u_turns = false;
+      entered_not_by_u_turn[next] = true;
+    }
+    if (only_u_turns) place[g.edges[e].v] = true;
+  }
+  for (std::size_t e = 0; e < g.numEdges(); ++e)
+    if (entered[e] && !entered_not_by_u_turn[e]) place[g.edges[e].u] = true;
+  return place;
+}
+
+/// Nothing driven yet; the turns to drive are those round a bend: through a two-arm junction,
+/// not a U-turn. Not at a turning place: there the road graph needs the traces on either side to
+/// end (its node is where they meet), as a street through the bend cannot hold the U-turn.
 CoverState initialState(const DriveGraph& g) {
   const auto two_arm = twoArmVertices(g);
+  const auto turning = turningPlaces(g);
   CoverState s{std::vector<bool>(g.numEdges(), false), {}};
   s.turn_done.resize(g.numEdges());
   for (std::size_t e = 0; e < g.numEdges(); ++e) {
     const std::size_t at = g.edges[e].v;
-    for (std::size_t next : g.allowed_next[e])
-      s.turn_done[e].push_back(!two_arm[at] || g.edges[next].v == g.edges[e].u);
+    const bool bend = two_arm[at] && !turning[at];
+    for (std::size_t next : g.allowed_next[e]) s.turn_done[e].push_back(!bend || isUTurn(g, e, next));
   }
   return s;
 }
