@@ -3,7 +3,9 @@
 
 Per seed and the mean +- sd over the seeds that finished: directed SUMO edges driven [%] (the
 drive as evaluated), route length in SUMO [km], aco-ga / postman length, ATE RMSE [m],
-aco-ga / postman ATE. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
+aco-ga / postman ATE. Then where the ATE comes from: the SLAM's loop closures per km driven and
+the largest error per planner, and aco-ga's planned revisits (count, length) and its predicted
+C_max against the bound. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
 import json
 import statistics
 import sys
@@ -54,5 +56,33 @@ def main():
           + " | ".join(mean_sd(cols[k], digits[k]) for k in cols) + " |")
 
 
+def closures(run, planner):
+    """(SLAM loop closures, closures per km evaluated, ATE max m) or None if not finished."""
+    metrics = load(run / "eval" / planner / "metrics.json")
+    if metrics is None:
+        return None
+    km = metrics["evaluated_length_m"] / 1000.0
+    return metrics["loop_closures"], metrics["loop_closures"] / km, metrics["ate_max_m"]
+
+
+def diagnostics(out, seeds):
+    print()
+    print("| seed | postman closures (per km) | aco-ga closures (per km) | postman / aco-ga ATE max "
+          "[m] | aco-ga revisits, length [km] | aco-ga C_max / bound [m^2] |")
+    print("|---|---|---|---|---|---|")
+    for s in seeds:
+        run = out / f"seed_{s}"
+        p, a = closures(run, "postman"), closures(run, "aco-ga")
+        route = load(run / "routes" / "aco-ga.json")
+        if p is None or a is None or route is None:
+            continue
+        extra = route["extra"]
+        unc = extra["uncertainty"]
+        print(f"| {s} | {p[0]} ({p[1]:.1f}) | {a[0]} ({a[1]:.1f}) | {p[2]:.2f} / {a[2]:.2f} | "
+              f"{extra['loop_closure_revisits']}, {extra['revisit_length_m'] / 1000.0:.2f} | "
+              f"{unc['c_max_m2']:.0f} / {unc['c_threshold_m2']:.0f} |")
+
+
 if __name__ == "__main__":
     main()
+    diagnostics(Path(sys.argv[1]), sys.argv[2:])
