@@ -72,8 +72,9 @@ def closures(run, planner):
 
 def diagnostics(out, seeds):
     print()
-    print("| seed | postman closures (per km) | aco-ga closures (per km) | postman / aco-ga ATE max "
-          "[m] | aco-ga revisits, length [km] | aco-ga C_max / bound [m^2] |")
+    print("| seed | postman closures (per km) | aco-ga closures (per km) | "
+          "postman / aco-ga ATE max [m] | aco-ga revisits, length [km] | "
+          "aco-ga C_max / bound [m^2] |")
     print("|---|---|---|---|---|---|")
     for s in seeds:
         run = out / f"seed_{s}"
