@@ -86,7 +86,8 @@ CoverState initialState(const DriveGraph& g) {
   for (std::size_t e = 0; e < g.numEdges(); ++e) {
     const std::size_t at = g.edges[e].v;
     const bool bend = two_arm[at] && !turning[at];
-    for (std::size_t next : g.allowed_next[e]) s.turn_done[e].push_back(!bend || isUTurn(g, e, next));
+    for (std::size_t next : g.allowed_next[e])
+      s.turn_done[e].push_back(!bend || isUTurn(g, e, next));
   }
   return s;
 }
