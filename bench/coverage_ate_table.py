@@ -3,7 +3,10 @@
 
 Per seed and the mean +- sd over the seeds that finished: directed SUMO edges driven [%] (the
 drive as evaluated), route length in SUMO [km], aco-ga / postman length, ATE RMSE [m],
-aco-ga / postman ATE. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
+aco-ga / postman ATE; a seed whose SLAM has not run shows its planned coverage and length.
+Then where the ATE comes from: the SLAM's loop closures per km driven and the largest error
+per planner, and aco-ga's planned revisits (count, length) and its predicted C_max against the
+bound. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
 import json
 import statistics
 import sys
@@ -15,14 +18,15 @@ def load(path):
 
 
 def figures(run, planner):
-    """(directed coverage as driven %, SUMO length km, ATE RMSE m) or None if not finished."""
+    """(directed coverage %, SUMO length km, ATE RMSE m) or None without a route. Coverage as
+    driven once the SLAM has run, else as planned; ATE None until the SLAM has run."""
     route = load(run / "routes" / f"{planner}.json")
     metrics = load(run / "eval" / planner / "metrics.json")
-    if route is None or metrics is None:
+    if route is None:
         return None
-    cov = metrics.get("directed_coverage", route.get("directed_coverage", {}))
+    cov = (metrics or {}).get("directed_coverage", route.get("directed_coverage", {}))
     km = route["sumo_length"]["total_m"] / 1000.0
-    return cov["edges_pct"], km, metrics["ate_rmse_m"]
+    return cov["edges_pct"], km, metrics["ate_rmse_m"] if metrics else None
 
 
 def mean_sd(values, digits):
@@ -41,18 +45,50 @@ def main():
     for s in seeds:
         p, a = figures(out / f"seed_{s}", "postman"), figures(out / f"seed_{s}", "aco-ga")
         if p is None or a is None:
-            print(f"| {s} | not finished |||||||| ")
+            print(f"| {s} | not planned |||||||| ")
             continue
-        row = dict(pd=p[0], ad=a[0], pk=p[1], ak=a[1], lr=a[1] / p[1], pa=p[2], aa=a[2],
-                   ar=a[2] / p[2])
+        row = dict(pd=p[0], ad=a[0], pk=p[1], ak=a[1], lr=a[1] / p[1])
+        ate = "SLAM not run | – | –"
+        if p[2] is not None and a[2] is not None:
+            row.update(pa=p[2], aa=a[2], ar=a[2] / p[2])
+            ate = f"{p[2]:.3f} | {a[2]:.3f} | {row['ar']:.2f}"
         for k, v in row.items():
             cols[k].append(v)
         print(f"| {s} | {p[0]:.1f} | {a[0]:.1f} | {p[1]:.2f} | {a[1]:.2f} | {row['lr']:.3f} | "
-              f"{p[2]:.3f} | {a[2]:.3f} | {row['ar']:.2f} |")
+              f"{ate} |")
     digits = dict(pd=1, ad=1, pk=2, ak=2, lr=3, pa=3, aa=3, ar=2)
-    print(f"| mean ± sd ({len(cols['lr'])} seeds) | "
+    print(f"| mean ± sd ({len(cols['lr'])} seeds; ATE {len(cols['ar'])}) | "
           + " | ".join(mean_sd(cols[k], digits[k]) for k in cols) + " |")
+
+
+def closures(run, planner):
+    """(SLAM loop closures, closures per km evaluated, ATE max m) or None if not finished."""
+    metrics = load(run / "eval" / planner / "metrics.json")
+    if metrics is None:
+        return None
+    km = metrics["evaluated_length_m"] / 1000.0
+    return metrics["loop_closures"], metrics["loop_closures"] / km, metrics["ate_max_m"]
+
+
+def diagnostics(out, seeds):
+    print()
+    print("| seed | postman closures (per km) | aco-ga closures (per km) | "
+          "postman / aco-ga ATE max [m] | aco-ga revisits, length [km] | "
+          "aco-ga C_max / bound [m^2] |")
+    print("|---|---|---|---|---|---|")
+    for s in seeds:
+        run = out / f"seed_{s}"
+        p, a = closures(run, "postman"), closures(run, "aco-ga")
+        route = load(run / "routes" / "aco-ga.json")
+        if p is None or a is None or route is None:
+            continue
+        extra = route["extra"]
+        unc = extra["uncertainty"]
+        print(f"| {s} | {p[0]} ({p[1]:.1f}) | {a[0]} ({a[1]:.1f}) | {p[2]:.2f} / {a[2]:.2f} | "
+              f"{extra['loop_closure_revisits']}, {extra['revisit_length_m'] / 1000.0:.2f} | "
+              f"{unc['c_max_m2']:.0f} / {unc['c_threshold_m2']:.0f} |")
 
 
 if __name__ == "__main__":
     main()
+    diagnostics(Path(sys.argv[1]), sys.argv[2:])

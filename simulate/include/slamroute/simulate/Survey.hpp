@@ -45,9 +45,12 @@ struct SurveyResult {
 };
 
 /// Routes (edge indices of `g`, each consecutive pair an allowed turn) that together contain as
-/// many edges as reachable: greedy — from the current edge go to the nearest not yet covered
-/// edge (Dijkstra over the turn graph), until a route is max_length_m long, then start a new
-/// route on an uncovered edge (edges nothing leads to first).
+/// many edges as reachable and every allowed turn round a bend (through a junction with two
+/// arms, one arm to the other, not a U-turn) unless one direction can only turn round there:
+/// greedy — from the current edge go to the nearest edge or such turn not yet driven (Dijkstra
+/// over the turn graph), until a route is max_length_m long, then start a new route on an
+/// uncovered edge (edges nothing leads to first), or, once every edge is driven, on an edge
+/// whose bend is left.
 std::vector<std::vector<std::size_t>> coveringRoutes(const DriveGraph& g, double max_length_m);
 
 /// Runs the survey (reads the net, simulates, renders depth frames, writes out_dir).
