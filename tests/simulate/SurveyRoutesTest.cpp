@@ -93,7 +93,7 @@ TEST(SurveyRoutes, CornerReachedByUTurnsIsDrivenRound) {
 
 /// SUMO edge ids of the turns the covering routes drive.
 std::set<std::pair<std::string, std::string>> sumoTurnsDriven(const DriveGraph& g,
-                                                               double max_length_m) {
+                                                              double max_length_m) {
   std::set<std::pair<std::string, std::string>> turns;
   for (const auto& [a, b] : turnsDriven(simulate::coveringRoutes(g, max_length_m)))
     turns.insert({g.edges[a].sumo_edge, g.edges[b].sumo_edge});
@@ -104,12 +104,12 @@ TEST(SurveyRoutes, DefaultCityBendsAreDrivenButNotItsTurningPlaces) {
   const DriveGraph g = DriveGraph::fromNet(testNet("default_city/default_city.net.xml"));
   const auto turns = sumoTurnsDriven(g, 2000.0);
   // The bends of the city's two-arm junctions R0C0, R0C2 and R4C5.
-  for (const auto& [a, b] : std::vector<std::pair<std::string, std::string>>{
-           {"R0C1_R0C0", "R0C0_R1C0"},
-           {"R1C0_R0C0", "R0C0_R0C1"},
-           {"T2_R0C2", "R0C2_R1C2"},
-           {"R1C2_R0C2", "R0C2_T2"},
-           {"R3C5_R4C5", "R4C5_R4C4"}})
+  for (const auto& [a, b] :
+       std::vector<std::pair<std::string, std::string>>{{"R0C1_R0C0", "R0C0_R1C0"},
+                                                        {"R1C0_R0C0", "R0C0_R0C1"},
+                                                        {"T2_R0C2", "R0C2_R1C2"},
+                                                        {"R1C2_R0C2", "R0C2_T2"},
+                                                        {"R3C5_R4C5", "R4C5_R4C4"}})
     EXPECT_TRUE(turns.count({a, b})) << a << " -> " << b;
   // R0C5 and R4C0 are corners where a two-way street meets a one-way street, so one direction of
   // the two-way street can only turn round there: their bends are left undriven (the cover does
