@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "HtmlFleetDrives.hpp"
 #include "ReportFleet.hpp"
 #include "ReportFleetTables.hpp"
 #include "slamroute/core/FleetRoute.hpp"
@@ -36,6 +37,11 @@ void addFleetData(json& data, const ReportInputs& in, const SumoNet& net, const 
                         {"colour", cssColour(k)},
                         {"length_km", htmlRounded(f.vehicles[k].length_m / 1000.0, 0.01)},
                         {"route", routeLayer(net, f.vehicles[k], frame)}});
+  // Each vehicle's merged trajectory for the slider (none before the fleet is evaluated).
+  for (const json& d : fleetDriveLayers(in.out / "drives" / in.fleet, in.out / "eval" / in.fleet,
+                                        frame))
+    for (json& v : vehicles)
+      if (v["id"] == d["id"]) v["drive"] = d["drive"];
   json fleet = {{"name", in.fleet},
                 {"vehicles", vehicles},
                 {"makespan_km", htmlRounded(f.makespan_m / 1000.0, 0.01)},

@@ -1,7 +1,8 @@
 #pragma once
 // The fleet's part of report.html (`run --vehicles K`): each vehicle's route in its own colour
-// (the colours of report.md's fleet map), the merged map from above, and the fleet's tables
-// (the same as report.md's: ReportFleetTables.hpp).
+// (the colours of report.md's fleet map), each vehicle's merged trajectory for the slider
+// (HtmlFleetDrives.hpp), the merged map from above, and the fleet's tables (the same as
+// report.md's: ReportFleetTables.hpp).
 #include <nlohmann/json.hpp>
 
 #include "HtmlLayers.hpp"

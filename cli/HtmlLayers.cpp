@@ -1,5 +1,6 @@
 #include "HtmlLayers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -60,6 +61,24 @@ json routeLayer(const SumoNet& net, const Route& r, const MapFrame& f) {
                    {"pts", e ? f.line(e->shape) : json::array()}});
   }
   return out;
+}
+
+json driveLayer(const std::vector<evaluate::PosePair>& pairs, const Pose3& T_gt_est,
+                const std::vector<double>& distance_m, const std::vector<double>& errors_m,
+                const MapFrame& f) {
+  constexpr std::size_t kMaxPoints = 2000;
+  const std::size_t step = std::max<std::size_t>(1, (pairs.size() + kMaxPoints - 1) / kMaxPoints);
+  json gt = json::array(), est = json::array(), d = json::array(), err = json::array(),
+       t = json::array();
+  for (std::size_t i = 0; i < pairs.size(); i += step) {
+    const auto& p = pairs[i];
+    gt.push_back(f.at(p.gt.translation().head<2>()));
+    est.push_back(f.at((T_gt_est * p.est).translation().head<2>()));
+    d.push_back(htmlRounded(distance_m[i], 0.1));
+    err.push_back(htmlRounded(errors_m[i], 1e-3));
+    t.push_back(htmlRounded(p.t, 0.01));
+  }
+  return {{"gt", gt}, {"est", est}, {"d", d}, {"err", err}, {"t", t}};
 }
 
 std::string pngDataUri(const std::filesystem::path& png) {

@@ -25,8 +25,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr std::size_t kMaxDrivePoints = 2000;  // per drive: enough for the slider, small file
-
 json streetsLayer(const SumoNet& net, const MapFrame& f) {
   json out = json::array();
   for (const auto& e : net.edges)
@@ -67,23 +65,11 @@ json driftLayer(const SumoNet& net, const fs::path& csv, const MapFrame& f) {
 }
 
 /// Ground truth, the estimate aligned onto it like the ATE, and the error along the drive.
-json driveLayer(const fs::path& drive, const fs::path& eval, const MapFrame& f) {
+json singleDriveLayer(const fs::path& drive, const fs::path& eval, const MapFrame& f) {
   if (!fs::exists(drive / "groundtruth.tum") || !fs::exists(eval / "estimate.tum")) return nullptr;
   const auto m = evaluate::compareTrajectories(readTum(eval / "estimate.tum"),
                                                readTum(drive / "groundtruth.tum"), {});
-  const std::size_t step =
-      std::max<std::size_t>(1, (m.pairs.size() + kMaxDrivePoints - 1) / kMaxDrivePoints);
-  json gt = json::array(), est = json::array(), d = json::array(), err = json::array(),
-       t = json::array();
-  for (std::size_t i = 0; i < m.pairs.size(); i += step) {
-    const auto& p = m.pairs[i];
-    gt.push_back(f.at(p.gt.translation().head<2>()));
-    est.push_back(f.at((m.T_gt_est * p.est).translation().head<2>()));
-    d.push_back(htmlRounded(m.distance_m[i], 0.1));
-    err.push_back(htmlRounded(m.errors_m[i], 1e-3));
-    t.push_back(htmlRounded(p.t, 0.01));
-  }
-  return {{"gt", gt}, {"est", est}, {"d", d}, {"err", err}, {"t", t}};
+  return driveLayer(m.pairs, m.T_gt_est, m.distance_m, m.errors_m, f);
 }
 
 std::string cell(const json& j, const char* key, int prec, double scale = 1.0) {
@@ -134,7 +120,7 @@ json plannerData(const ReportInputs& in, const std::string& p, const SumoNet& ne
   const fs::path rj = in.out / "routes" / (p + ".json");
   pd["route"] = fs::exists(rj) ? routeLayer(net, Route::readJson(rj), f) : json::array();
   pd["drift"] = driftLayer(net, in.out / "eval" / p / "per_edge.csv", f);
-  pd["drive"] = driveLayer(in.out / "drives" / p, in.out / "eval" / p, f);
+  pd["drive"] = singleDriveLayer(in.out / "drives" / p, in.out / "eval" / p, f);
   // The map from above coloured by its distance to the world surface (evaluate's picture).
   if (const fs::path png = in.out / "eval" / p / "map_error_top.png"; fs::exists(png))
     pd["map_error_png"] = pngDataUri(png);

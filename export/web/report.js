@@ -125,7 +125,28 @@ var planners = data.planners.map(function(p) {
 
 // --- the fleet (run --vehicles K): one more choice of route, each vehicle in its own colour.
 // Vehicles drawn first are wider, so a street two vehicles share shows both colours.
-var fleetCounts = [];
+var fleetCounts = [], fleetDriveCounts = [];
+// Each evaluated vehicle's trajectories in its colour: ground truth wide and pale, the merged
+// SLAM estimate (under the fleet's one alignment) dashed on top.
+function fleetTrajectories(fv) {
+  var traj = L.featureGroup(), drives = [];
+  fv.forEach(function(v) {
+    if (!v.drive || !v.drive.gt.length) return;
+    traj.addLayer(
+        polyline(v.drive.gt, {color: v.colour, weight: 5, opacity: 0.35}, v.id + ' ground truth'));
+    traj.addLayer(polyline(
+        v.drive.est, {color: v.colour, weight: 2, dashArray: '4 4'},
+        v.id + ' SLAM estimate (merged map, aligned)'));
+    drives.push({
+      v: v,
+      gt: L.circleMarker([0, 0], {radius: 6, color: v.colour, fillColor: v.colour, fillOpacity: 0.9}),
+      est: L.circleMarker([0, 0], {radius: 6, color: v.colour, fillColor: '#fff', fillOpacity: 0.9}),
+      err: L.polyline([[0, 0], [0, 0]], {color: v.colour, weight: 1})
+    });
+    fleetDriveCounts.push(v.id + ':' + v.drive.gt.length);
+  });
+  return {traj: traj, drives: drives};
+}
 if (data.fleet) {
   var fv = data.fleet.vehicles, fleetRoute = L.featureGroup();
   fv.forEach(function(v, k) {
@@ -136,11 +157,13 @@ if (data.fleet) {
     });
     fleetCounts.push(v.id + ':' + v.route.length);
   });
+  var ft = fleetTrajectories(fv);
   planners.push({
     p: {name: data.fleet.name + ' (' + fv.length + ' vehicles)', fleet: data.fleet, drive: null},
     route: fleetRoute,
     drift: L.featureGroup(),
-    traj: L.featureGroup(),
+    traj: ft.traj,
+    fleetDrives: ft.drives,
     nmax: 1,
     drange: [0, 1]
   });
@@ -260,6 +283,7 @@ function drawChart(q, at) {
 
 function moveTo(i) {
   var q = current(), d = q.p.drive;
+  if (q.fleetDrives && q.fleetDrives.length) return moveFleetTo(q, i);
   if (!d || !d.gt.length) {
     readout.textContent = 'no evaluated drive';
     return;
@@ -271,6 +295,92 @@ function moveTo(i) {
   readout.textContent = 't ' + fmt(d.t[i], 1) + ' s   driven ' + fmt(d.d[i] / 1000, 3) + ' km\n' +
       'trajectory error ' + fmt(d.err[i], 3) + ' m';
   drawChart(q, i);
+}
+
+// --- the fleet along the drive: the vehicles drive at once, so the slider is the shared
+// simulation time and every vehicle is shown where it was then (at its end once it arrived).
+var FLEET_STEPS = 2000;
+function fleetTimes(q) {
+  var lo = Infinity, hi = -Infinity;
+  q.fleetDrives.forEach(function(f) {
+    lo = Math.min(lo, f.v.drive.t[0]);
+    hi = Math.max(hi, f.v.drive.t[f.v.drive.t.length - 1]);
+  });
+  return [lo, hi];
+}
+function fleetTimeAt(q, i) {
+  var span = fleetTimes(q);
+  return span[0] + (span[1] - span[0]) * i / (FLEET_STEPS - 1);
+}
+// The last pose of drive d at or before time t (its first before it starts).
+function indexAtTime(d, t) {
+  var lo = 0, hi = d.t.length - 1;
+  while (lo < hi) {
+    var mid = Math.ceil((lo + hi) / 2);
+    if (d.t[mid] <= t)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return lo;
+}
+function drawFleetChart(q, t) {
+  var ctx = chart.getContext('2d'), W = chart.width, H = chart.height, m = 24;
+  var span = fleetTimes(q), emax = 0;
+  ctx.clearRect(0, 0, W, H);
+  q.fleetDrives.forEach(function(f) {
+    emax = Math.max(emax, range(f.v.drive.err)[1]);
+  });
+  var px = function(x) {
+    return m + ((x - span[0]) / Math.max(span[1] - span[0], 1e-9)) * (W - m - 4);
+  };
+  ctx.strokeStyle = '#999';
+  ctx.strokeRect(m, 4, W - m - 4, H - m - 4);
+  ctx.fillStyle = '#333';
+  ctx.font = '10px sans-serif';
+  ctx.fillText(fmt(emax, 2) + ' m', 2, 12);
+  ctx.fillText('0', 2, H - m);
+  ctx.fillText('error vs time, ' + fmt(span[1] - span[0], 0) + ' s', m + 4, H - 8);
+  q.fleetDrives.forEach(function(f) {
+    var d = f.v.drive;
+    ctx.strokeStyle = f.v.colour;
+    ctx.beginPath();
+    d.t.forEach(function(x, i) {
+      var py = H - m - (d.err[i] / emax) * (H - m - 8);
+      if (i === 0)
+        ctx.moveTo(px(x), py);
+      else
+        ctx.lineTo(px(x), py);
+    });
+    ctx.stroke();
+  });
+  ctx.strokeStyle = '#1f3a5f';
+  ctx.beginPath();
+  ctx.moveTo(px(t), 4);
+  ctx.lineTo(px(t), H - m);
+  ctx.stroke();
+}
+function moveFleetTo(q, i) {
+  var t = fleetTimeAt(q, Math.max(0, Math.min(FLEET_STEPS - 1, i)));
+  var lines = ['t ' + fmt(t, 1) + ' s'];
+  q.fleetDrives.forEach(function(f) {
+    var d = f.v.drive, k = indexAtTime(d, t);
+    f.gt.setLatLng(d.gt[k]);
+    f.est.setLatLng(d.est[k]);
+    f.err.setLatLngs([d.gt[k], d.est[k]]);
+    lines.push(
+        f.v.id + ': driven ' + fmt(d.d[k] / 1000, 3) + ' km, trajectory error ' +
+        fmt(d.err[k], 3) + ' m');
+  });
+  readout.textContent = lines.join('\n');
+  drawFleetChart(q, t);
+}
+function fleetMarkers(q) {
+  var out = [];
+  (q.fleetDrives || []).forEach(function(f) {
+    out.push(f.gt, f.est, f.err);
+  });
+  return out;
 }
 
 function showFleetSummary(fleet) {
@@ -330,13 +440,22 @@ function refresh() {
         map.removeLayer(o[k]);
     });
   });
-  var n = q.p.drive ? q.p.drive.gt.length : 0;
+  var fleet = q.fleetDrives && q.fleetDrives.length;
+  var n = fleet ? FLEET_STEPS : q.p.drive ? q.p.drive.gt.length : 0;
   slider.max = String(Math.max(0, n - 1));
   [gtMarker, estMarker, errLine].forEach(function(l) {
-    if (n)
+    if (n && !fleet)
       l.addTo(map);
     else
       map.removeLayer(l);
+  });
+  planners.forEach(function(o) {
+    fleetMarkers(o).forEach(function(l) {
+      if (o === q && toggles.traj.checked)
+        l.addTo(map);
+      else
+        map.removeLayer(l);
+    });
   });
   showLegend(q);
   showSummary(q);
@@ -390,6 +509,7 @@ refresh();
 body.setAttribute('data-streets', String(streets.getLayers().length));
 body.setAttribute('data-route-features', featureCounts.join(','));
 body.setAttribute('data-fleet-features', fleetCounts.join(','));
+body.setAttribute('data-fleet-drives', fleetDriveCounts.join(','));
 body.setAttribute('data-status', 'ok');
 document.title = document.title + ' (ready)';
 })();

@@ -1,14 +1,18 @@
 // End to end: `slamroute run --vehicles 2` on the plus-shaped test net (survey -> graph -> plan
 // postman and a fleet of two -> drive both, the fleet in one SUMO session -> SLAM of the postman
-// drive, of each vehicle and the fleet merge -> report), then --resume keeps every step.
+// drive, of each vehicle and the fleet merge -> report with each vehicle's trajectory), then
+// --resume keeps every step.
 #include <gtest/gtest.h>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 #include "Chromium.hpp"
 #include "CliTestUtil.hpp"
+#include "HtmlFleetDrives.hpp"
 #include "ReportFleet.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/FleetRoute.hpp"
@@ -70,9 +74,35 @@ void expectFleetReport(const fs::path& out) {
   EXPECT_EQ(pixelsOfVehicle(img, 2), 0);
 }
 
+/// The page's fleet trajectories: one per vehicle, and their errors are the fleet's common ATE
+/// (fleet_metrics.json) under the one alignment of all vehicles. Returns "mapper_0:N0,..." with
+/// each vehicle's number of trajectory points.
+std::string expectFleetDrives(const fs::path& out) {
+  const auto m = nlohmann::json::parse(readFile(out / "eval" / "fleet" / "fleet_metrics.json"));
+  const auto drives =
+      cli::fleetDriveLayers(out / "drives" / "fleet", out / "eval" / "fleet", cli::MapFrame{});
+  EXPECT_EQ(drives.size(), m["vehicles"].size());
+  std::string counts;
+  for (std::size_t k = 0; k < drives.size(); ++k) {
+    const auto& err = drives[k]["drive"]["err"];
+    EXPECT_EQ(drives[k]["id"], m["vehicles"][k]["id"]);
+    EXPECT_GT(err.size(), 100u);  // the plus net's short drives are not thinned
+    double sq = 0.0;
+    for (const auto& e : err) sq += e.get<double>() * e.get<double>();
+    EXPECT_NEAR(std::sqrt(sq / static_cast<double>(err.size())),
+                m["vehicles"][k]["common_ate_after_m"].get<double>(), 2e-3)
+        << k;
+    counts += (k ? "," : "") + drives[k]["id"].get<std::string>() + ":" +
+              std::to_string(drives[k]["drive"]["gt"].size());
+  }
+  return counts;
+}
+
 /// report.html in Chromium: the postman route and the fleet (opened at #fleet) drawn without
-/// errors, one route feature per SUMO edge of each vehicle, its merged map and its tables.
+/// errors, one route feature per SUMO edge of each vehicle, each vehicle's trajectory on the
+/// slider, its merged map and its tables.
 void expectFleetPage(const fs::path& out, const fs::path& work) {
+  const std::string drive_counts = expectFleetDrives(out);
   if (!test::haveChromium()) GTEST_SKIP() << "chromium not installed (scripts/setup.sh does)";
   ASSERT_TRUE(fs::exists(out / "report.html"));
   const auto route = nlohmann::json::parse(readFile(out / "routes" / "fleet.json"));
@@ -84,6 +114,12 @@ void expectFleetPage(const fs::path& out, const fs::path& work) {
   EXPECT_EQ(test::bodyAttr(b.dom, "data-status"), "ok") << b.log;
   EXPECT_EQ(test::bodyAttr(b.dom, "data-errors"), "0") << test::bodyAttr(b.dom, "data-last-error");
   EXPECT_EQ(test::bodyAttr(b.dom, "data-fleet-features"), features);
+  EXPECT_EQ(test::bodyAttr(b.dom, "data-fleet-drives"), drive_counts);
+  // The slider's readout names every vehicle's error at the shared time, not "no evaluated drive".
+  EXPECT_EQ(b.dom.find("<div id=\"readout\">no evaluated drive"), std::string::npos);
+  for (const char* s : {"<div id=\"readout\">t ", " s\nmapper_0: driven 0.000 km, trajectory error ",
+                        "\nmapper_1: driven 0.000 km, trajectory error "})
+    EXPECT_NE(b.dom.find(s), std::string::npos) << s;
   EXPECT_EQ(b.log.find("CONSOLE"), std::string::npos) << b.log;
   for (const char* s :
        {"<option value=\"1\">fleet (2 vehicles)</option>",
