@@ -119,8 +119,10 @@ FleetRoute summarise(const FleetContext& ctx, const Config& cfg, std::uint64_t s
   f.single_route_m = single_m;
   f.longest_round_trip_m = longestRoundTrip(ctx);
   f.lower_bound_m = std::max(single_m / ctx.vehicles(), f.longest_round_trip_m);
-  f.depot_bound_m = std::max(f.longest_round_trip_m,
-                             fleet::depotTripsBound(fleet::edgeReaches(ctx), ctx.vehicles()));
+  const std::vector<fleet::EdgeReach> reach = fleet::edgeReaches(ctx);
+  f.depot_bound_m = std::max({f.longest_round_trip_m,
+                              fleet::depotTripsBound(reach, ctx.vehicles()),
+                              fleet::farFlowBound(ctx.pg, reach, ctx.vehicles())});
   fillCoverage(ctx, routes, f);
   return f;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Private to the fleet planner: a lower bound on the makespan that counts every vehicle's drive
-// out from its depot and back (MakespanBound.cpp derives it).
+// out from its depot and back (MakespanBound.cpp derives it), and one that also counts the
+// detours between far streets (FlowBound.cpp).
 #include <vector>
 
 #include "FleetParts.hpp"
@@ -24,5 +25,13 @@ std::vector<EdgeReach> edgeReaches(const FleetContext& ctx);
 /// tried (evenly spaced in sorted order); fewer only weaken the bound, never invalidate it.
 double depotTripsBound(const std::vector<EdgeReach>& edges, int vehicles,
                        int max_thresholds = 1000);
+
+/// max over far sets F of min over r in 1..vehicles of C_F(r) / r, C_F(r) the cheapest
+/// circulation on the turn-expanded graph in which r walks, each from a depot's reach of an F
+/// edge to a depot's reach after one, drive every edge of F (FlowBound.cpp derives it). F: the
+/// edges whose round trip before + len + after is at least a threshold, at most max_sets
+/// thresholds. No legal solution has a shorter makespan.
+double farFlowBound(const PlanGraph& pg, const std::vector<EdgeReach>& reach, int vehicles,
+                    int max_sets = 24);
 
 }  // namespace slamroute::rl::fleet

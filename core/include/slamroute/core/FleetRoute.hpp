@@ -23,7 +23,8 @@ struct FleetRoute {
   double longest_round_trip_m = 0.0;  ///< max over edges of the shortest depot-edge-depot trip
   double lower_bound_m = 0.0;         ///< max(L1 / K, longest_round_trip_m)
   /// A proven lower bound that counts every vehicle's drive from its depot and back:
-  /// max(longest_round_trip_m, max over far sets F of a + b + L(F) / K; rl MakespanBound.cpp)
+  /// max(longest_round_trip_m, max over far sets F of a + b + L(F) / K, the min-cost flow bound
+  /// that adds the detours between far streets; rl MakespanBound.cpp, FlowBound.cpp)
   double depot_bound_m = 0.0;
   double edge_coverage_pct = 0.0;       ///< directed drivable edges driven by some vehicle [%]
   double sumo_edge_coverage_pct = 0.0;  ///< directed SUMO edges driven by some vehicle [%]
