@@ -38,8 +38,8 @@ void addFleetData(json& data, const ReportInputs& in, const SumoNet& net, const 
                         {"length_km", htmlRounded(f.vehicles[k].length_m / 1000.0, 0.01)},
                         {"route", routeLayer(net, f.vehicles[k], frame)}});
   // Each vehicle's merged trajectory for the slider (none before the fleet is evaluated).
-  for (const json& d : fleetDriveLayers(in.out / "drives" / in.fleet, in.out / "eval" / in.fleet,
-                                        frame))
+  for (const json& d :
+       fleetDriveLayers(in.out / "drives" / in.fleet, in.out / "eval" / in.fleet, frame))
     for (json& v : vehicles)
       if (v["id"] == d["id"]) v["drive"] = d["drive"];
   json fleet = {{"name", in.fleet},

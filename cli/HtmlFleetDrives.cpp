@@ -35,8 +35,8 @@ std::vector<double> distanceAlong(const std::vector<evaluate::PosePair>& pairs) 
   std::vector<double> d;
   for (std::size_t i = 0; i < pairs.size(); ++i)
     d.push_back(i == 0 ? 0.0
-                       : d.back() + (pairs[i].gt.translation() - pairs[i - 1].gt.translation())
-                                        .norm());
+                       : d.back() +
+                             (pairs[i].gt.translation() - pairs[i - 1].gt.translation()).norm());
   return d;
 }
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "slamroute/core/Route.hpp"
-#include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/core/SumoNet.hpp"
+#include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/export/GeoProjection.hpp"
 
 namespace slamroute::cli {

@@ -139,8 +139,10 @@ function fleetTrajectories(fv) {
         v.id + ' SLAM estimate (merged map, aligned)'));
     drives.push({
       v: v,
-      gt: L.circleMarker([0, 0], {radius: 6, color: v.colour, fillColor: v.colour, fillOpacity: 0.9}),
-      est: L.circleMarker([0, 0], {radius: 6, color: v.colour, fillColor: '#fff', fillOpacity: 0.9}),
+      gt: L.circleMarker(
+          [0, 0], {radius: 6, color: v.colour, fillColor: v.colour, fillOpacity: 0.9}),
+      est:
+          L.circleMarker([0, 0], {radius: 6, color: v.colour, fillColor: '#fff', fillOpacity: 0.9}),
       err: L.polyline([[0, 0], [0, 0]], {color: v.colour, weight: 1})
     });
     fleetDriveCounts.push(v.id + ':' + v.drive.gt.length);
@@ -362,15 +364,13 @@ function drawFleetChart(q, t) {
 }
 function moveFleetTo(q, i) {
   var t = fleetTimeAt(q, Math.max(0, Math.min(FLEET_STEPS - 1, i)));
-  var lines = ['t ' + fmt(t, 1) + ' s'];
+  var lines = ['t ' + fmt(t, 1) + ' s   (driven, trajectory error)'];
   q.fleetDrives.forEach(function(f) {
     var d = f.v.drive, k = indexAtTime(d, t);
     f.gt.setLatLng(d.gt[k]);
     f.est.setLatLng(d.est[k]);
     f.err.setLatLngs([d.gt[k], d.est[k]]);
-    lines.push(
-        f.v.id + ': driven ' + fmt(d.d[k] / 1000, 3) + ' km, trajectory error ' +
-        fmt(d.err[k], 3) + ' m');
+    lines.push(f.v.id + ': ' + fmt(d.d[k] / 1000, 3) + ' km, error ' + fmt(d.err[k], 3) + ' m');
   });
   readout.textContent = lines.join('\n');
   drawFleetChart(q, t);

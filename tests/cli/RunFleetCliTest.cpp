@@ -117,8 +117,9 @@ void expectFleetPage(const fs::path& out, const fs::path& work) {
   EXPECT_EQ(test::bodyAttr(b.dom, "data-fleet-drives"), drive_counts);
   // The slider's readout names every vehicle's error at the shared time, not "no evaluated drive".
   EXPECT_EQ(b.dom.find("<div id=\"readout\">no evaluated drive"), std::string::npos);
-  for (const char* s : {"<div id=\"readout\">t ", " s\nmapper_0: driven 0.000 km, trajectory error ",
-                        "\nmapper_1: driven 0.000 km, trajectory error "})
+  for (const char* s :
+       {"<div id=\"readout\">t ", " s   (driven, trajectory error)\nmapper_0: 0.000 km, error ",
+        "\nmapper_1: 0.000 km, error "})
     EXPECT_NE(b.dom.find(s), std::string::npos) << s;
   EXPECT_EQ(b.log.find("CONSOLE"), std::string::npos) << b.log;
   for (const char* s :

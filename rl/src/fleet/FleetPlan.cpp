@@ -120,8 +120,7 @@ FleetRoute summarise(const FleetContext& ctx, const Config& cfg, std::uint64_t s
   f.longest_round_trip_m = longestRoundTrip(ctx);
   f.lower_bound_m = std::max(single_m / ctx.vehicles(), f.longest_round_trip_m);
   const std::vector<fleet::EdgeReach> reach = fleet::edgeReaches(ctx);
-  f.depot_bound_m = std::max({f.longest_round_trip_m,
-                              fleet::depotTripsBound(reach, ctx.vehicles()),
+  f.depot_bound_m = std::max({f.longest_round_trip_m, fleet::depotTripsBound(reach, ctx.vehicles()),
                               fleet::farFlowBound(ctx.pg, reach, ctx.vehicles())});
   fillCoverage(ctx, routes, f);
   return f;
