@@ -4,8 +4,10 @@
 // for K = 2, 4, 8 and both strategies. Depot: the first node of the planning
 // graph (rl.start_node = -1). Usage:
 //   bench_fleet [--strategies partition,postman] [--k 2,4,8] [--candidates N] [--moves N]
+//               [--kicks N] [--seed S] [--nets NAME,NAME] (names as in the table)
 // Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
 // networks/README.md); Berlin-Adlershof from Debian's sumo-tools.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -37,6 +39,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> strategies{"partition", "postman"};
   std::vector<std::string> ks{"2", "4", "8"};
   rl::FleetConfig defaults;
+  std::vector<std::string> only;  // net names to run; empty: all
+  std::uint64_t seed = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--strategies")
@@ -49,6 +53,10 @@ int main(int argc, char** argv) {
       defaults.balance_moves = std::stoi(argv[i + 1]);
     else if (a == "--kicks")
       defaults.kick_rounds = std::stoi(argv[i + 1]);
+    else if (a == "--seed")
+      seed = std::stoull(argv[i + 1]);
+    else if (a == "--nets")
+      only = splitList(argv[i + 1]);
   }
   const std::string src = SLAMROUTE_SOURCE_DIR, shared = SLAMROUTE_SHARED_DIR;
   const std::vector<Net> nets{
@@ -62,6 +70,7 @@ int main(int argc, char** argv) {
       "planning [s] |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Net& net : nets) {
+    if (!only.empty() && std::find(only.begin(), only.end(), net.name) == only.end()) continue;
     const RoadGraph g = RoadGraph::fromSumoNet(SumoNet::read(net.path), /*lscc_only=*/false);
     for (const std::string& strategy : strategies)
       for (const std::string& k : ks) {
@@ -69,7 +78,7 @@ int main(int argc, char** argv) {
         cfg.fleet = defaults;
         cfg.fleet.vehicles = std::stoi(k);
         cfg.fleet.strategy = strategy;
-        const FleetRoute f = rl::planFleet(g, cfg, {}, 1, net.name);
+        const FleetRoute f = rl::planFleet(g, cfg, {}, seed, net.name);
         std::printf(
             "| %s | %s | %s | %.2f | %.2f | %.3f | %.2f | %.3f | %.3f | %.3f | %.1f | %.2f |\n",
             net.name.c_str(), strategy.c_str(), k.c_str(), f.makespan_m / 1000.0,
