@@ -29,12 +29,13 @@ struct StrategyStats {
   double makespan_before_moves_m = 0.0;  ///< partition: before the balancing moves
   int balance_moves = 0;                 ///< partition: street moves applied
   int legs = 0;                          ///< postman: legs the circuit was cut into
-  std::string start;                     ///< partition: kmeans | circuit legs (the better)
+  std::string start;                     ///< partition: kmeans | sweep | circuit legs (the best)
 };
 
 /// Per vehicle: its closed route (local edge ids) from and back to its depot.
-/// partition: the better of two starting partitions (K-means on the street midpoints; the
-/// circuit's legs, circuitLegParts), each improved by the balancing moves.
+/// partition: the best of three starting partitions (K-means on the street midpoints; sectors
+/// around the first depot; the circuit's legs, circuitLegParts), each improved by the balancing
+/// moves and kicks.
 std::vector<std::vector<int>> partitionRoutes(const FleetContext& ctx, const FleetConfig& cfg,
                                               std::uint64_t seed, const std::vector<int>& circuit,
                                               StrategyStats& stats);

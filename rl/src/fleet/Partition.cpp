@@ -3,13 +3,15 @@
 // the Hungarian algorithm, a rural postman route per part, then moves of boundary streets from
 // the longest route to another part while each move shortens the longest route: first streets
 // the other part's route drives anyway (on its way from the depot, the far parts' routes cross
-// the near parts), then streets on the boundary to a neighbouring part. A
-// second start, the postman circuit's legs (routes and the edges each drives first), is
-// balanced the same way and kept when its makespan is shorter (K-means parts ignore how far
-// the depot is; the legs do not), so partition is never longer than the postman strategy.
+// the near parts), then streets on the boundary to a neighbouring part. Two more starts are
+// balanced the same way and the shortest makespan is kept: sectors of the streets around the
+// depot (the sweep of vehicle routing; K-means parts ignore how far the depot is, a sector
+// holds near and far streets alike) and the postman circuit's legs (routes and the edges each
+// drives first), so partition is never longer than the postman strategy.
 // Parts hold directed edges: a street starts with both directions in one part, a move takes
 // the directions of the street that the longest route's part holds.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -84,6 +86,15 @@ std::vector<std::vector<double>> approachCosts(const FleetContext& ctx,
   return cost;
 }
 
+/// Clusters (per edge) given to vehicles by the Hungarian algorithm on the approach costs.
+std::vector<int> clustersToVehicles(const FleetContext& ctx, std::vector<int> cluster_of_edge) {
+  const std::vector<int> cluster_of_vehicle = assignToVehicles(approachCosts(ctx, cluster_of_edge));
+  std::vector<int> vehicle_of_cluster(sz(ctx.vehicles()));
+  for (int i = 0; i < ctx.vehicles(); ++i) vehicle_of_cluster[sz(cluster_of_vehicle[sz(i)])] = i;
+  for (int& c : cluster_of_edge) c = vehicle_of_cluster[sz(c)];
+  return cluster_of_edge;
+}
+
 /// Per edge: its street's K-means cluster, clusters given to vehicles by the Hungarian algorithm.
 std::vector<int> kMeansParts(const FleetContext& ctx, const FleetConfig& cfg, std::uint64_t seed,
                              const Layout& layout) {
@@ -94,11 +105,40 @@ std::vector<int> kMeansParts(const FleetContext& ctx, const FleetConfig& cfg, st
              {.seed = seed, .maxIterations = cfg.kmeans_iterations, .weight = weight});
   std::vector<int> cluster_of_edge;
   for (int e = 0; e < ctx.pg.m; ++e) cluster_of_edge.push_back(km.label[sz(ctx.pg.street[sz(e)])]);
-  const std::vector<int> cluster_of_vehicle = assignToVehicles(approachCosts(ctx, cluster_of_edge));
-  std::vector<int> vehicle_of_cluster(sz(ctx.vehicles()));
-  for (int i = 0; i < ctx.vehicles(); ++i) vehicle_of_cluster[sz(cluster_of_vehicle[sz(i)])] = i;
-  for (int& c : cluster_of_edge) c = vehicle_of_cluster[sz(c)];
-  return cluster_of_edge;
+  return clustersToVehicles(ctx, std::move(cluster_of_edge));
+}
+
+/// Per edge: its street's sector around the first depot (the sweep of vehicle routing): streets
+/// sorted by their bearing from the depot, starting after the widest empty wedge, cut into K
+/// runs of equal street length. Each sector reaches from the depot to the city's edge, so every
+/// vehicle has near and far streets and the trips out and back weigh alike on all.
+std::vector<int> sweepParts(const FleetContext& ctx, const Layout& layout) {
+  const PlanGraph& pg = ctx.pg;
+  const Point2 depot = ctx.g.nodes[sz(pg.node_orig[sz(ctx.depot[0])])].pos.head<2>();
+  std::vector<std::pair<double, int>> bearing;
+  for (int st = 0; st < pg.num_streets; ++st) {
+    const Point2 d = layout.street_midpoint[sz(st)] - depot;
+    bearing.push_back({std::atan2(d.y(), d.x()), st});
+  }
+  std::sort(bearing.begin(), bearing.end());
+  std::size_t start = 0;
+  double widest = -1.0;
+  for (std::size_t i = 0; i < bearing.size(); ++i) {
+    const double next = i + 1 < bearing.size() ? bearing[i + 1].first : bearing[0].first + 2 * M_PI;
+    if (next - bearing[i].first > widest) widest = next - bearing[i].first, start = i + 1;
+  }
+  std::rotate(bearing.begin(), bearing.begin() + static_cast<long>(start % bearing.size()),
+              bearing.end());
+  std::vector<int> sector_of_street(sz(pg.num_streets));
+  double done = 0.0;
+  for (const auto& [angle, st] : bearing) {
+    const int sector = static_cast<int>(done / pg.total_street_len * ctx.vehicles());
+    sector_of_street[sz(st)] = std::min(sector, ctx.vehicles() - 1);
+    done += pg.street_len[sz(st)];
+  }
+  std::vector<int> cluster_of_edge;
+  for (int e = 0; e < pg.m; ++e) cluster_of_edge.push_back(sector_of_street[sz(pg.street[sz(e)])]);
+  return clustersToVehicles(ctx, std::move(cluster_of_edge));
 }
 
 /// Every vehicle has an edge, and every edge a vehicle.
@@ -291,6 +331,8 @@ std::vector<std::vector<int>> partitionRoutes(const FleetContext& ctx, const Fle
   std::vector<std::pair<const char*, Partition>> starts;
   if (auto parts = kMeansParts(ctx, cfg, seed, layout); usable(parts, ctx.vehicles()))
     starts.emplace_back("kmeans", routesOf(ctx, std::move(parts)));
+  if (auto parts = sweepParts(ctx, layout); usable(parts, ctx.vehicles()))
+    starts.emplace_back("sweep", routesOf(ctx, std::move(parts)));
   if (auto parts = circuitLegParts(ctx, circuit); usable(parts, ctx.vehicles())) {
     // The legs themselves are routes for these parts: moves re-plan only the parts they change.
     Partition p{std::move(parts), splitCircuitRoutes(ctx, circuit, legs), {}};
