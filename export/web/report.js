@@ -249,38 +249,54 @@ function showLegend(q) {
   legend.appendChild(el('span', {}, hi));
 }
 
-function drawChart(q, at) {
-  var ctx = chart.getContext('2d'), W = chart.width, H = chart.height, m = 24;
+// The error chart: each curve {xs, err, colour} over x0..x1, a cursor at x, a caption below.
+function errorChart(curves, x0, x1, x, caption) {
+  var ctx = chart.getContext('2d'), W = chart.width, H = chart.height, m = 24, emax = 0;
   ctx.clearRect(0, 0, W, H);
-  var d = q.p.drive;
-  if (!d || d.d.length < 2) {
-    ctx.fillText('no evaluated drive', m, H / 2);
-    return;
-  }
-  var dmax = d.d[d.d.length - 1] || 1, emax = range(d.err)[1];
+  curves.forEach(function(c) {
+    emax = Math.max(emax, range(c.err)[1]);
+  });
+  var px = function(v) {
+    return m + ((v - x0) / Math.max(x1 - x0, 1e-9)) * (W - m - 4);
+  };
   ctx.strokeStyle = '#999';
   ctx.strokeRect(m, 4, W - m - 4, H - m - 4);
   ctx.fillStyle = '#333';
   ctx.font = '10px sans-serif';
   ctx.fillText(fmt(emax, 2) + ' m', 2, 12);
   ctx.fillText('0', 2, H - m);
-  ctx.fillText('error vs distance, ' + fmt(dmax / 1000, 2) + ' km', m + 4, H - 8);
-  ctx.strokeStyle = '#e0301e';
-  ctx.beginPath();
-  d.d.forEach(function(x, i) {
-    var px = m + (x / dmax) * (W - m - 4), py = H - m - (d.err[i] / emax) * (H - m - 8);
-    if (i === 0)
-      ctx.moveTo(px, py);
-    else
-      ctx.lineTo(px, py);
+  ctx.fillText(caption, m + 4, H - 8);
+  curves.forEach(function(c) {
+    ctx.strokeStyle = c.colour;
+    ctx.beginPath();
+    c.xs.forEach(function(v, i) {
+      var py = H - m - (c.err[i] / emax) * (H - m - 8);
+      if (i === 0)
+        ctx.moveTo(px(v), py);
+      else
+        ctx.lineTo(px(v), py);
+    });
+    ctx.stroke();
   });
-  ctx.stroke();
-  var cx = m + (d.d[at] / dmax) * (W - m - 4);
   ctx.strokeStyle = '#1f3a5f';
   ctx.beginPath();
-  ctx.moveTo(cx, 4);
-  ctx.lineTo(cx, H - m);
+  ctx.moveTo(px(x), 4);
+  ctx.lineTo(px(x), H - m);
   ctx.stroke();
+}
+
+function drawChart(q, at) {
+  var d = q.p.drive;
+  if (!d || d.d.length < 2) {
+    var ctx = chart.getContext('2d');
+    ctx.clearRect(0, 0, chart.width, chart.height);
+    ctx.fillText('no evaluated drive', 24, chart.height / 2);
+    return;
+  }
+  var dmax = d.d[d.d.length - 1] || 1;
+  errorChart(
+      [{xs: d.d, err: d.err, colour: '#e0301e'}], 0, dmax, d.d[at],
+      'error vs distance, ' + fmt(dmax / 1000, 2) + ' km');
 }
 
 function moveTo(i) {
@@ -327,40 +343,12 @@ function indexAtTime(d, t) {
   return lo;
 }
 function drawFleetChart(q, t) {
-  var ctx = chart.getContext('2d'), W = chart.width, H = chart.height, m = 24;
-  var span = fleetTimes(q), emax = 0;
-  ctx.clearRect(0, 0, W, H);
-  q.fleetDrives.forEach(function(f) {
-    emax = Math.max(emax, range(f.v.drive.err)[1]);
-  });
-  var px = function(x) {
-    return m + ((x - span[0]) / Math.max(span[1] - span[0], 1e-9)) * (W - m - 4);
-  };
-  ctx.strokeStyle = '#999';
-  ctx.strokeRect(m, 4, W - m - 4, H - m - 4);
-  ctx.fillStyle = '#333';
-  ctx.font = '10px sans-serif';
-  ctx.fillText(fmt(emax, 2) + ' m', 2, 12);
-  ctx.fillText('0', 2, H - m);
-  ctx.fillText('error vs time, ' + fmt(span[1] - span[0], 0) + ' s', m + 4, H - 8);
-  q.fleetDrives.forEach(function(f) {
-    var d = f.v.drive;
-    ctx.strokeStyle = f.v.colour;
-    ctx.beginPath();
-    d.t.forEach(function(x, i) {
-      var py = H - m - (d.err[i] / emax) * (H - m - 8);
-      if (i === 0)
-        ctx.moveTo(px(x), py);
-      else
-        ctx.lineTo(px(x), py);
-    });
-    ctx.stroke();
-  });
-  ctx.strokeStyle = '#1f3a5f';
-  ctx.beginPath();
-  ctx.moveTo(px(t), 4);
-  ctx.lineTo(px(t), H - m);
-  ctx.stroke();
+  var span = fleetTimes(q);
+  errorChart(
+      q.fleetDrives.map(function(f) {
+        return {xs: f.v.drive.t, err: f.v.drive.err, colour: f.v.colour};
+      }),
+      span[0], span[1], t, 'error vs time, ' + fmt(span[1] - span[0], 0) + ' s');
 }
 function moveFleetTo(q, i) {
   var t = fleetTimeAt(q, Math.max(0, Math.min(FLEET_STEPS - 1, i)));

@@ -96,19 +96,11 @@ double boundForSet(const PlanGraph& pg, const std::vector<EdgeReach>& reach,
 }
 
 /// Round-trip thresholds that define the far sets: the distinct values of
-/// before + len + after, at most max_sets of them, evenly spaced in sorted order, largest first.
+/// before + len + after, at most max_sets of them.
 std::vector<double> roundTripThresholds(const std::vector<EdgeReach>& reach, int max_sets) {
   std::vector<double> values;
-  for (const auto& e : reach)
-    if (const double rt = e.before_m + e.len_m + e.after_m; std::isfinite(rt)) values.push_back(rt);
-  std::sort(values.begin(), values.end(), std::greater<>());
-  values.erase(std::unique(values.begin(), values.end()), values.end());
-  if (static_cast<int>(values.size()) <= max_sets) return values;
-  std::vector<double> picked;
-  const double step = static_cast<double>(values.size() - 1) / (max_sets - 1);
-  for (int i = 0; i < max_sets; ++i)
-    picked.push_back(values[static_cast<std::size_t>(std::lround(i * step))]);
-  return picked;
+  for (const auto& e : reach) values.push_back(e.before_m + e.len_m + e.after_m);
+  return spreadThresholds(std::move(values), max_sets);
 }
 
 }  // namespace

@@ -34,16 +34,8 @@ namespace {
 /// Thresholds for `a`: the distinct before values, at most max_count of them.
 std::vector<double> beforeThresholds(const std::vector<EdgeReach>& edges, int max_count) {
   std::vector<double> values;
-  for (const auto& e : edges)
-    if (std::isfinite(e.before_m)) values.push_back(e.before_m);
-  std::sort(values.begin(), values.end());
-  values.erase(std::unique(values.begin(), values.end()), values.end());
-  if (static_cast<int>(values.size()) <= max_count) return values;
-  std::vector<double> picked;
-  const double step = static_cast<double>(values.size() - 1) / (max_count - 1);
-  for (int i = 0; i < max_count; ++i)
-    picked.push_back(values[static_cast<std::size_t>(std::lround(i * step))]);
-  return picked;
+  for (const auto& e : edges) values.push_back(e.before_m);
+  return spreadThresholds(std::move(values), max_count);
 }
 
 /// max over b of a + b + L(F) / k, F = {e : before >= a, after >= b} not empty (an empty F
@@ -64,6 +56,20 @@ double bestForA(const std::vector<EdgeReach>& edges, const std::vector<std::size
 }
 
 }  // namespace
+
+std::vector<double> spreadThresholds(std::vector<double> values, int max_count) {
+  values.erase(
+      std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+      values.end());
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  if (static_cast<int>(values.size()) <= max_count) return values;
+  std::vector<double> picked;
+  const double step = static_cast<double>(values.size() - 1) / (max_count - 1);
+  for (int i = 0; i < max_count; ++i)
+    picked.push_back(values[static_cast<std::size_t>(std::lround(i * step))]);
+  return picked;
+}
 
 std::vector<EdgeReach> edgeReaches(const FleetContext& ctx) {
   std::vector<EdgeReach> out;

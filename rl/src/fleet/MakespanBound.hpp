@@ -15,6 +15,10 @@ struct EdgeReach {
   double after_m = 0.0;   ///< shortest legal drive from the edge's end back to a depot
 };
 
+/// The distinct finite values, ascending, at most max_count (>= 2) of them evenly spaced in
+/// sorted order (the smallest and the largest among them): the thresholds the bounds try.
+std::vector<double> spreadThresholds(std::vector<double> values, int max_count);
+
 /// Per edge of the planning graph: its length and its legal distances from and back to the
 /// nearest depot (FleetContext's).
 std::vector<EdgeReach> edgeReaches(const FleetContext& ctx);
