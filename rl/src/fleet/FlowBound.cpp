@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "MakespanBound.hpp"
 
@@ -80,18 +81,27 @@ class FarFlow {
 };
 
 /// min over r in 1..k of C_F(r) / r. C_F is convex in r (a min-cost flow's cost in its amount),
-/// so C_F(r) / r falls and then rises (its difference r C_F(r+1) - (r+1) C_F(r) grows with r):
-/// the scan from r = k down stops at the first rise. Large far sets, the costly flows, have
-/// their minimum at r = k.
+/// so C_F(r) / r falls and then rises: r C_F(r+1) - (r+1) C_F(r), the sign of its step, grows
+/// with r by (r+1)(C_F(r+2) - 2 C_F(r+1) + C_F(r)) >= 0. Bisection on that sign finds the
+/// minimum in about 2 log2(k) flows, so a large fleet costs little more than a small one.
 double boundForSet(const PlanGraph& pg, const std::vector<EdgeReach>& reach,
                    const std::vector<char>& far, int k) {
   FarFlow flow(pg, reach, far);
-  double best = std::numeric_limits<double>::infinity();
-  for (int r = k; r >= 1; --r) {
-    const double per_walk = flow.cheapest(r) / r;
-    if (per_walk > best) break;
-    best = per_walk;
+  std::map<int, double> per_walk;
+  const auto at = [&](int r) {
+    auto it = per_walk.find(r);
+    if (it == per_walk.end()) it = per_walk.emplace(r, flow.cheapest(r) / r).first;
+    return it->second;
+  };
+  int lo = 1, hi = k;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (at(mid + 1) < at(mid))
+      lo = mid + 1;
+    else
+      hi = mid;
   }
+  const double best = at(lo);
   return std::isfinite(best) ? best : 0.0;
 }
 
