@@ -3,12 +3,13 @@
 
 Usage: bench/missed_edges.py NET.net.xml GRAPH.json [--link M] [--radius M] [--traces CSV]
 
-Rebuilds the place-level truth of build-graph's `place_validation` (roadgraph/src/SumoMatch.cpp:
-intersections joined by a passenger edge of at most --link m are one place; true intersections
-have >= 3 neighbouring places; a true street is a chain through places with 2 neighbours), matches
-the graph's intersection nodes to places the same way (closest pairs first, within --radius m)
-and prints the totals (to check against graph.json) and one line per missed chain: its end
-places, the node matched to each, its length along SUMO, and why it is missed:
+Rebuilds the place-level scoring of build-graph's `place_validation` (roadgraph/src/SumoMatch.cpp:
+on the net and on the graph alike, intersections (>= 3 neighbours) joined by a link whose ends lie
+at most --link m apart are one place; true intersections have >= 3 neighbouring places; a true
+street is a chain through places with 2 neighbours), matches the graph's places to the true ones
+(closest pairs first, within --radius m) and prints the totals (to check against graph.json) and
+one line per missed chain: its end places, the node matched to each (the lowest of its place),
+its length along SUMO, and why it is missed:
   end node not detected   a chain end has no node; "tolerance" when an unmatched node lies
                           within 2 x radius of the place (it is there but placed too far)
   edge split              the streets along the chain meet at a node that is not a true place
@@ -62,6 +63,24 @@ class Grid:
                    for q in self.cells.get((cx + i, cy + j), ()))
 
 
+def group(pos, nb, links, link_m, groupable):
+    """Places: vertices with >= 3 neighbours joined by a link whose ends lie at most link_m apart
+    (the same rule for the net's junctions and the graph's nodes); vertex -> place."""
+    parent = {j: j for j in pos}
+
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    for u, v in links:
+        if (groupable(u) and groupable(v) and len(nb[u]) >= 3 and len(nb[v]) >= 3 and
+                math.dist(pos[u], pos[v]) <= link_m):
+            ru, rv = find(u), find(v)
+            parent[max(ru, rv, key=str)] = min(ru, rv, key=str)
+    return {j: find(j) for j in pos}
+
+
 def place_truth(net_path, link_m):
     net = sumolib.net.readNet(net_path, withInternal=False)
     nb, pos, links = defaultdict(set), {}, []
@@ -74,17 +93,7 @@ def place_truth(net_path, link_m):
             nb[u].add(v)
             nb[v].add(u)
             links.append((u, v, e.getLength(), [p[:2] for p in e.getShape()]))
-    parent = {j: j for j in pos}
-
-    def find(a):
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-    for u, v, length, _ in links:
-        if length <= link_m and len(nb[u]) >= 3 and len(nb[v]) >= 3:
-            parent[find(u)] = find(v)
-    place = {j: find(j) for j in pos}
+    place = group(pos, nb, [(u, v) for u, v, _, _ in links], link_m, lambda j: True)
     members, pnb, shapes = defaultdict(list), defaultdict(set), defaultdict(list)
     for j in sorted(pos):
         members[place[j]].append(j)
@@ -95,6 +104,17 @@ def place_truth(net_path, link_m):
             pnb[b].add(a)
             shapes[frozenset((a, b))].append((length, shape))
     return members, pnb, shapes, pos
+
+
+def graph_places(g, nodes, end_nodes, link_m):
+    """The graph's nodes grouped by the truth's rule (dead ends stay alone): node -> place."""
+    nb, links = defaultdict(set), []
+    for e in g["edges"]:
+        if e["u"] != e["v"]:
+            nb[e["u"]].add(e["v"])
+            nb[e["v"]].add(e["u"])
+            links.append((e["u"], e["v"]))
+    return group(nodes, nb, links, link_m, lambda n: n not in end_nodes)
 
 
 def chains_of(pnb, truth):
@@ -111,13 +131,20 @@ def chains_of(pnb, truth):
     return chains
 
 
-def match_nodes(nodes, det, truth, members, pos, radius):
-    pairs = sorted((min(math.dist(nodes[d], pos[j]) for j in members[t]), d, t)
-                   for d in det for t in truth)
+def match_nodes(nodes, det, dplace, truth, members, pos, radius):
+    """Detected places to true places, closest pairs first; returns node -> true place (every
+    node of a matched place) and true place -> the lowest node of its matched place."""
+    dmembers = defaultdict(list)
+    for d in det:
+        dmembers[dplace[d]].append(d)
+    pairs = sorted((min(math.dist(nodes[d], pos[j]) for d in dmembers[p] for j in members[t]), p, t)
+                   for p in dmembers for t in truth)
     d2t, t2d = {}, {}
-    for dist, d, t in pairs:
-        if dist <= radius and d not in d2t and t not in t2d:
-            d2t[d], t2d[t] = t, d
+    for dist, p, t in pairs:
+        if dist <= radius and dmembers[p][0] not in d2t and t not in t2d:
+            for d in dmembers[p]:
+                d2t[d] = t
+            t2d[t] = min(dmembers[p])
     return d2t, t2d
 
 
@@ -136,7 +163,7 @@ def why(chain, path, ctx):
              if sum(grid.near(p, ALONG_M) for p in pl) >= ALONG_SHARE * len(pl)]
     if not along:
         return "no street"
-    ends = {n for s in along for n in ctx["ends_of"][s]} - {ctx["t2d"][a], ctx["t2d"][b]}
+    ends = {n for s in along for n in ctx["ends_of"][s] if ctx["d2t"].get(n) not in (a, b)}
     others = sorted(n for n in ends if n in ctx["d2t"])
     if others:
         return "geometry mismatch (street %s ends at node %s)" % (along, others)
@@ -204,7 +231,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("net")
     ap.add_argument("graph")
-    ap.add_argument("--link", type=float, default=25.0)
+    ap.add_argument("--link", type=float, default=38.0)
     ap.add_argument("--radius", type=float, default=15.0)
     ap.add_argument("--traces", help="the survey's traces.csv: mark each chain driven or not")
     args = ap.parse_args()
@@ -216,7 +243,8 @@ def main():
     end_nodes = set(meta["end_nodes"])
     nodes = {n["id"]: (n["x"], n["y"]) for n in g["nodes"]}
     det = sorted(n for n in nodes if n not in end_nodes)
-    d2t, t2d = match_nodes(nodes, det, truth, members, pos, args.radius)
+    d2t, t2d = match_nodes(nodes, det, graph_places(g, nodes, end_nodes, args.link), truth,
+                           members, pos, args.radius)
     streets, ends_of, found = {}, {}, set()
     for e in g["edges"]:
         s = e.get("street", e["id"])

@@ -23,129 +23,152 @@
 namespace slamroute::roadgraph {
 namespace {
 
-/// Undirected neighbour sets of the drivable junction graph, and its edges with their lengths.
-struct JunctionGraph {
+/// Vertices with positions and the undirected links between them: the net's junctions over its
+/// passenger edges, or the graph's nodes over its edges.
+struct LinkedVertices {
   std::vector<std::string> id;
   std::vector<Point3> pos;
   std::vector<std::set<std::size_t>> nb;
-  struct Link {
-    std::size_t u, v;
-    double length_m;
-  };
-  std::vector<Link> links;
+  std::vector<std::pair<std::size_t, std::size_t>> links;
+  void link(std::size_t u, std::size_t v) {
+    if (u == v) return;
+    nb[u].insert(v);
+    nb[v].insert(u);
+    links.emplace_back(u, v);
+  }
 };
 
-JunctionGraph junctionGraph(const SumoNet& net) {
+LinkedVertices junctionGraph(const SumoNet& net) {
   const DriveGraph dg = DriveGraph::fromNet(net);
-  JunctionGraph jg;
+  LinkedVertices jg;
   const std::size_t n = dg.numVertices();
   jg.nb.resize(n);
   for (std::size_t v = 0; v < n; ++v) {
     jg.id.push_back(dg.g[v].junction_id);
     jg.pos.push_back(dg.g[v].pos);
   }
-  for (const auto& e : dg.edges)
-    if (e.u != e.v) {
-      jg.nb[e.u].insert(e.v);
-      jg.nb[e.v].insert(e.u);
-      jg.links.push_back({e.u, e.v, e.length_m});
-    }
+  for (const auto& e : dg.edges) jg.link(e.u, e.v);
   return jg;
 }
 
-/// The truth a graph is scored against: vertices (one junction each, or the junctions of one
-/// place) with their undirected neighbour sets.
-struct TruthGraph {
-  std::vector<std::string> id;              ///< junction id, or the place's ids joined by '+'
-  std::vector<std::vector<Point3>> points;  ///< junction positions of each vertex
-  std::vector<std::set<std::size_t>> nb;
+LinkedVertices nodeGraph(const RoadGraph& graph) {
+  LinkedVertices ng;
+  ng.nb.resize(graph.nodes.size());
+  for (const auto& n : graph.nodes) {
+    ng.id.push_back(std::to_string(n.id));
+    ng.pos.push_back(n.pos);
+  }
+  for (const auto& e : graph.edges)
+    ng.link(static_cast<std::size_t>(e.u), static_cast<std::size_t>(e.v));
+  return ng;
+}
+
+/// Vertices grouped into places and the graph contracted onto them: what a graph is scored
+/// against (the net's junctions) and what is scored (the graph's nodes).
+struct PlaceGraph {
+  std::vector<std::size_t> place_of;          ///< per vertex
+  std::vector<std::string> id;                ///< per place, its vertices' ids joined by '+'
+  std::vector<std::vector<std::size_t>> members;
+  std::vector<std::vector<Point3>> points;    ///< per place, its vertices' positions
+  std::vector<std::set<std::size_t>> nb;      ///< per place, the neighbouring places
 };
 
-TruthGraph junctionTruth(const JunctionGraph& jg) {
-  TruthGraph t;
-  t.id = jg.id;
-  for (const auto& p : jg.pos) t.points.push_back({p});
-  t.nb = jg.nb;
-  return t;
-}
-
-/// Places: junctions with >= 3 distinct neighbours joined by a passenger edge of at most
-/// link_max_m are one place (the carriageway crossings of a divided road, the corners of a
-/// junction box), and the graph contracted onto them.
-TruthGraph placeTruth(const JunctionGraph& jg, double link_max_m) {
-  const std::size_t n = jg.nb.size();
-  detail::UnionFind sets(n);
-  for (const auto& l : jg.links)
-    if (l.length_m <= link_max_m && jg.nb[l.u].size() >= 3 && jg.nb[l.v].size() >= 3)
-      sets.unite(static_cast<int>(l.u), static_cast<int>(l.v));
-  std::vector<long> place_of(n, -1);
-  TruthGraph t;
+PlaceGraph contract(const LinkedVertices& lv, UnionFind& sets) {
+  const std::size_t n = lv.nb.size();
+  PlaceGraph pg;
+  pg.place_of.assign(n, 0);
+  std::vector<long> place_of_root(n, -1);
   for (std::size_t v = 0; v < n; ++v) {
     const auto root = static_cast<std::size_t>(sets.find(static_cast<int>(v)));
-    if (place_of[root] < 0) {
-      place_of[root] = static_cast<long>(t.id.size());
-      t.id.emplace_back();
-      t.points.emplace_back();
+    if (place_of_root[root] < 0) {
+      place_of_root[root] = static_cast<long>(pg.id.size());
+      pg.id.emplace_back();
+      pg.members.emplace_back();
+      pg.points.emplace_back();
     }
-    const auto p = static_cast<std::size_t>(place_of[root]);
-    place_of[v] = place_of[root];
-    t.id[p] += (t.id[p].empty() ? "" : "+") + jg.id[v];
-    t.points[p].push_back(jg.pos[v]);
+    const auto p = static_cast<std::size_t>(place_of_root[root]);
+    pg.place_of[v] = p;
+    pg.id[p] += (pg.id[p].empty() ? "" : "+") + lv.id[v];
+    pg.members[p].push_back(v);
+    pg.points[p].push_back(lv.pos[v]);
   }
-  t.nb.resize(t.id.size());
-  for (const auto& l : jg.links) {
-    const auto a = static_cast<std::size_t>(place_of[l.u]),
-               b = static_cast<std::size_t>(place_of[l.v]);
+  pg.nb.resize(pg.id.size());
+  for (const auto& [u, v] : lv.links) {
+    const std::size_t a = pg.place_of[u], b = pg.place_of[v];
     if (a == b) continue;
-    t.nb[a].insert(b);
-    t.nb[b].insert(a);
+    pg.nb[a].insert(b);
+    pg.nb[b].insert(a);
   }
-  return t;
+  return pg;
 }
 
-double distanceTo(const TruthGraph& t, std::size_t v, const Point3& p) {
+/// Each vertex a place of its own (junction level).
+PlaceGraph singlePlaces(const LinkedVertices& lv) {
+  UnionFind sets(lv.nb.size());
+  return contract(lv, sets);
+}
+
+/// Places, one rule for the net and the graph: two vertices with >= 3 distinct neighbours
+/// (intersections) that a link joins and whose positions lie at most link_max_m apart are one
+/// place (the carriageway crossings of a divided road, the corners of a junction box, a
+/// staggered pair of T junctions). The distance is taken between the vertices themselves because
+/// that is what both sides have: a SUMO edge's length runs between the junctions' shapes, a
+/// graph edge's from node to node. `groupable` false keeps a vertex a place of its own.
+PlaceGraph groupPlaces(const LinkedVertices& lv, double link_max_m,
+                       const std::vector<char>& groupable) {
+  UnionFind sets(lv.nb.size());
+  const auto joins = [&](std::size_t v) { return groupable[v] && lv.nb[v].size() >= 3; };
+  for (const auto& [u, v] : lv.links)
+    if (joins(u) && joins(v) && (lv.pos[u] - lv.pos[v]).norm() <= link_max_m)
+      sets.unite(static_cast<int>(u), static_cast<int>(v));
+  return contract(lv, sets);
+}
+
+double placeDistance(const PlaceGraph& a, std::size_t pa, const PlaceGraph& b, std::size_t pb) {
   double d = std::numeric_limits<double>::infinity();
-  for (const auto& q : t.points[v]) d = std::min(d, (p - q).norm());
+  for (const auto& p : a.points[pa])
+    for (const auto& q : b.points[pb]) d = std::min(d, (p - q).norm());
   return d;
 }
 
-/// One-to-one matching of the detected nodes with the true intersections, closest pairs first.
-struct NodeMatch {
-  std::vector<long> det_to_true;  ///< per graph node, truth vertex or -1
-  std::vector<int> true_to_det;   ///< per truth vertex, graph node or -1
+/// One-to-one matching of the detected places with the true intersections, closest pairs first;
+/// a detected place lies as far from a true one as their closest two vertices.
+struct PlaceMatch {
+  std::vector<long> det_to_true;  ///< per detected place, truth place or -1
+  std::vector<long> true_to_det;  ///< per truth place, detected place or -1
 };
 
-NodeMatch matchNodes(const RoadGraph& graph, const std::vector<int>& detected, const TruthGraph& t,
-                     const std::vector<std::size_t>& truth, double radius_m) {
+PlaceMatch matchPlaces(const PlaceGraph& det, const std::vector<std::size_t>& detected,
+                       const PlaceGraph& t, const std::vector<std::size_t>& truth,
+                       double radius_m) {
   struct Pair {
     double d;
-    int det;
-    std::size_t tru;
+    std::size_t det, tru;
   };
   std::vector<Pair> pairs;
-  for (int d : detected)
+  for (std::size_t d : detected)
     for (std::size_t v : truth) {
-      const double dist = distanceTo(t, v, graph.nodes[static_cast<std::size_t>(d)].pos);
+      const double dist = placeDistance(det, d, t, v);
       if (dist <= radius_m) pairs.push_back({dist, d, v});
     }
   std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
     return a.d != b.d ? a.d < b.d : (a.det != b.det ? a.det < b.det : a.tru < b.tru);
   });
-  NodeMatch m;
-  m.det_to_true.assign(graph.nodes.size(), -1);
-  m.true_to_det.assign(t.nb.size(), -1);
+  PlaceMatch m;
+  m.det_to_true.assign(det.id.size(), -1);
+  m.true_to_det.assign(t.id.size(), -1);
   for (const auto& p : pairs) {
-    if (m.det_to_true[static_cast<std::size_t>(p.det)] >= 0 || m.true_to_det[p.tru] >= 0) continue;
-    m.det_to_true[static_cast<std::size_t>(p.det)] = static_cast<long>(p.tru);
-    m.true_to_det[p.tru] = p.det;
+    if (m.det_to_true[p.det] >= 0 || m.true_to_det[p.tru] >= 0) continue;
+    m.det_to_true[p.det] = static_cast<long>(p.tru);
+    m.true_to_det[p.tru] = static_cast<long>(p.det);
   }
   return m;
 }
 
 using Chain = std::pair<std::size_t, std::size_t>;
 
-/// Real chains between true intersections through vertices with exactly 2 neighbours.
-std::set<Chain> trueChains(const TruthGraph& t, const std::vector<std::size_t>& truth) {
+/// Real chains between true intersections through places with exactly 2 neighbours.
+std::set<Chain> trueChains(const PlaceGraph& t, const std::vector<std::size_t>& truth) {
   std::set<Chain> chains;
   for (std::size_t v : truth)
     for (std::size_t w : t.nb[v]) {
@@ -161,9 +184,9 @@ std::set<Chain> trueChains(const TruthGraph& t, const std::vector<std::size_t>& 
   return chains;
 }
 
-void scoreNodes(const NodeMatch& m, const TruthGraph& t, const std::vector<std::size_t>& truth,
-                const std::vector<int>& detected, ValidationResult& r) {
-  for (const long v : m.det_to_true) r.matched_nodes += v >= 0 ? 1 : 0;
+void scoreNodes(const PlaceMatch& m, const PlaceGraph& det, const std::vector<std::size_t>& detected,
+                const PlaceGraph& t, const std::vector<std::size_t>& truth, ValidationResult& r) {
+  for (std::size_t d : detected) r.matched_nodes += m.det_to_true[d] >= 0 ? 1 : 0;
   r.true_intersections = truth.size();
   r.detected_nodes = detected.size();
   r.node_precision = detected.empty() ? 0.0 : double(r.matched_nodes) / double(detected.size());
@@ -173,27 +196,26 @@ void scoreNodes(const NodeMatch& m, const TruthGraph& t, const std::vector<std::
                   : 0.0;
   for (std::size_t v : truth)
     if (m.true_to_det[v] < 0) r.missed_junctions.push_back(t.id[v]);
-  for (int d : detected)
-    if (m.det_to_true[static_cast<std::size_t>(d)] < 0) r.false_nodes.push_back(d);
+  for (std::size_t d : detected)
+    if (m.det_to_true[d] < 0)
+      for (std::size_t n : det.members[d]) r.false_nodes.push_back(static_cast<int>(n));
 }
 
-/// An undirected street (counted once per `street`) between two intersection nodes matches when
-/// its end nodes are matched to the two ends of a real chain.
-void scoreStreets(const RoadGraph& graph, const std::vector<char>& node_is_end, const NodeMatch& m,
-                  const std::set<Chain>& chains, ValidationResult& r) {
-  auto isEnd = [&](int n) {
-    return static_cast<std::size_t>(n) < node_is_end.size() &&
-           node_is_end[static_cast<std::size_t>(n)];
-  };
+/// An undirected street (counted once per `street`) between two detected places matches when
+/// the places are matched to the two ends of a real chain; a street inside one place is not
+/// counted, as the net's edges inside a place are no chain.
+void scoreStreets(const RoadGraph& graph, const std::vector<char>& node_is_end,
+                  const PlaceGraph& det, const PlaceMatch& m, const std::set<Chain>& chains,
+                  ValidationResult& r) {
   r.true_chains = chains.size();
   std::set<int> seen_street;
   std::set<Chain> found;
   for (const auto& e : graph.edges) {
     if (e.street >= 0 && !seen_street.insert(e.street).second) continue;
-    if (isEnd(e.u) || isEnd(e.v)) continue;
+    const auto u = static_cast<std::size_t>(e.u), v = static_cast<std::size_t>(e.v);
+    if (node_is_end[u] || node_is_end[v] || det.place_of[u] == det.place_of[v]) continue;
     ++r.detected_streets;
-    const long a = m.det_to_true[static_cast<std::size_t>(e.u)];
-    const long b = m.det_to_true[static_cast<std::size_t>(e.v)];
+    const long a = m.det_to_true[det.place_of[u]], b = m.det_to_true[det.place_of[v]];
     if (a < 0 || b < 0) continue;
     const Chain key{std::min<std::size_t>(a, b), std::max<std::size_t>(a, b)};
     if (chains.count(key)) {
@@ -207,29 +229,48 @@ void scoreStreets(const RoadGraph& graph, const std::vector<char>& node_is_end, 
   r.edge_recall = r.true_chains ? double(r.found_chains) / double(r.true_chains) : 0.0;
 }
 
-ValidationResult validateAgainst(const TruthGraph& t, const RoadGraph& graph,
+/// Places with at least `min_neighbours` neighbouring places and, when `excluded` is given, no
+/// excluded vertex among their members.
+std::vector<std::size_t> placesToScore(const PlaceGraph& pg, std::size_t min_neighbours,
+                                       const std::vector<char>& excluded = {}) {
+  std::vector<std::size_t> out;
+  for (std::size_t p = 0; p < pg.id.size(); ++p) {
+    const bool skip = std::any_of(pg.members[p].begin(), pg.members[p].end(), [&](std::size_t v) {
+      return v < excluded.size() && excluded[v];
+    });
+    if (!skip && pg.nb[p].size() >= min_neighbours) out.push_back(p);
+  }
+  return out;
+}
+
+/// Scores the graph's places (node_is_end: dead ends, never scored) against the net's.
+ValidationResult validateAgainst(const PlaceGraph& t, const PlaceGraph& det, const RoadGraph& graph,
                                  const std::vector<char>& node_is_end, const SumoMatchConfig& cfg) {
-  std::vector<std::size_t> truth;
-  for (std::size_t v = 0; v < t.nb.size(); ++v)
-    if (t.nb[v].size() >= 3) truth.push_back(v);
-  std::vector<int> detected;
-  for (std::size_t n = 0; n < graph.nodes.size(); ++n)
-    if (!(n < node_is_end.size() && node_is_end[n])) detected.push_back(static_cast<int>(n));
-  const NodeMatch m = matchNodes(graph, detected, t, truth, cfg.match_radius_m);
+  const std::vector<std::size_t> truth = placesToScore(t, 3);
+  const std::vector<std::size_t> detected = placesToScore(det, 0, node_is_end);
+  const PlaceMatch m = matchPlaces(det, detected, t, truth, cfg.match_radius_m);
   ValidationResult r;
   r.node_junction.assign(graph.nodes.size(), "");
   for (std::size_t n = 0; n < graph.nodes.size(); ++n)
-    if (m.det_to_true[n] >= 0)
-      r.node_junction[n] = t.id[static_cast<std::size_t>(m.det_to_true[n])];
-  scoreNodes(m, t, truth, detected, r);
-  scoreStreets(graph, node_is_end, m, trueChains(t, truth), r);
+    if (const long v = m.det_to_true[det.place_of[n]]; v >= 0)
+      r.node_junction[n] = t.id[static_cast<std::size_t>(v)];
+  scoreNodes(m, det, detected, t, truth, r);
+  scoreStreets(graph, node_is_end, det, m, trueChains(t, truth), r);
   return r;
+}
+
+/// node_is_end as given, or all false when it is empty (a graph without dead-end marks).
+std::vector<char> endMarks(const RoadGraph& graph, const std::vector<char>& node_is_end) {
+  std::vector<char> ends(graph.nodes.size(), 0);
+  for (std::size_t n = 0; n < std::min(ends.size(), node_is_end.size()); ++n)
+    ends[n] = node_is_end[n];
+  return ends;
 }
 
 }  // namespace
 
 std::vector<TrueIntersection> trueIntersections(const SumoNet& net) {
-  const JunctionGraph jg = junctionGraph(net);
+  const LinkedVertices jg = junctionGraph(net);
   std::vector<TrueIntersection> out;
   for (std::size_t v = 0; v < jg.nb.size(); ++v)
     if (jg.nb[v].size() >= 3) out.push_back({jg.id[v], jg.pos[v]});
@@ -256,12 +297,18 @@ std::string ValidationResult::toJson() const {
 
 ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<char>& node_is_end,
                                     const SumoNet& net, const SumoMatchConfig& cfg) {
-  return validateAgainst(junctionTruth(junctionGraph(net)), graph, node_is_end, cfg);
+  return validateAgainst(singlePlaces(junctionGraph(net)), singlePlaces(nodeGraph(graph)), graph,
+                         endMarks(graph, node_is_end), cfg);
 }
 
 ValidationResult validateAgainstPlaces(const RoadGraph& graph, const std::vector<char>& node_is_end,
                                        const SumoNet& net, const SumoMatchConfig& cfg) {
-  return validateAgainst(placeTruth(junctionGraph(net), cfg.place_link_max_m), graph, node_is_end,
+  const LinkedVertices jg = junctionGraph(net);
+  const std::vector<char> ends = endMarks(graph, node_is_end);
+  std::vector<char> not_end(ends.size());
+  for (std::size_t n = 0; n < ends.size(); ++n) not_end[n] = !ends[n];
+  return validateAgainst(groupPlaces(jg, cfg.place_link_max_m, std::vector<char>(jg.id.size(), 1)),
+                         groupPlaces(nodeGraph(graph), cfg.place_link_max_m, not_end), graph, ends,
                          cfg);
 }
 

@@ -228,9 +228,11 @@ struct SumoMatchConfig {
   double stray_min_length_m = 20.0;  ///< shorter end edges (junction complexes) are kept [m]
   bool turns_from_net = true;        ///< turn permissions of the graph from the net's connections
   double turn_max_detour_m = 60.0;   ///< SUMO edges allowed between two graph edges at a turn [m]
-  /// Place-level validation: true intersections joined by a passenger edge this short are one
-  /// place [m]. 25 m: the carriageways of a divided road are 10-25 m apart.
-  double place_link_max_m = 25.0;
+  /// Place-level validation: intersections joined by a link whose ends lie this close are one
+  /// place, the net's junctions and the graph's nodes alike [m]. 38 m: on Berlin-Adlershof and
+  /// Braunschweig the places are then those of SUMO edges of at most 25 m between the junctions'
+  /// shapes (centres 10-37 m apart).
+  double place_link_max_m = 38.0;
 };
 template <class V>
 void visitFields(V& v, SumoMatchConfig& c) {
@@ -246,8 +248,8 @@ void visitFields(V& v, SumoMatchConfig& c) {
   v.field("turn_max_detour_m", c.turn_max_detour_m,
           "SUMO edges allowed between two graph edges at a turn [m]");
   v.field("place_link_max_m", c.place_link_max_m,
-          "place-level validation: true intersections joined by an edge this short are one "
-          "place (divided roads, junction boxes) [m]");
+          "place-level validation: intersections (net and graph alike) joined by a link whose "
+          "ends lie this close are one place (divided roads, junction boxes) [m]");
 }
 
 /// Roundabouts (Roundabouts.cpp): rings that vehicles circle round an empty middle.

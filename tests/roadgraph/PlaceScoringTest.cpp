@@ -1,0 +1,152 @@
+// Place-level scoring (validateAgainstPlaces) on a hand-made net whose known answer is counted by
+// hand: one rule groups the net's junctions and the graph's nodes into places.
+//
+// The net: a street along y = 0 from P (-200, 0) to E (224, 0) with a staggered pair of T
+// junctions on it, A (0, 0) with a side street north to N (0, 200) and B (24, 0) with one south
+// to S (24, -200); P, N, E and S are joined in a ring (P - N - E - S - P), so each has three
+// neighbours. The A - B edge runs between the two junctions' shapes (x 6 to 18, 12 m), as SUMO
+// lays it. Junction level: 6 intersections, 9 chains (A - B one of them). Place level (A and B
+// 24 m apart, one place): 5 places, 8 chains.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "slamroute/core/RoadGraph.hpp"
+#include "slamroute/core/SumoNet.hpp"
+#include "slamroute/roadgraph/SumoMatch.hpp"
+
+namespace slamroute::roadgraph {
+namespace {
+
+void addJunction(SumoNet& net, const std::string& id, double x, double y) {
+  SumoJunction j;
+  j.id = id;
+  j.type = "priority";
+  j.pos = Point3(x, y, 0.0);
+  net.junction_index[id] = net.junctions.size();
+  net.junctions.push_back(j);
+}
+
+/// One one-lane passenger edge from -> to along `shape`.
+void addEdge(SumoNet& net, const std::string& from, const std::string& to, const Polyline& shape) {
+  SumoEdge e;
+  e.id = from + "_" + to;
+  e.from = from;
+  e.to = to;
+  e.shape = shape;
+  SumoLane lane;
+  lane.id = e.id + "_0";
+  lane.shape = shape;
+  lane.length_m = polylineLength(shape);
+  e.lanes.push_back(lane);
+  net.edge_index[e.id] = net.edges.size();
+  net.edges.push_back(e);
+}
+
+Point3 at(const SumoNet& net, const std::string& id) { return net.findJunction(id)->pos; }
+
+SumoNet staggeredNet() {
+  SumoNet net;
+  for (const auto& [id, x, y] : std::vector<std::tuple<std::string, double, double>>{
+           {"P", -200, 0}, {"A", 0, 0}, {"B", 24, 0}, {"E", 224, 0}, {"N", 0, 200}, {"S", 24, -200}})
+    addJunction(net, id, x, y);
+  addEdge(net, "A", "B", {Point3(6, 0, 0), Point3(18, 0, 0)});
+  for (const auto& [u, v] : std::vector<std::pair<std::string, std::string>>{
+           {"P", "A"}, {"B", "E"}, {"A", "N"}, {"B", "S"}, {"P", "N"}, {"N", "E"}, {"E", "S"},
+           {"S", "P"}})
+    addEdge(net, u, v, {at(net, u), at(net, v)});
+  return net;
+}
+
+/// A graph with one node per (x, y) and one two-way street (two edges) per pair of node indices.
+RoadGraph graphOf(const std::vector<std::pair<double, double>>& nodes,
+                  const std::vector<std::pair<int, int>>& streets) {
+  RoadGraph g;
+  for (const auto& [x, y] : nodes)
+    g.nodes.push_back({static_cast<int>(g.nodes.size()), Point3(x, y, 0.0), ""});
+  for (std::size_t s = 0; s < streets.size(); ++s)
+    for (const auto& [u, v] : {streets[s], std::pair{streets[s].second, streets[s].first}}) {
+      RoadEdge e;
+      e.id = static_cast<int>(g.edges.size());
+      e.street = static_cast<int>(s);
+      e.u = u;
+      e.v = v;
+      e.polyline = {g.nodes[static_cast<std::size_t>(u)].pos,
+                    g.nodes[static_cast<std::size_t>(v)].pos};
+      e.length_m = polylineLength(e.polyline);
+      g.edges.push_back(e);
+    }
+  return g;
+}
+
+// The extracted graph as the hollow cylinder gives it at a staggered pair: a node on each T
+// (2.2 m from its junction, the two 20.2 m apart) and the short street between them. Nodes:
+// 0 P, 1 A, 2 N, 3 E, 4 S, 5 B.
+RoadGraph staggeredGraph() {
+  return graphOf({{-199, 1}, {2, 1}, {1, 198}, {222, -1}, {25, -198}, {22, -1}},
+                 {{0, 1}, {1, 5}, {5, 3}, {1, 2}, {5, 4}, {0, 2}, {2, 3}, {3, 4}, {4, 0}});
+}
+
+TEST(PlaceScoring, TwoNodesOfAStaggeredPairAreOneMatchedPlace) {
+  const SumoNet net = staggeredNet();
+  const RoadGraph g = staggeredGraph();
+  const auto v = validateAgainstPlaces(g, {}, net, SumoMatchConfig{});
+  EXPECT_EQ(v.true_intersections, 5u);
+  EXPECT_EQ(v.detected_nodes, 5u);
+  EXPECT_EQ(v.matched_nodes, 5u);
+  EXPECT_TRUE(v.false_nodes.empty());
+  EXPECT_EQ(v.node_junction[1], "A+B");
+  EXPECT_EQ(v.node_junction[5], "A+B");
+  // The street between the two nodes lies inside the place and is not counted; the through
+  // street's halves (to P and to E) and the side streets (to N and S) each match a chain.
+  EXPECT_EQ(v.true_chains, 8u);
+  EXPECT_EQ(v.detected_streets, 8u);
+  EXPECT_EQ(v.matched_streets, 8u);
+  EXPECT_EQ(v.found_chains, 8u);
+  // The same graph at junction level: each node is its T junction, the short street its chain.
+  const auto j = validateAgainstNet(g, {}, net, SumoMatchConfig{});
+  EXPECT_EQ(j.true_intersections, 6u);
+  EXPECT_EQ(j.matched_nodes, 6u);
+  EXPECT_EQ(j.true_chains, 9u);
+  EXPECT_EQ(j.found_chains, 9u);
+  EXPECT_EQ(j.matched_streets, 9u);
+}
+
+// The rule is the same on both sides: with place_link_max_m below both gaps (24 m between the
+// junctions, 20.2 m between the nodes) neither pair is grouped and the scores are the junction
+// level's.
+TEST(PlaceScoring, PairsFartherApartThanTheLinkMaximumStayTwoPlacesOnBothSides) {
+  SumoMatchConfig cfg;
+  cfg.place_link_max_m = 15.0;
+  const auto v = validateAgainstPlaces(staggeredGraph(), {}, staggeredNet(), cfg);
+  EXPECT_EQ(v.true_intersections, 6u);
+  EXPECT_EQ(v.detected_nodes, 6u);
+  EXPECT_EQ(v.matched_nodes, 6u);
+  EXPECT_EQ(v.true_chains, 9u);
+  EXPECT_EQ(v.matched_streets, 9u);
+}
+
+// A node that no junction lies near (F at (-100, 0) on the street P - A, with a stub to a dead
+// end) is far from every other node, so it stays a place of its own and counts as false; the
+// two streets it splits P - A into match nothing, the stub (to a dead end) is not counted.
+TEST(PlaceScoring, ALoneFalseNodeStillCountsAsFalse) {
+  const RoadGraph g = graphOf(
+      {{-199, 1}, {2, 1}, {1, 198}, {222, -1}, {25, -198}, {22, -1}, {-100, 0}, {-100, 30}},
+      {{0, 6}, {6, 1}, {6, 7}, {1, 5}, {5, 3}, {1, 2}, {5, 4}, {0, 2}, {2, 3}, {3, 4}, {4, 0}});
+  std::vector<char> is_end(g.nodes.size(), 0);
+  is_end[7] = 1;
+  const auto v = validateAgainstPlaces(g, is_end, staggeredNet(), SumoMatchConfig{});
+  EXPECT_EQ(v.detected_nodes, 6u);
+  EXPECT_EQ(v.matched_nodes, 5u);
+  EXPECT_EQ(v.false_nodes, std::vector<int>{6});
+  EXPECT_DOUBLE_EQ(v.node_precision, 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ(v.node_recall, 1.0);
+  EXPECT_EQ(v.detected_streets, 9u);
+  EXPECT_EQ(v.matched_streets, 7u);
+  EXPECT_EQ(v.found_chains, 7u);
+}
+
+}  // namespace
+}  // namespace slamroute::roadgraph
