@@ -4,8 +4,8 @@
 Usage: bench/missed_edges.py NET.net.xml GRAPH.json [--link M] [--radius M] [--traces CSV]
 
 Rebuilds the place-level scoring of build-graph's `place_validation` (roadgraph/src/SumoMatch.cpp:
-on the net and on the graph alike, intersections (>= 3 neighbours) joined by a link whose ends lie
-at most --link m apart are one place; true intersections have >= 3 neighbouring places; a true
+on the net and on the graph alike, intersections (>= 3 neighbours) joined by a street (through
+junctions with 2 neighbours) whose ends lie at most --link m apart are one place; true intersections have >= 3 neighbouring places; a true
 street is a chain through places with 2 neighbours), matches the graph's places to the true ones
 (closest pairs first, within --radius m) and prints the totals (to check against graph.json) and
 one line per missed chain: its end places, the node matched to each (the lowest of its place),
@@ -63,9 +63,21 @@ class Grid:
                    for q in self.cells.get((cx + i, cy + j), ()))
 
 
-def group(pos, nb, links, link_m, groupable):
-    """Places: vertices with >= 3 neighbours joined by a link whose ends lie at most link_m apart
-    (the same rule for the net's junctions and the graph's nodes); vertex -> place."""
+def chain_end(nb, v, w):
+    """The vertex reached from v through w and on through vertices with 2 neighbours."""
+    prev, cur = v, w
+    for _ in range(len(nb)):
+        if len(nb[cur]) != 2:
+            break
+        a, b = sorted(nb[cur], key=str)
+        prev, cur = cur, (b if a == prev else a)
+    return cur
+
+
+def group(pos, nb, link_m, groupable):
+    """Places: intersections (>= 3 neighbours) joined by a street (through vertices with 2
+    neighbours) whose ends lie at most link_m apart (the same rule for the net's junctions and
+    the graph's nodes); vertex -> place."""
     parent = {j: j for j in pos}
 
     def find(a):
@@ -73,11 +85,15 @@ def group(pos, nb, links, link_m, groupable):
             parent[a] = parent[parent[a]]
             a = parent[a]
         return a
-    for u, v in links:
-        if (groupable(u) and groupable(v) and len(nb[u]) >= 3 and len(nb[v]) >= 3 and
-                math.dist(pos[u], pos[v]) <= link_m):
-            ru, rv = find(u), find(v)
-            parent[max(ru, rv, key=str)] = min(ru, rv, key=str)
+
+    def joins(v):
+        return groupable(v) and len(nb[v]) >= 3
+    for v in sorted(pos, key=str):
+        for w in sorted(nb[v], key=str) if joins(v) else ():
+            end = chain_end(nb, v, w)
+            if end != v and joins(end) and math.dist(pos[v], pos[end]) <= link_m:
+                ru, rv = find(v), find(end)
+                parent[max(ru, rv, key=str)] = min(ru, rv, key=str)
     return {j: find(j) for j in pos}
 
 
@@ -93,7 +109,7 @@ def place_truth(net_path, link_m):
             nb[u].add(v)
             nb[v].add(u)
             links.append((u, v, e.getLength(), [p[:2] for p in e.getShape()]))
-    place = group(pos, nb, [(u, v) for u, v, _, _ in links], link_m, lambda j: True)
+    place = group(pos, nb, link_m, lambda j: True)
     members, pnb, shapes = defaultdict(list), defaultdict(set), defaultdict(list)
     for j in sorted(pos):
         members[place[j]].append(j)
@@ -108,13 +124,12 @@ def place_truth(net_path, link_m):
 
 def graph_places(g, nodes, end_nodes, link_m):
     """The graph's nodes grouped by the truth's rule (dead ends stay alone): node -> place."""
-    nb, links = defaultdict(set), []
+    nb = defaultdict(set)
     for e in g["edges"]:
         if e["u"] != e["v"]:
             nb[e["u"]].add(e["v"])
             nb[e["v"]].add(e["u"])
-            links.append((e["u"], e["v"]))
-    return group(nodes, nb, links, link_m, lambda n: n not in end_nodes)
+    return group(nodes, nb, link_m, lambda n: n not in end_nodes)
 
 
 def chains_of(pnb, truth):

@@ -108,19 +108,38 @@ PlaceGraph singlePlaces(const LinkedVertices& lv) {
   return contract(lv, sets);
 }
 
-/// Places, one rule for the net and the graph: two vertices with >= 3 distinct neighbours
-/// (intersections) that a link joins and whose positions lie at most link_max_m apart are one
-/// place (the carriageway crossings of a divided road, the corners of a junction box, a
-/// staggered pair of T junctions). The distance is taken between the vertices themselves because
+/// The vertex reached from v by leaving through its neighbour w and passing on through vertices
+/// with exactly 2 neighbours (a street's junctions that are no intersections).
+std::size_t chainEnd(const std::vector<std::set<std::size_t>>& nb, std::size_t v, std::size_t w) {
+  std::size_t prev = v, cur = w;
+  for (std::size_t steps = 0; nb[cur].size() == 2 && steps < nb.size(); ++steps) {
+    const std::size_t a = *nb[cur].begin(), b = *nb[cur].rbegin();
+    const std::size_t next = a == prev ? b : a;
+    prev = cur;
+    cur = next;
+  }
+  return cur;
+}
+
+/// Places, one rule for the net and the graph: two intersections (>= 3 distinct neighbours)
+/// joined by a street (a link, or a chain of links through vertices with 2 neighbours, as SUMO
+/// splits a street where its shape or lanes change) whose ends lie at most link_max_m apart are
+/// one place (the carriageway crossings of a divided road, the corners of a junction box, a
+/// staggered pair of T junctions). The distance is taken between the two intersections because
 /// that is what both sides have: a SUMO edge's length runs between the junctions' shapes, a
 /// graph edge's from node to node. `groupable` false keeps a vertex a place of its own.
 PlaceGraph groupPlaces(const LinkedVertices& lv, double link_max_m,
                        const std::vector<char>& groupable) {
   UnionFind sets(lv.nb.size());
   const auto joins = [&](std::size_t v) { return groupable[v] && lv.nb[v].size() >= 3; };
-  for (const auto& [u, v] : lv.links)
-    if (joins(u) && joins(v) && (lv.pos[u] - lv.pos[v]).norm() <= link_max_m)
-      sets.unite(static_cast<int>(u), static_cast<int>(v));
+  for (std::size_t v = 0; v < lv.nb.size(); ++v) {
+    if (!joins(v)) continue;
+    for (std::size_t w : lv.nb[v]) {
+      const std::size_t end = chainEnd(lv.nb, v, w);
+      if (end != v && joins(end) && (lv.pos[v] - lv.pos[end]).norm() <= link_max_m)
+        sets.unite(static_cast<int>(v), static_cast<int>(end));
+    }
+  }
   return contract(lv, sets);
 }
 
@@ -172,13 +191,7 @@ std::set<Chain> trueChains(const PlaceGraph& t, const std::vector<std::size_t>& 
   std::set<Chain> chains;
   for (std::size_t v : truth)
     for (std::size_t w : t.nb[v]) {
-      std::size_t prev = v, cur = w;
-      for (std::size_t steps = 0; t.nb[cur].size() == 2 && steps < t.nb.size(); ++steps) {
-        const std::size_t a = *t.nb[cur].begin(), b = *t.nb[cur].rbegin();
-        const std::size_t next = a == prev ? b : a;
-        prev = cur;
-        cur = next;
-      }
+      const std::size_t cur = chainEnd(t.nb, v, w);
       if (t.nb[cur].size() >= 3 && cur != v) chains.insert({std::min(v, cur), std::max(v, cur)});
     }
   return chains;

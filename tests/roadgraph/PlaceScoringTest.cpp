@@ -47,12 +47,20 @@ void addEdge(SumoNet& net, const std::string& from, const std::string& to, const
 
 Point3 at(const SumoNet& net, const std::string& id) { return net.findJunction(id)->pos; }
 
-SumoNet staggeredNet() {
+/// With `split`, SUMO splits the A - B street at a junction M (12, 0) where its lanes change:
+/// M has two neighbours and is no intersection.
+SumoNet staggeredNet(bool split = false) {
   SumoNet net;
   for (const auto& [id, x, y] : std::vector<std::tuple<std::string, double, double>>{
            {"P", -200, 0}, {"A", 0, 0}, {"B", 24, 0}, {"E", 224, 0}, {"N", 0, 200}, {"S", 24, -200}})
     addJunction(net, id, x, y);
-  addEdge(net, "A", "B", {Point3(6, 0, 0), Point3(18, 0, 0)});
+  if (split) {
+    addJunction(net, "M", 12, 0);
+    addEdge(net, "A", "M", {Point3(6, 0, 0), Point3(12, 0, 0)});
+    addEdge(net, "M", "B", {Point3(12, 0, 0), Point3(18, 0, 0)});
+  } else {
+    addEdge(net, "A", "B", {Point3(6, 0, 0), Point3(18, 0, 0)});
+  }
   for (const auto& [u, v] : std::vector<std::pair<std::string, std::string>>{
            {"P", "A"}, {"B", "E"}, {"A", "N"}, {"B", "S"}, {"P", "N"}, {"N", "E"}, {"E", "S"},
            {"S", "P"}})
@@ -126,6 +134,18 @@ TEST(PlaceScoring, PairsFartherApartThanTheLinkMaximumStayTwoPlacesOnBothSides) 
   EXPECT_EQ(v.matched_nodes, 6u);
   EXPECT_EQ(v.true_chains, 9u);
   EXPECT_EQ(v.matched_streets, 9u);
+}
+
+// The pair is one place when SUMO splits the street between them too: the rule follows a street
+// through junctions that are no intersections, as a graph street spans them.
+TEST(PlaceScoring, AStreetSplitBetweenThePairStillJoinsIt) {
+  const auto v = validateAgainstPlaces(staggeredGraph(), {}, staggeredNet(true), SumoMatchConfig{});
+  EXPECT_EQ(v.true_intersections, 5u);
+  EXPECT_EQ(v.detected_nodes, 5u);
+  EXPECT_EQ(v.matched_nodes, 5u);
+  EXPECT_EQ(v.node_junction[1], "A+B");
+  EXPECT_EQ(v.true_chains, 8u);
+  EXPECT_EQ(v.matched_streets, 8u);
 }
 
 // A node that no junction lies near (F at (-100, 0) on the street P - A, with a stub to a dead

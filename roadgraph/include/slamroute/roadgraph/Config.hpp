@@ -228,10 +228,10 @@ struct SumoMatchConfig {
   double stray_min_length_m = 20.0;  ///< shorter end edges (junction complexes) are kept [m]
   bool turns_from_net = true;        ///< turn permissions of the graph from the net's connections
   double turn_max_detour_m = 60.0;   ///< SUMO edges allowed between two graph edges at a turn [m]
-  /// Place-level validation: intersections joined by a link whose ends lie this close are one
-  /// place, the net's junctions and the graph's nodes alike [m]. 38 m: on Berlin-Adlershof and
-  /// Braunschweig the places are then those of SUMO edges of at most 25 m between the junctions'
-  /// shapes (centres 10-37 m apart).
+  /// Place-level validation: intersections joined by a street whose ends lie this close are one
+  /// place, the net's junctions and the graph's nodes alike [m]. 38 m: the junctions that SUMO
+  /// joins by an edge of at most 25 m between their shapes lie 10-37 m apart (centre to centre)
+  /// on Berlin-Adlershof and Braunschweig.
   double place_link_max_m = 38.0;
 };
 template <class V>
@@ -248,7 +248,7 @@ void visitFields(V& v, SumoMatchConfig& c) {
   v.field("turn_max_detour_m", c.turn_max_detour_m,
           "SUMO edges allowed between two graph edges at a turn [m]");
   v.field("place_link_max_m", c.place_link_max_m,
-          "place-level validation: intersections (net and graph alike) joined by a link whose "
+          "place-level validation: intersections (net and graph alike) joined by a street whose "
           "ends lie this close are one place (divided roads, junction boxes) [m]");
 }
 

@@ -35,9 +35,9 @@ ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<ch
                                     const SumoNet& net, const SumoMatchConfig& cfg);
 /// The same scores against the net's places, where a divided road is one street with two
 /// directions. One rule groups the net's junctions and the graph's intersection nodes into places:
-/// two intersections (>= 3 distinct neighbours) joined by a link whose ends lie at most
-/// cfg.place_link_max_m apart are one place (the carriageway crossings of a divided road, the
-/// corners of a junction box, staggered T junctions). Both graphs are contracted onto their
+/// two intersections (>= 3 distinct neighbours) joined by a street (through junctions with 2
+/// neighbours) whose ends lie at most cfg.place_link_max_m apart are one place (the carriageway
+/// crossings of a divided road, the corners of a junction box, staggered T junctions). Both graphs are contracted onto their
 /// places; true intersections are places with >= 3 neighbouring places and chains run through
 /// places with 2. A detected place matches a true one within cfg.match_radius_m (closest two
 /// vertices); a street between two detected places matches when they are matched to the ends of
