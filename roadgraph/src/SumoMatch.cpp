@@ -66,11 +66,11 @@ LinkedVertices nodeGraph(const RoadGraph& graph) {
 /// Vertices grouped into places and the graph contracted onto them: what a graph is scored
 /// against (the net's junctions) and what is scored (the graph's nodes).
 struct PlaceGraph {
-  std::vector<std::size_t> place_of;          ///< per vertex
-  std::vector<std::string> id;                ///< per place, its vertices' ids joined by '+'
-  std::vector<std::vector<std::size_t>> members;
-  std::vector<std::vector<Point3>> points;    ///< per place, its vertices' positions
-  std::vector<std::set<std::size_t>> nb;      ///< per place, the neighbouring places
+  std::vector<std::size_t> place_of;              ///< per vertex
+  std::vector<std::string> id;                    ///< per place, its vertices' ids joined by '+'
+  std::vector<std::vector<std::size_t>> members;  ///< per place, its vertices
+  std::vector<std::vector<Point3>> points;        ///< per place, its vertices' positions
+  std::vector<std::set<std::size_t>> nb;          ///< per place, the neighbouring places
 };
 
 PlaceGraph contract(const LinkedVertices& lv, UnionFind& sets) {
@@ -197,8 +197,9 @@ std::set<Chain> trueChains(const PlaceGraph& t, const std::vector<std::size_t>& 
   return chains;
 }
 
-void scoreNodes(const PlaceMatch& m, const PlaceGraph& det, const std::vector<std::size_t>& detected,
-                const PlaceGraph& t, const std::vector<std::size_t>& truth, ValidationResult& r) {
+void scoreNodes(const PlaceMatch& m, const PlaceGraph& det,
+                const std::vector<std::size_t>& detected, const PlaceGraph& t,
+                const std::vector<std::size_t>& truth, ValidationResult& r) {
   for (std::size_t d : detected) r.matched_nodes += m.det_to_true[d] >= 0 ? 1 : 0;
   r.true_intersections = truth.size();
   r.detected_nodes = detected.size();

@@ -51,9 +51,12 @@ Point3 at(const SumoNet& net, const std::string& id) { return net.findJunction(i
 /// M has two neighbours and is no intersection.
 SumoNet staggeredNet(bool split = false) {
   SumoNet net;
-  for (const auto& [id, x, y] : std::vector<std::tuple<std::string, double, double>>{
-           {"P", -200, 0}, {"A", 0, 0}, {"B", 24, 0}, {"E", 224, 0}, {"N", 0, 200}, {"S", 24, -200}})
-    addJunction(net, id, x, y);
+  addJunction(net, "P", -200, 0);
+  addJunction(net, "A", 0, 0);
+  addJunction(net, "B", 24, 0);
+  addJunction(net, "E", 224, 0);
+  addJunction(net, "N", 0, 200);
+  addJunction(net, "S", 24, -200);
   if (split) {
     addJunction(net, "M", 12, 0);
     addEdge(net, "A", "M", {Point3(6, 0, 0), Point3(12, 0, 0)});
@@ -61,10 +64,10 @@ SumoNet staggeredNet(bool split = false) {
   } else {
     addEdge(net, "A", "B", {Point3(6, 0, 0), Point3(18, 0, 0)});
   }
-  for (const auto& [u, v] : std::vector<std::pair<std::string, std::string>>{
-           {"P", "A"}, {"B", "E"}, {"A", "N"}, {"B", "S"}, {"P", "N"}, {"N", "E"}, {"E", "S"},
-           {"S", "P"}})
+  for (const char* uv : {"PA", "BE", "AN", "BS", "PN", "NE", "ES", "SP"}) {
+    const std::string u(1, uv[0]), v(1, uv[1]);
     addEdge(net, u, v, {at(net, u), at(net, v)});
+  }
   return net;
 }
 
@@ -97,29 +100,29 @@ RoadGraph staggeredGraph() {
                  {{0, 1}, {1, 5}, {5, 3}, {1, 2}, {5, 4}, {0, 2}, {2, 3}, {3, 4}, {4, 0}});
 }
 
+/// Every intersection found by one detected place and every chain by one street, none false.
+void expectAllFound(const ValidationResult& v, std::size_t intersections, std::size_t chains) {
+  EXPECT_EQ(v.true_intersections, intersections);
+  EXPECT_EQ(v.detected_nodes, intersections);
+  EXPECT_EQ(v.matched_nodes, intersections);
+  EXPECT_TRUE(v.false_nodes.empty());
+  EXPECT_EQ(v.true_chains, chains);
+  EXPECT_EQ(v.detected_streets, chains);
+  EXPECT_EQ(v.matched_streets, chains);
+  EXPECT_EQ(v.found_chains, chains);
+}
+
 TEST(PlaceScoring, TwoNodesOfAStaggeredPairAreOneMatchedPlace) {
   const SumoNet net = staggeredNet();
   const RoadGraph g = staggeredGraph();
-  const auto v = validateAgainstPlaces(g, {}, net, SumoMatchConfig{});
-  EXPECT_EQ(v.true_intersections, 5u);
-  EXPECT_EQ(v.detected_nodes, 5u);
-  EXPECT_EQ(v.matched_nodes, 5u);
-  EXPECT_TRUE(v.false_nodes.empty());
-  EXPECT_EQ(v.node_junction[1], "A+B");
-  EXPECT_EQ(v.node_junction[5], "A+B");
   // The street between the two nodes lies inside the place and is not counted; the through
   // street's halves (to P and to E) and the side streets (to N and S) each match a chain.
-  EXPECT_EQ(v.true_chains, 8u);
-  EXPECT_EQ(v.detected_streets, 8u);
-  EXPECT_EQ(v.matched_streets, 8u);
-  EXPECT_EQ(v.found_chains, 8u);
+  const auto v = validateAgainstPlaces(g, {}, net, SumoMatchConfig{});
+  expectAllFound(v, 5, 8);
+  EXPECT_EQ(v.node_junction[1], "A+B");
+  EXPECT_EQ(v.node_junction[5], "A+B");
   // The same graph at junction level: each node is its T junction, the short street its chain.
-  const auto j = validateAgainstNet(g, {}, net, SumoMatchConfig{});
-  EXPECT_EQ(j.true_intersections, 6u);
-  EXPECT_EQ(j.matched_nodes, 6u);
-  EXPECT_EQ(j.true_chains, 9u);
-  EXPECT_EQ(j.found_chains, 9u);
-  EXPECT_EQ(j.matched_streets, 9u);
+  expectAllFound(validateAgainstNet(g, {}, net, SumoMatchConfig{}), 6, 9);
 }
 
 // The rule is the same on both sides: with place_link_max_m below both gaps (24 m between the
@@ -128,24 +131,15 @@ TEST(PlaceScoring, TwoNodesOfAStaggeredPairAreOneMatchedPlace) {
 TEST(PlaceScoring, PairsFartherApartThanTheLinkMaximumStayTwoPlacesOnBothSides) {
   SumoMatchConfig cfg;
   cfg.place_link_max_m = 15.0;
-  const auto v = validateAgainstPlaces(staggeredGraph(), {}, staggeredNet(), cfg);
-  EXPECT_EQ(v.true_intersections, 6u);
-  EXPECT_EQ(v.detected_nodes, 6u);
-  EXPECT_EQ(v.matched_nodes, 6u);
-  EXPECT_EQ(v.true_chains, 9u);
-  EXPECT_EQ(v.matched_streets, 9u);
+  expectAllFound(validateAgainstPlaces(staggeredGraph(), {}, staggeredNet(), cfg), 6, 9);
 }
 
 // The pair is one place when SUMO splits the street between them too: the rule follows a street
 // through junctions that are no intersections, as a graph street spans them.
 TEST(PlaceScoring, AStreetSplitBetweenThePairStillJoinsIt) {
   const auto v = validateAgainstPlaces(staggeredGraph(), {}, staggeredNet(true), SumoMatchConfig{});
-  EXPECT_EQ(v.true_intersections, 5u);
-  EXPECT_EQ(v.detected_nodes, 5u);
-  EXPECT_EQ(v.matched_nodes, 5u);
+  expectAllFound(v, 5, 8);
   EXPECT_EQ(v.node_junction[1], "A+B");
-  EXPECT_EQ(v.true_chains, 8u);
-  EXPECT_EQ(v.matched_streets, 8u);
 }
 
 // A node that no junction lies near (F at (-100, 0) on the street P - A, with a stub to a dead

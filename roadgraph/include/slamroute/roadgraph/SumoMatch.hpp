@@ -37,13 +37,13 @@ ValidationResult validateAgainstNet(const RoadGraph& graph, const std::vector<ch
 /// directions. One rule groups the net's junctions and the graph's intersection nodes into places:
 /// two intersections (>= 3 distinct neighbours) joined by a street (through junctions with 2
 /// neighbours) whose ends lie at most cfg.place_link_max_m apart are one place (the carriageway
-/// crossings of a divided road, the corners of a junction box, staggered T junctions). Both graphs are contracted onto their
-/// places; true intersections are places with >= 3 neighbouring places and chains run through
-/// places with 2. A detected place matches a true one within cfg.match_radius_m (closest two
-/// vertices); a street between two detected places matches when they are matched to the ends of
-/// a chain, and a street inside one place is not counted. detected_nodes and matched_nodes count
-/// places, false_nodes lists every node of an unmatched place, node_junction names the matched
-/// place's junctions joined by '+'.
+/// crossings of a divided road, the corners of a junction box, staggered T junctions). Both graphs
+/// are contracted onto their places; true intersections are places with >= 3 neighbouring places
+/// and chains run through places with 2. A detected place matches a true one within
+/// cfg.match_radius_m (closest two vertices); a street between two detected places matches when
+/// they are matched to the ends of a chain, and a street inside one place is not counted.
+/// detected_nodes and matched_nodes count places, false_nodes lists every node of an unmatched
+/// place, node_junction names the matched place's junctions joined by '+'.
 ValidationResult validateAgainstPlaces(const RoadGraph& graph, const std::vector<char>& node_is_end,
                                        const SumoNet& net, const SumoMatchConfig& cfg);
 
