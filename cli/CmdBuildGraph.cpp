@@ -45,7 +45,8 @@ void registerBuildGraph(CLI::App& app, Context& ctx) {
     const auto& st = res.built.stats;
     std::cout << "graph:          " << o->out << "\n"
               << "nodes:          " << res.built.graph.nodes.size() << " (" << st.intersections
-              << " intersections, " << st.dead_ends << " dead ends)\n"
+              << " intersections, " << st.dead_ends << " dead ends, " << st.turning_places
+              << " turning places)\n"
               << "streets:        " << st.streets << " (" << st.one_way_streets << " one-way), "
               << res.built.graph.edges.size() << " directed edges\n"
               << "depth frames:   " << res.weights.scored << " scored, " << res.weights.failed

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "StreetsThroughBends.hpp"
 #include "slamroute/core/AtomicFile.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/core/SumoNet.hpp"
@@ -55,13 +56,15 @@ struct NetMatch {
   std::optional<TurnStats> turns;
 };
 
-/// Validation against the net, SUMO junction per node, SUMO edges per graph edge, turns.
+/// Validation against the net (streets through bends, as the net's chains run), SUMO junction
+/// per node, SUMO edges per graph edge, turns.
 NetMatch matchToNet(BuildOutput& out, const std::filesystem::path& net_path,
                     const SumoMatchConfig& cfg) {
   RoadGraph& g = out.built.graph;
   const SumoNet net = SumoNet::read(net_path);
-  out.validation = validateAgainstNet(g, out.built.node_is_end, net, cfg);
-  out.place_validation = validateAgainstPlaces(g, out.built.node_is_end, net, cfg);
+  const RoadGraph scored = detail::streetsThroughBends(g, out.built.node_is_end);
+  out.validation = validateAgainstNet(scored, out.built.node_is_end, net, cfg);
+  out.place_validation = validateAgainstPlaces(scored, out.built.node_is_end, net, cfg);
   for (std::size_t n = 0; n < g.nodes.size(); ++n)
     g.nodes[n].sumo_junction = out.validation->node_junction[n];
   NetMatch m;
@@ -95,6 +98,7 @@ nlohmann::json statsJson(const GraphBuildStats& st) {
           {"divided_node_pairs", st.divided_node_pairs},
           {"divided_streets", st.divided_streets},
           {"staggered_node_pairs", st.staggered_node_pairs},
+          {"turning_places", st.turning_places},
           {"dropped_fragments", st.dropped_fragments},
           {"seconds", st.seconds}};
 }
@@ -130,10 +134,13 @@ std::string graphMetadata(const BuildInputs& in, const BuildOutput& out,
                          {"traces", in.traces.string()},
                          {"stats", statsJson(out.built.stats)},
                          {"weights", weightsJson(out.weights, in.depth_index)}};
-  std::vector<int> ends;
-  for (std::size_t n = 0; n < out.built.node_is_end.size(); ++n)
-    if (out.built.node_is_end[n]) ends.push_back(static_cast<int>(n));
-  meta["end_nodes"] = ends;
+  std::vector<int> ends, turning;
+  for (std::size_t n = 0; n < out.built.node_is_end.size(); ++n) {
+    if (out.built.node_is_end[n] != kIntersection) ends.push_back(static_cast<int>(n));
+    if (out.built.node_is_end[n] == kTurningPlace) turning.push_back(static_cast<int>(n));
+  }
+  meta["end_nodes"] = ends;  // every node that is not an intersection
+  meta["turning_places"] = turning;
   meta["roundabouts"] = roundaboutsJson(out.built.roundabouts);
   if (out.validation && net) {
     const auto& turns = net->turns;

@@ -229,7 +229,8 @@ std::size_t pairCarriageways(RoadGraph& g, const DividedRoadConfig& cfg) {
 void recount(const RoadGraph& g, const std::vector<char>& node_is_end, GraphBuildStats& st) {
   st.intersections =
       static_cast<std::size_t>(std::count(node_is_end.begin(), node_is_end.end(), 0));
-  st.dead_ends = node_is_end.size() - st.intersections;
+  st.dead_ends =
+      static_cast<std::size_t>(std::count(node_is_end.begin(), node_is_end.end(), kDeadEnd));
   const std::vector<int> per_street = edgesPerStreet(g);
   st.streets = st.one_way_streets = 0;
   for (const int k : per_street) {

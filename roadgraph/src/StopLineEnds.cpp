@@ -73,31 +73,6 @@ std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::siz
   return best;
 }
 
-/// Splits street k at arc position `arc` along its centreline into u -> node and node -> v (the
-/// second part appended); its points go to the part they lie along.
-void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int node,
-                 const std::vector<Point3>& sp) {
-  Street tail = streets[k];
-  Street& head = streets[k];
-  const Polyline c = head.centre;
-  head.centre.clear();
-  tail.centre.clear();
-  double s = 0.0;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    if (i > 0) s += (c[i] - c[i - 1]).norm();
-    (s < arc ? head.centre : tail.centre).push_back(c[i]);
-  }
-  const std::vector<int> members = head.members;
-  head.members.clear();
-  tail.members.clear();
-  for (int i : members)
-    (arcPosition(c, sp[static_cast<std::size_t>(i)]) < arc ? head.members : tail.members)
-        .push_back(i);
-  head.v = node;
-  tail.u = node;
-  streets.push_back(std::move(tail));
-}
-
 /// Streets ending at node n.
 int degreeOf(const std::vector<Street>& streets, int n) {
   int d = 0;

@@ -14,6 +14,22 @@
 
 namespace slamroute::roadgraph::detail {
 
+void forEachRun(const Traces& traces, const std::vector<std::size_t>& order,
+                const std::vector<int>& street_of_point, double max_gap_s,
+                const std::function<void(int, std::size_t, std::size_t)>& fn) {
+  std::size_t run_first = 0;
+  for (std::size_t k = 1; k <= order.size(); ++k) {
+    const std::size_t prev = order[k - 1];
+    const bool breaks = k == order.size() ||
+                        traces.points[order[k]].vehicle != traces.points[prev].vehicle ||
+                        traces.points[order[k]].t - traces.points[prev].t > max_gap_s ||
+                        street_of_point[order[k]] != street_of_point[prev];
+    if (!breaks) continue;
+    if (street_of_point[prev] >= 0 && run_first < k - 1) fn(street_of_point[prev], run_first, k - 1);
+    run_first = k;
+  }
+}
+
 TravelCounts countDirections(const Traces& traces, const std::vector<std::size_t>& order,
                              const std::vector<int>& street_of_point,
                              const std::vector<Street>& streets, const std::vector<Polyline>& polys,
@@ -40,7 +56,6 @@ TravelCounts countDirections(const Traces& traces, const std::vector<std::size_t
   // A run counts in each direction it progresses along the street by `need`: a vehicle that
   // drives into a dead end and turns round there travels it both ways in one run.
   auto closeRun = [&](int s, std::size_t k_first, std::size_t k_last) {
-    if (s < 0 || k_first == k_last) return;
     const auto& pl = polys[static_cast<std::size_t>(s)];
     const double len = polylineLength(pl);
     const double need = std::min(ec.min_run_m, 0.4 * len);
@@ -55,17 +70,7 @@ TravelCounts countDirections(const Traces& traces, const std::vector<std::size_t
     if (rise > need) ++fwd[static_cast<std::size_t>(s)];
     if (fall > need) ++bwd[static_cast<std::size_t>(s)];
   };
-  std::size_t run_first = 0;
-  for (std::size_t k = 1; k <= order.size(); ++k) {
-    const std::size_t prev = order[k - 1];
-    const bool breaks = k == order.size() ||
-                        traces.points[order[k]].vehicle != traces.points[prev].vehicle ||
-                        traces.points[order[k]].t - traces.points[prev].t > ec.max_gap_s ||
-                        street_of_point[order[k]] != street_of_point[prev];
-    if (!breaks) continue;
-    closeRun(street_of_point[prev], run_first, k - 1);
-    run_first = k;
-  }
+  forEachRun(traces, order, street_of_point, ec.max_gap_s, closeRun);
   return {std::move(fwd), std::move(bwd)};
 }
 

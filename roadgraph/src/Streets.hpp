@@ -2,6 +2,7 @@
 // Internal to roadgraph: paper §3.1 steps 2-3, streets from the trace points left after removing
 // the nodes and their neighbourhoods. GraphBuilder.cpp runs the steps; each file documents its
 // choices.
+#include <functional>
 #include <vector>
 
 #include "PointGrid.hpp"
@@ -83,6 +84,25 @@ void joinStopLineEnds(GraphNodes& gn, std::vector<Street>& streets, const Street
 /// (ShortLinks.cpp); appended to `streets` with straight node-to-node polylines in `polys`.
 void addShortLinks(const Passages& passages, const std::vector<Point3>& nodes, const EdgeConfig& ec,
                    std::vector<Street>& streets, std::vector<Polyline>& polys, GraphBuildStats& st);
+
+/// Calls fn(street, first, last) for every run: a vehicle's consecutive trace points (positions
+/// first < last in `order`) on one street, with no time gap > max_gap_s (StreetDirections.cpp).
+void forEachRun(const Traces& traces, const std::vector<std::size_t>& order,
+                const std::vector<int>& street_of_point, double max_gap_s,
+                const std::function<void(int, std::size_t, std::size_t)>& fn);
+
+/// Splits street k at arc position `arc` along its centreline into u -> node (kept at k) and
+/// node -> v (appended); its points go to the part they lie along (StreetSplit.cpp).
+void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int node,
+                 const std::vector<Point3>& sp);
+
+/// Where vehicles turn round part-way along a street (a bend where a two-way street meets a
+/// one-way one), a node of kind kTurningPlace splits the street (TurningPlaces.cpp).
+/// `street_of_point`: per trace point, its street (-1: none).
+void splitAtTurningPlaces(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
+                          const Traces& traces, const std::vector<std::size_t>& order,
+                          const std::vector<int>& street_of_point, const EdgeConfig& ec,
+                          GraphBuildStats& st);
 
 /// Per street, the runs of travel seen u -> v (fwd) and v -> u (bwd) (StreetDirections.cpp).
 struct TravelCounts {

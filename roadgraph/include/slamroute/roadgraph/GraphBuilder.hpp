@@ -24,12 +24,20 @@ struct GraphBuildStats {
   std::size_t divided_node_pairs = 0;    ///< carriageway nodes of divided roads merged (pairs)
   std::size_t divided_streets = 0;       ///< carriageway pairs made one street
   std::size_t staggered_node_pairs = 0;  ///< T junctions on opposite sides merged (pairs)
+  std::size_t turning_places = 0;  ///< streets split where vehicles turn round part-way along
   double seconds = 0.0;
+};
+
+/// What a graph node stands for; any kind but kIntersection is not an intersection.
+enum NodeKind : char {
+  kIntersection = 0,
+  kDeadEnd = 1,       ///< a street's end, or where two met (a corner no vehicle drove round)
+  kTurningPlace = 2,  ///< a bend part-way along a street where vehicles turn round
 };
 
 struct GraphBuildResult {
   RoadGraph graph;                ///< weights all 1 until assignDepthWeights
-  std::vector<char> node_is_end;  ///< per graph node: a dead-end node (not an intersection)
+  std::vector<char> node_is_end;  ///< per graph node, its NodeKind (non-zero: not an intersection)
   GraphBuildStats stats;
   std::vector<Roundabout> roundabouts;  ///< found by detectRoundabouts, junctions among the nodes
 };

@@ -1,0 +1,30 @@
+// A street split in two at a node placed part-way along it: a T junction whose side street ends
+// at the stop line (StopLineEnds.cpp), a place where vehicles turn round (TurningPlaces.cpp).
+#include "Streets.hpp"
+
+namespace slamroute::roadgraph::detail {
+
+void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int node,
+                 const std::vector<Point3>& sp) {
+  Street tail = streets[k];
+  Street& head = streets[k];
+  const Polyline c = head.centre;
+  head.centre.clear();
+  tail.centre.clear();
+  double s = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (i > 0) s += (c[i] - c[i - 1]).norm();
+    (s < arc ? head.centre : tail.centre).push_back(c[i]);
+  }
+  const std::vector<int> members = head.members;
+  head.members.clear();
+  tail.members.clear();
+  for (int i : members)
+    (arcPosition(c, sp[static_cast<std::size_t>(i)]) < arc ? head.members : tail.members)
+        .push_back(i);
+  head.v = node;
+  tail.u = node;
+  streets.push_back(std::move(tail));
+}
+
+}  // namespace slamroute::roadgraph::detail
