@@ -4,7 +4,9 @@
 # the SUMO edges as driven, length in SUMO and its ratio to postman's, ATE RMSE and its ratio.
 #   bench/coverage_ate.sh OUT_DIR [NET] [SEEDS]
 # NET defaults to the shipped city, SEEDS to "42 1 2 3 4"; PLANNERS (env) to postman,aco-ga,
-# SLAMROUTE (env) to build/cli/slamroute (a copy keeps a long sweep on one build).
+# SLAMROUTE (env) to build/cli/slamroute (a copy keeps a long sweep on one build); PLANS_ONLY=1
+# (env) stops each run once its routes are planned (directed coverage and length as planned, no
+# SLAM: `run --plans-only`).
 # A seed whose run finished is kept (`run --resume`), so an interrupted sweep continues.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,12 +15,14 @@ net="${2:-networks/default_city/default_city.net.xml}"
 seeds="${3:-42 1 2 3 4}"
 planners="${PLANNERS:-postman,aco-ga}"
 bin="${SLAMROUTE:-build/cli/slamroute}"
+only=""
+if [ "${PLANS_ONLY:-0}" = 1 ]; then only="--plans-only"; fi
 export SUMO_HOME="${SUMO_HOME:-/usr/share/sumo}"
 mkdir -p "$out"
 for s in $seeds; do
   start=$(date +%s)
   nice -n 10 "$bin" --seed "$s" run --net "$net" --out "$out/seed_$s" \
-    --planners "$planners" --status-every 0 --resume >"$out/seed_$s.log" 2>&1
+    --planners "$planners" --status-every 0 --resume $only >"$out/seed_$s.log" 2>&1
   echo "seed $s: $(( $(date +%s) - start )) s" >>"$out/times.txt"
 done
 python3 bench/coverage_ate_table.py "$out" $seeds

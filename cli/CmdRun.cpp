@@ -39,6 +39,7 @@ struct RunOpts {
   int jobs = 2;
   int slam_jobs = 0;
   bool save_scans = false, resume = false;
+  bool plans_only = false;  ///< stop once the routes are planned and made drivable
   double status_every = 60.0;
 };
 
@@ -163,6 +164,11 @@ void runPipeline(Context& ctx, const RunOpts& o) {
   logInfo("[3/6] planning: " + o.planners + fleetNote(o));
   pipeline::planRoutes(stages, child, run, allPlanRequests(planners, o), o.jobs);
   repairRoutes(ctx, net, run, planners, o);
+  if (o.plans_only) {
+    logInfo("--plans-only: routes in " + (run.out / "routes").string() +
+            "; no drive, SLAM or report");
+    return;
+  }
   logInfo("[4/6] driving each route in SUMO with traffic");
   driveAll(stages, child, run, net_abs, planners, o);
   logInfo("[5/6] LiDAR SLAM on each drive");
@@ -223,6 +229,9 @@ void registerRun(CLI::App& app, Context& ctx) {
                   "seconds between progress lines of the running steps (0 = only start/finish)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 86400.0));
+  sub->add_flag("--plans-only", o->plans_only,
+                "stop once the routes are planned and made drivable (survey, graph and routes with "
+                "their directed coverage; no drive, SLAM or report)");
   sub->add_flag("--resume", o->resume,
                 "keep the steps already done in --out from the same seed, config, net and inputs "
                 "(an interrupted run; or delete eval/ to redo only the SLAM); the rest runs again");

@@ -24,6 +24,7 @@ NETS = {
     "plus": "test/plus.net.xml",
     "grid3x3": "test/grid3x3.net.xml",
     "stub": "test/stub.net.xml",
+    "turning_place": "test/turning_place.net.xml",
     "ring": "test/ring.net.xml",
     "overpass": "test/overpass.net.xml",
     "divided_avenue": "test/divided_avenue.net.xml",

@@ -196,6 +196,25 @@ def stub_net():
     return n
 
 
+def turning_place_net():
+    """A block A (150, 150), B (350, 150), C (350, 350), D (150, 350) whose corner B joins the
+    two-way street A-B to the one-way street B -> C: the direction B -> A can only be entered by
+    turning round at B (a turning place). A, C and D are T-junctions with two-way dead-end arms
+    of 150 m to W (0, 150), E (500, 350) and N (150, 500); the other streets are two-way.
+    7 junctions, 13 passenger edges."""
+    n = Net("turning_place", "test/turning_place.net.xml")
+    for jid, (x, y) in {"A": (150, 150), "C": (350, 350), "D": (150, 350)}.items():
+        n.node(jid, x, y, "priority")
+    n.node("B", 350, 150)
+    for aid, (x, y) in {"W": (0, 150), "E": (500, 350), "N": (150, 500)}.items():
+        n.node(aid, x, y)
+    n.two_way("A", "B")
+    n.edge("B_C", "B", "C")
+    for a, b in (("C", "D"), ("A", "D"), ("A", "W"), ("C", "E"), ("D", "N")):
+        n.two_way(a, b)
+    return n
+
+
 DIVIDED_GRID = [100, 300, 500]  # m: rows (y) and columns (x) of the divided-avenue grids
 
 
@@ -474,6 +493,7 @@ NETS = {
     "plus": plus_net,
     "grid3x3": grid3x3_net,
     "stub": stub_net,
+    "turning_place": turning_place_net,
     "ring": ring_net,
     "overpass": overpass_net,
     "divided_avenue": divided_avenue_net,

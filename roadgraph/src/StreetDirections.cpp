@@ -25,7 +25,8 @@ void forEachRun(const Traces& traces, const std::vector<std::size_t>& order,
                         traces.points[order[k]].t - traces.points[prev].t > max_gap_s ||
                         street_of_point[order[k]] != street_of_point[prev];
     if (!breaks) continue;
-    if (street_of_point[prev] >= 0 && run_first < k - 1) fn(street_of_point[prev], run_first, k - 1);
+    if (street_of_point[prev] >= 0 && run_first < k - 1)
+      fn(street_of_point[prev], run_first, k - 1);
     run_first = k;
   }
 }

@@ -6,9 +6,11 @@
 // Edges alone are not enough for the graph built from the traces: at a junction with two arms
 // (a bend or corner) a cover may reach each outgoing edge by a U-turn, so no trace passes
 // round the bend, the traces on either side end there and the street is cut in two dead ends.
-// Except where a direction can only turn round (a U-turn is its only way on or off): a street
-// of the road graph cannot turn round part-way, so there the graph needs a node at the corner,
-// which the traces ending on either side give it.
+// Nor is starting a route on an edge: its trace begins beside the junction the edge leaves, shows
+// no arm there, and when no other vehicle drives into that edge the graph starts it at a dead end
+// beside the junction. So an edge counts as covered once a route enters it through its junction
+// (or when nothing leads to it).
+#include <algorithm>
 #include <limits>
 #include <queue>
 #include <set>
@@ -55,37 +57,14 @@ bool isUTurn(const DriveGraph& g, std::size_t e, std::size_t next) {
   return g.edges[next].v == g.edges[e].u;
 }
 
-/// Vertices where some direction can only turn round: an edge in whose every continuation is a
-/// U-turn, or an edge out that only a U-turn leads onto (a two-way street meeting a one-way one).
-std::vector<bool> turningPlaces(const DriveGraph& g) {
-  std::vector<bool> place(g.numVertices(), false);
-  std::vector<bool> entered(g.numEdges(), false), entered_not_by_u_turn(g.numEdges(), false);
-  for (std::size_t e = 0; e < g.numEdges(); ++e) {
-    bool only_u_turns = !g.allowed_next[e].empty();
-    for (std::size_t next : g.allowed_next[e]) {
-      entered[next] = true;
-      if (isUTurn(g, e, next)) continue;
-      only_u_turns = false;
-      entered_not_by_u_turn[next] = true;
-    }
-    if (only_u_turns) place[g.edges[e].v] = true;
-  }
-  for (std::size_t e = 0; e < g.numEdges(); ++e)
-    if (entered[e] && !entered_not_by_u_turn[e]) place[g.edges[e].u] = true;
-  return place;
-}
-
 /// Nothing driven yet; the turns to drive are those round a bend: through a two-arm junction,
-/// not a U-turn. Not at a turning place: there the road graph needs the traces on either side to
-/// end (its node is where they meet), as a street through the bend cannot hold the U-turn.
+/// not a U-turn.
 CoverState initialState(const DriveGraph& g) {
   const auto two_arm = twoArmVertices(g);
-  const auto turning = turningPlaces(g);
   CoverState s{std::vector<bool>(g.numEdges(), false), {}};
   s.turn_done.resize(g.numEdges());
   for (std::size_t e = 0; e < g.numEdges(); ++e) {
-    const std::size_t at = g.edges[e].v;
-    const bool bend = two_arm[at] && !turning[at];
+    const bool bend = two_arm[g.edges[e].v];
     for (std::size_t next : g.allowed_next[e])
       s.turn_done[e].push_back(!bend || isUTurn(g, e, next));
   }
@@ -140,12 +119,21 @@ std::vector<std::size_t> pathToNearestLeft(const DriveGraph& g, std::size_t from
   return {};
 }
 
+/// Per edge, the edges that lead onto it.
+std::vector<std::vector<std::size_t>> predecessors(const DriveGraph& g) {
+  std::vector<std::vector<std::size_t>> pred(g.numEdges());
+  for (std::size_t e = 0; e < g.numEdges(); ++e)
+    for (std::size_t next : g.allowed_next[e]) pred[next].push_back(e);
+  return pred;
+}
+
 /// Where the next route starts: an edge not yet driven that nothing leads to, else any edge not
 /// yet driven, else an edge with a turn left to drive; n when the cover is complete.
-std::size_t nextStart(const DriveGraph& g, const CoverState& s, const std::vector<bool>& has_pred) {
+std::size_t nextStart(const DriveGraph& g, const CoverState& s,
+                      const std::vector<std::vector<std::size_t>>& pred) {
   const std::size_t n = g.numEdges();
   for (std::size_t e = 0; e < n; ++e)
-    if (!s.edge_done[e] && !has_pred[e]) return e;  // nothing leads here: must start here
+    if (!s.edge_done[e] && pred[e].empty()) return e;  // nothing leads here: must start here
   for (std::size_t e = 0; e < n; ++e)
     if (!s.edge_done[e]) return e;
   for (std::size_t e = 0; e < n; ++e)
@@ -158,17 +146,16 @@ std::size_t nextStart(const DriveGraph& g, const CoverState& s, const std::vecto
 std::vector<std::vector<std::size_t>> coveringRoutes(const DriveGraph& g, double max_length_m) {
   const std::size_t n = g.numEdges();
   CoverState s = initialState(g);
-  std::vector<bool> has_pred(n, false);
-  for (std::size_t e = 0; e < n; ++e)
-    for (std::size_t next : g.allowed_next[e]) has_pred[next] = true;
-
+  const auto pred = predecessors(g);
   std::vector<std::vector<std::size_t>> routes;
-  for (std::size_t start = nextStart(g, s, has_pred); start < n;
-       start = nextStart(g, s, has_pred)) {
-    // A route started for a turn alone drives at least to that turn, however long its edge.
-    bool progressed = !s.edge_done[start];
+  for (std::size_t start = nextStart(g, s, pred); start < n; start = nextStart(g, s, pred)) {
+    // The start edge counts as driven only when nothing leads to it: otherwise a later path
+    // still has to enter it. A route drives at least one path (to a turn, when it started for
+    // one alone, however long its edge).
+    const bool fresh = !s.edge_done[start];
+    if (fresh) s.edge_done[start] = pred[start].empty();
+    bool progressed = fresh && s.edge_done[start];
     std::vector<std::size_t> route{start};
-    s.edge_done[start] = true;
     double len = g.edges[start].length_m;
     while (len < max_length_m || !progressed) {
       const auto path = pathToNearestLeft(g, route.back(), s);
@@ -180,6 +167,7 @@ std::vector<std::vector<std::size_t>> coveringRoutes(const DriveGraph& g, double
       }
       progressed = true;
     }
+    if (!progressed) s.edge_done[start] = true;  // nothing reachable is left to enter it from
     routes.push_back(std::move(route));
   }
   return routes;

@@ -100,22 +100,40 @@ std::set<std::pair<std::string, std::string>> sumoTurnsDriven(const DriveGraph& 
   return turns;
 }
 
-TEST(SurveyRoutes, DefaultCityBendsAreDrivenButNotItsTurningPlaces) {
+TEST(SurveyRoutes, DefaultCityBendsAreDrivenTurningPlacesToo) {
   const DriveGraph g = DriveGraph::fromNet(testNet("default_city/default_city.net.xml"));
   const auto turns = sumoTurnsDriven(g, 2000.0);
-  // The bends of the city's two-arm junctions R0C0, R0C2 and R4C5.
+  // The bends of the city's two-arm junctions R0C0, R0C2 and R4C5, and of R0C1, R0C5 and R4C0,
+  // corners where a two-way street meets a one-way street (turning places: one direction of the
+  // two-way street can only turn round there, and the road graph gives them a node).
   for (const auto& [a, b] :
        std::vector<std::pair<std::string, std::string>>{{"R0C1_R0C0", "R0C0_R1C0"},
                                                         {"R1C0_R0C0", "R0C0_R0C1"},
                                                         {"T2_R0C2", "R0C2_R1C2"},
                                                         {"R1C2_R0C2", "R0C2_T2"},
-                                                        {"R3C5_R4C5", "R4C5_R4C4"}})
+                                                        {"R3C5_R4C5", "R4C5_R4C4"},
+                                                        {"R0C0_R0C1", "R0C1_R1C1"},
+                                                        {"R0C4_R0C5", "R0C5_R2C5"},
+                                                        {"R4C2_R4C0", "R4C0_R3C0"}})
     EXPECT_TRUE(turns.count({a, b})) << a << " -> " << b;
-  // R0C5 and R4C0 are corners where a two-way street meets a one-way street, so one direction of
-  // the two-way street can only turn round there: their bends are left undriven (the cover does
-  // not need them), so the traces on either side end at the corner.
-  EXPECT_FALSE(turns.count({"R0C4_R0C5", "R0C5_R2C5"}));
-  EXPECT_FALSE(turns.count({"R4C2_R4C0", "R4C0_R3C0"}));
+}
+
+TEST(SurveyRoutes, EveryEdgeSomethingLeadsToIsEnteredFromIt) {
+  // A route that started on an edge would leave no trace through the junction it leaves
+  // (R3C3_R2C3 is entered only from R4C3_R3C3, straight on through R3C3).
+  const DriveGraph g = DriveGraph::fromNet(testNet("default_city/default_city.net.xml"));
+  const auto turns = turnsDriven(simulate::coveringRoutes(g, 2000.0));
+  std::set<std::size_t> entered;
+  for (const auto& [a, b] : turns) entered.insert(b);
+  for (std::size_t e = 0; e < g.numEdges(); ++e) {
+    bool has_pred = false;
+    for (std::size_t p = 0; p < g.numEdges(); ++p)
+      for (std::size_t next : g.allowed_next[p]) has_pred = has_pred || next == e;
+    if (has_pred) {
+      EXPECT_TRUE(entered.count(e)) << g.edges[e].sumo_edge;
+    }
+  }
+  EXPECT_TRUE(sumoTurnsDriven(g, 2000.0).count({"R4C3_R3C3", "R3C3_R2C3"}));
 }
 
 }  // namespace
