@@ -6,11 +6,9 @@
 // Edges alone are not enough for the graph built from the traces: at a junction with two arms
 // (a bend or corner) a cover may reach each outgoing edge by a U-turn, so no trace passes
 // round the bend, the traces on either side end there and the street is cut in two dead ends.
-// Nor is starting a route on an edge: its trace begins beside the junction the edge leaves, shows
-// no arm there, and when no other vehicle drives into that edge the graph starts it at a dead end
-// beside the junction. So an edge counts as covered once a route enters it through its junction
-// (or when nothing leads to it).
-#include <algorithm>
+// At a turning place (a corner where a two-way street meets a one-way street, so one direction
+// of the two-way street can only turn round there) too: the road graph gives it a node where
+// the traces turn round.
 #include <limits>
 #include <queue>
 #include <set>
@@ -119,21 +117,12 @@ std::vector<std::size_t> pathToNearestLeft(const DriveGraph& g, std::size_t from
   return {};
 }
 
-/// Per edge, the edges that lead onto it.
-std::vector<std::vector<std::size_t>> predecessors(const DriveGraph& g) {
-  std::vector<std::vector<std::size_t>> pred(g.numEdges());
-  for (std::size_t e = 0; e < g.numEdges(); ++e)
-    for (std::size_t next : g.allowed_next[e]) pred[next].push_back(e);
-  return pred;
-}
-
 /// Where the next route starts: an edge not yet driven that nothing leads to, else any edge not
 /// yet driven, else an edge with a turn left to drive; n when the cover is complete.
-std::size_t nextStart(const DriveGraph& g, const CoverState& s,
-                      const std::vector<std::vector<std::size_t>>& pred) {
+std::size_t nextStart(const DriveGraph& g, const CoverState& s, const std::vector<bool>& has_pred) {
   const std::size_t n = g.numEdges();
   for (std::size_t e = 0; e < n; ++e)
-    if (!s.edge_done[e] && pred[e].empty()) return e;  // nothing leads here: must start here
+    if (!s.edge_done[e] && !has_pred[e]) return e;  // nothing leads here: must start here
   for (std::size_t e = 0; e < n; ++e)
     if (!s.edge_done[e]) return e;
   for (std::size_t e = 0; e < n; ++e)
@@ -146,16 +135,17 @@ std::size_t nextStart(const DriveGraph& g, const CoverState& s,
 std::vector<std::vector<std::size_t>> coveringRoutes(const DriveGraph& g, double max_length_m) {
   const std::size_t n = g.numEdges();
   CoverState s = initialState(g);
-  const auto pred = predecessors(g);
+  std::vector<bool> has_pred(n, false);
+  for (std::size_t e = 0; e < n; ++e)
+    for (std::size_t next : g.allowed_next[e]) has_pred[next] = true;
+
   std::vector<std::vector<std::size_t>> routes;
-  for (std::size_t start = nextStart(g, s, pred); start < n; start = nextStart(g, s, pred)) {
-    // The start edge counts as driven only when nothing leads to it: otherwise a later path
-    // still has to enter it. A route drives at least one path (to a turn, when it started for
-    // one alone, however long its edge).
-    const bool fresh = !s.edge_done[start];
-    if (fresh) s.edge_done[start] = pred[start].empty();
-    bool progressed = fresh && s.edge_done[start];
+  for (std::size_t start = nextStart(g, s, has_pred); start < n;
+       start = nextStart(g, s, has_pred)) {
+    // A route started for a turn alone drives at least to that turn, however long its edge.
+    bool progressed = !s.edge_done[start];
     std::vector<std::size_t> route{start};
+    s.edge_done[start] = true;
     double len = g.edges[start].length_m;
     while (len < max_length_m || !progressed) {
       const auto path = pathToNearestLeft(g, route.back(), s);
@@ -167,7 +157,6 @@ std::vector<std::vector<std::size_t>> coveringRoutes(const DriveGraph& g, double
       }
       progressed = true;
     }
-    if (!progressed) s.edge_done[start] = true;  // nothing reachable is left to enter it from
     routes.push_back(std::move(route));
   }
   return routes;

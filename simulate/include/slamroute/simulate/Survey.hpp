@@ -46,11 +46,11 @@ struct SurveyResult {
 
 /// Routes (edge indices of `g`, each consecutive pair an allowed turn) that together contain as
 /// many edges as reachable and every allowed turn round a bend (through a junction with two
-/// arms, one arm to the other, not a U-turn): greedy — from the current edge go to the nearest
-/// edge or such turn not yet driven (Dijkstra over the turn graph), until a route is
-/// max_length_m long, then start a new route at an uncovered edge (edges nothing leads to
-/// first), entering it from an edge that leads onto it, or, once every edge is driven, on an
-/// edge whose bend is left.
+/// arms, one arm to the other, not a U-turn), turning places included: greedy — from the
+/// current edge go to the nearest edge or such turn not yet driven (Dijkstra over the turn
+/// graph), until a route is max_length_m long, then start a new route on an
+/// uncovered edge (edges nothing leads to first), or, once every edge is driven, on an edge
+/// whose bend is left.
 std::vector<std::vector<std::size_t>> coveringRoutes(const DriveGraph& g, double max_length_m);
 
 /// Runs the survey (reads the net, simulates, renders depth frames, writes out_dir).
