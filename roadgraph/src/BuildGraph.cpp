@@ -56,8 +56,8 @@ struct NetMatch {
   std::optional<TurnStats> turns;
 };
 
-/// Validation against the net (streets through bends, as the net's chains run), SUMO junction
-/// per node, SUMO edges per graph edge, turns.
+/// Validation against the net (streets joined through turning places, as the net's chains run),
+/// SUMO junction per node, SUMO edges per graph edge, turns.
 NetMatch matchToNet(BuildOutput& out, const std::filesystem::path& net_path,
                     const SumoMatchConfig& cfg) {
   RoadGraph& g = out.built.graph;

@@ -1,6 +1,6 @@
-// Streets joined through the nodes that are not intersections, for the validation
-// (StreetsThroughBends.hpp): a street of the graph that a turning place or an undriven corner
-// splits is still one street between two intersections, as the net's chain through that bend is.
+// Streets joined through turning places, for the validation (StreetsThroughBends.hpp): a street
+// of the graph that a turning place splits is still one street between two intersections, as
+// the net's chain through that bend is.
 #include "StreetsThroughBends.hpp"
 
 #include <map>
@@ -37,7 +37,7 @@ RoadGraph streetsThroughBends(const RoadGraph& graph, const std::vector<char>& n
   }
   auto passes = [&](int n) {
     const auto i = static_cast<std::size_t>(n);
-    return i < node_kind.size() && node_kind[i] != kIntersection && at[i].size() == 2 &&
+    return i < node_kind.size() && node_kind[i] == kTurningPlace && at[i].size() == 2 &&
            at[i][0] != at[i][1];
   };
   std::vector<char> done(streets.size(), 0);

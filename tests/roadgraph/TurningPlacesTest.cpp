@@ -108,18 +108,18 @@ RoadGraph lineGraph() {
   return g;
 }
 
-TEST(StreetsThroughBends, JoinsOnlyThroughNodesThatAreNotIntersections) {
+TEST(StreetsThroughBends, JoinsOnlyThroughTurningPlaces) {
   const RoadGraph g = lineGraph();
   // 1: a turning place, 2: an intersection with two streets, 3: a corner where dead ends met,
   // 4: a dead end.
   const std::vector<char> kind = {kIntersection, kTurningPlace, kIntersection, kDeadEnd, kDeadEnd};
   const RoadGraph view = detail::streetsThroughBends(g, kind);
-  ASSERT_EQ(view.edges.size(), 2u);  // 0-2 through 1; 2-4 through 3
+  ASSERT_EQ(view.edges.size(), 3u);  // 0-2 through 1; 2-3; 3-4
   EXPECT_EQ(std::min(view.edges[0].u, view.edges[0].v), 0);
   EXPECT_EQ(std::max(view.edges[0].u, view.edges[0].v), 2);
   EXPECT_DOUBLE_EQ(view.edges[0].length_m, 200.0);
-  EXPECT_EQ(std::min(view.edges[1].u, view.edges[1].v), 2);
-  EXPECT_EQ(std::max(view.edges[1].u, view.edges[1].v), 4);
+  EXPECT_EQ(view.edges[1].u, 2);
+  EXPECT_EQ(view.edges[1].v, 3);
   EXPECT_EQ(view.nodes.size(), g.nodes.size());
   // All intersections: nothing is joined.
   EXPECT_EQ(detail::streetsThroughBends(g, std::vector<char>(5, kIntersection)).edges.size(), 4u);
