@@ -43,20 +43,20 @@ std::vector<StreetRuns> streetRuns(const std::vector<Street>& streets, const Tra
                                    const std::vector<std::size_t>& order,
                                    const std::vector<int>& street_of_point, const EdgeConfig& ec) {
   std::vector<StreetRuns> out(streets.size());
-  forEachRun(traces, order, street_of_point, ec.max_gap_s,
-             [&](int s, std::size_t k_first, std::size_t k_last) {
-               const Street& street = streets[static_cast<std::size_t>(s)];
-               if (street.comp < 0) return;  // a short link has no points of its own
-               StreetRuns& r = out[static_cast<std::size_t>(s)];
-               std::vector<double> a;
-               for (std::size_t k = k_first; k <= k_last; ++k)
-                 a.push_back(arcPosition(street.centre, traces.points[order[k]].pos));
-               const double turn = turnRoundArc(a, ec.min_run_m);
-               if (turn >= ec.clear_radius_m &&
-                   turn <= polylineLength(street.centre) - ec.clear_radius_m)
-                 r.turns.push_back(turn);
-               r.arcs.push_back(std::move(a));
-             });
+  forEachRun(
+      traces, order, street_of_point, ec.max_gap_s,
+      [&](int s, std::size_t k_first, std::size_t k_last) {
+        const Street& street = streets[static_cast<std::size_t>(s)];
+        if (street.comp < 0) return;  // a short link has no points of its own
+        StreetRuns& r = out[static_cast<std::size_t>(s)];
+        std::vector<double> a;
+        for (std::size_t k = k_first; k <= k_last; ++k)
+          a.push_back(arcPosition(street.centre, traces.points[order[k]].pos));
+        const double turn = turnRoundArc(a, ec.min_run_m);
+        if (turn >= ec.clear_radius_m && turn <= polylineLength(street.centre) - ec.clear_radius_m)
+          r.turns.push_back(turn);
+        r.arcs.push_back(std::move(a));
+      });
   return out;
 }
 
