@@ -24,7 +24,7 @@ struct GraphBuildStats {
   std::size_t divided_node_pairs = 0;    ///< carriageway nodes of divided roads merged (pairs)
   std::size_t divided_streets = 0;       ///< carriageway pairs made one street
   std::size_t staggered_node_pairs = 0;  ///< T junctions on opposite sides merged (pairs)
-  std::size_t turning_places = 0;  ///< streets split where vehicles turn round part-way along
+  std::size_t turning_places = 0;        ///< streets split where vehicles turn round part-way along
   double seconds = 0.0;
 };
 
