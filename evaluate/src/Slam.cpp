@@ -127,6 +127,8 @@ struct LidarSlam::Impl {
                             : m.relocalised ? Outcome::Relocalised
                                             : Outcome::Registered;
     motion.update(outcome, index - good_frame == 1, T_world_good, m.T_world, step.dt);
+    if (m.status == FrameStatus::Ok && outcome == Outcome::Registered && index - good_frame == 1)
+      motion.measureWheels(T_world_good, m.T_world, step.dt);
     last_failed = m.failed;
     scan_to_scan.setPrevious(p.features);
     T_world_good = m.T_world;
