@@ -341,6 +341,7 @@ SlamResult LidarSlam::Impl::finish() {
   out.loop_candidates = ls.candidates;
   out.loops_rejected = ls.rejected;
   out.loops_ambiguous = ls.ambiguous;
+  out.wheel_scale = motion.wheelScale();
   out.keyframes = static_cast<int>(graph.size());
   out.times = times;
   return out;
