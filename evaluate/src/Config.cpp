@@ -57,6 +57,7 @@ void OdometryConfig::validate() const {
   requirePositive("wheel_rotation_slack_deg", wheel_rotation_slack_deg);
   requireNonNegative("prior_sigma_m", prior_sigma_m);
   requireNonNegative("prior_along_sigma_m", prior_along_sigma_m);
+  requireNonNegative("prior_along_fade_info", prior_along_fade_info);
   requireNonNegative("wheel_scale_stretch_m", wheel_scale_stretch_m);
   requireRange("wheel_scale_max", wheel_scale_max, 0.0, 0.5);
   requireRange("wheel_scale_stretches", wheel_scale_stretches, 1, kMaxCount);

@@ -121,6 +121,7 @@ void MotionModel::addOdometryPrior(AlignOptions& o, const Prediction& step) cons
   o.prior_weight(2) = w(c.prior_sigma_deg * std::numbers::pi / 180.0);
   o.prior_weight(3) = o.prior_weight(4) = w(c.prior_sigma_m);
   o.prior_weight(3) += w(c.prior_along_sigma_m);  // informations of two priors add up
+  o.prior_fade_info(3) = c.prior_along_fade_info;
 }
 
 Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {

@@ -85,6 +85,10 @@ struct OdometryConfig {
   /// slips sideways in turns and the wheels do not see it [m], [deg]
   double prior_sigma_m = 0.0;
   double prior_along_sigma_m = 0.0;
+  /// The along prior fades out as the scan's own information along the heading (per residual)
+  /// rises to this: 0.05 keeps it on a bridge deck (0.015-0.02) and off in a street with posts
+  /// and doors (0.1-0.3). 0 = always on
+  double prior_along_fade_info = 0.0;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
   /// 0.05 deg/s); a drive that states its gyro's figures (odometry.yaml) scales it by
@@ -339,6 +343,9 @@ void visitFields(V& v, OdometryConfig& c) {
   v.field("prior_along_sigma_m", c.prior_along_sigma_m,
           "scan-to-map prior towards the odometry, along the heading only, sigma per 0.1 s "
           "(0 = off) [m]");
+  v.field("prior_along_fade_info", c.prior_along_fade_info,
+          "the along prior fades out as the scan's own information along the heading per "
+          "residual rises to this (0 = always on)");
   v.field("prior_sigma_deg", c.prior_sigma_deg,
           "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
   v.field("prior_ref_noise_deg_s", c.prior_ref_noise_deg_s,
