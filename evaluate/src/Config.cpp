@@ -56,6 +56,12 @@ void OdometryConfig::validate() const {
   requirePositive("wheel_translation_slack_m", wheel_translation_slack_m);
   requirePositive("wheel_rotation_slack_deg", wheel_rotation_slack_deg);
   requireNonNegative("prior_sigma_m", prior_sigma_m);
+  requireNonNegative("prior_along_sigma_m", prior_along_sigma_m);
+  requireNonNegative("prior_along_fade_info", prior_along_fade_info);
+  requireNonNegative("wheel_scale_stretch_m", wheel_scale_stretch_m);
+  requireRange("wheel_scale_max", wheel_scale_max, 0.0, 0.5);
+  requireRange("wheel_scale_stretches", wheel_scale_stretches, 1, kMaxCount);
+  requireRange("wheel_scale_min_stretches", wheel_scale_min_stretches, 1, wheel_scale_stretches);
   requireNonNegative("prior_sigma_deg", prior_sigma_deg);
   requireNonNegative("prior_ref_noise_deg_s", prior_ref_noise_deg_s);
   requireNonNegative("prior_ref_bias_deg_s", prior_ref_bias_deg_s);

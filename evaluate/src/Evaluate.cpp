@@ -238,7 +238,10 @@ EvaluationResult slamFigures(const SlamResult& slam, const MotionPrior& prior, c
   r.gyro_standstill_s = prior.gyro.standstill_s;
   r.gyro_bias_deg_s = prior.gyro.final_bias_rad_s * 180.0 / std::numbers::pi;
   r.wheel_odometry = !prior.odometry.empty();
-  if (r.wheel_odometry) r.odometry_prior_sigma_deg = prior.slam_cfg.odometry.prior_sigma_deg;
+  if (r.wheel_odometry) {
+    r.odometry_prior_sigma_deg = prior.slam_cfg.odometry.prior_sigma_deg;
+    r.wheel_scale = slam.wheel_scale;
+  }
   r.scans = static_cast<long long>(slam.trajectory.size());
   r.scan_stride = cfg.input.scan_stride;
   r.keyframes = slam.keyframes;

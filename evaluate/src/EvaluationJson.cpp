@@ -177,6 +177,7 @@ void addMotionPriorJson(const EvaluationResult& r, json& j) {
   j["motion_prior"] =
       r.wheel_odometry ? "wheel odometry + gyro (odometry.csv)" : "constant velocity";
   if (r.odometry_prior_sigma_deg) j["odometry_prior_sigma_deg"] = *r.odometry_prior_sigma_deg;
+  if (r.wheel_scale) j["wheel_scale"] = *r.wheel_scale;
 }
 
 }  // namespace
@@ -241,6 +242,7 @@ EvaluationResult evaluationFromJson(const json& j) {
   r.wheel_odometry = j.at("motion_prior").get<std::string>() != "constant velocity";
   if (j.contains("odometry_prior_sigma_deg"))
     r.odometry_prior_sigma_deg = figure(j, "odometry_prior_sigma_deg");
+  if (j.contains("wheel_scale")) r.wheel_scale = figure(j, "wheel_scale");
   r.scans = j.at("scans").get<long long>();
   r.scan_stride = j.at("scan_stride").get<long long>();
   r.keyframes = j.at("keyframes").get<long long>();

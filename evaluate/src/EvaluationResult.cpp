@@ -41,6 +41,7 @@ void addSlamFigures(const EvaluationResult& r, std::map<std::string, double>& f)
   put(f, "gyro_standstill_s", r.gyro_standstill_s);
   put(f, "gyro_bias_deg_s", r.gyro_bias_deg_s);
   if (r.odometry_prior_sigma_deg) put(f, "odometry_prior_sigma_deg", *r.odometry_prior_sigma_deg);
+  if (r.wheel_scale) put(f, "wheel_scale", *r.wheel_scale);
   put(f, "scans", static_cast<double>(r.scans));
   put(f, "scan_stride", static_cast<double>(r.scan_stride));
   put(f, "keyframes", static_cast<double>(r.keyframes));

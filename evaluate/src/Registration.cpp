@@ -78,9 +78,13 @@ void applyDelta(Pose3& T, const Vec6& d) {
   T.linear() = Eigen::Quaterniond(T.rotation()).normalized().toRotationMatrix();
 }
 
-/// Prior residual e = log(prior^-1 * T) per DoF with weight w; its Jacobian with respect to
-/// the right perturbation is the identity to first order.
-void addPrior(Normal& ne, const Pose3& prior, const Pose3& T, const Vec6& w) {
+/// Prior residual e = log(prior^-1 * T) per DoF with weight w (faded by the features' own
+/// information where `fade` says so); its Jacobian with respect to the right perturbation is the
+/// identity to first order.
+void addPrior(Normal& ne, const Pose3& prior, const Pose3& T, Vec6 w, const Vec6& fade) {
+  for (int i = 0; i < 6; ++i)
+    if (fade(i) > 0 && ne.rows > 0)
+      w(i) *= std::clamp(1.0 - ne.H(i, i) / ne.rows / fade(i), 0.0, 1.0);
   const Pose3 E = prior.inverse() * T;
   const Eigen::AngleAxisd aa(E.rotation());
   Vec6 e;
@@ -254,7 +258,7 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
     res.iterations = it + 1;
     last = ne;
     if (ne.rows < 6) break;
-    if (has_prior) addPrior(ne, opt.prior, T, opt.prior_weight);
+    if (has_prior) addPrior(ne, opt.prior, T, opt.prior_weight, opt.prior_fade_info);
     const Vec6 d = ne.solve(opt.dof_mask, opt.degenerate_eig);
     applyDelta(T, d);
     if (d.head<3>().norm() < 1e-5 && d.tail<3>().norm() < 1e-4) {

@@ -127,6 +127,8 @@ struct LidarSlam::Impl {
                             : m.relocalised ? Outcome::Relocalised
                                             : Outcome::Registered;
     motion.update(outcome, index - good_frame == 1, T_world_good, m.T_world, step.dt);
+    if (m.status == FrameStatus::Ok && outcome == Outcome::Registered && index - good_frame == 1)
+      motion.measureWheels(T_world_good, m.T_world, step.dt);
     last_failed = m.failed;
     scan_to_scan.setPrevious(p.features);
     T_world_good = m.T_world;
@@ -339,6 +341,7 @@ SlamResult LidarSlam::Impl::finish() {
   out.loop_candidates = ls.candidates;
   out.loops_rejected = ls.rejected;
   out.loops_ambiguous = ls.ambiguous;
+  out.wheel_scale = motion.wheelScale();
   out.keyframes = static_cast<int>(graph.size());
   out.times = times;
   return out;

@@ -154,5 +154,39 @@ TEST(MotionModel, TheOdometryPriorWeighsYawOnlyByDefault) {
   EXPECT_EQ(o.prior_weight(3), 0.0);
 }
 
+TEST(MotionModel, TheAlongPriorWeighsTheHeadingDirectionOnly) {
+  Config cfg;
+  cfg.odometry.prior_along_sigma_m = 0.005;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setOdometry(WheelOdometry({{0.0, 5.0, 0.0}, {10.0, 5.0, 0.0}}));
+  AlignOptions o;
+  slam::Prediction p;
+  p.scale = 2.0;  // 0.2 s since the last frame: the sigma doubles
+  m.addOdometryPrior(o, p);
+  EXPECT_NEAR(o.prior_weight(3), std::pow(cfg.odometry.prior_registration_sigma_m / 0.01, 2), 1e-9);
+  EXPECT_EQ(o.prior_weight(4), 0.0);  // sideways: the wheels do not see a car slip
+  EXPECT_EQ(o.prior_weight(5), 0.0);
+}
+
+TEST(MotionModel, RegisteredStepsSetTheWheelScaleOfThePrediction) {
+  Config cfg;
+  cfg.odometry.wheel_scale_stretch_m = 10.0;
+  cfg.odometry.wheel_scale_min_stretches = 2;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setOdometry(WheelOdometry({{0.0, 10.0, 0.0}, {100.0, 10.0, 0.0}}));  // 10 m/s by the wheels
+  m.recordFrame(0.0, Pose3::Identity());
+  EXPECT_NEAR(m.predict(0.1).translation().x(), 1.0, 1e-9);
+  // The LiDAR measures 0.97 m per 0.1 s: the car is slower than its wheels say.
+  Pose3 T = Pose3::Identity();
+  for (int k = 1; k <= 30; ++k) {
+    const Pose3 next = T * forward(0.97);
+    m.measureWheels(T, next, 0.1);
+    m.recordFrame(0.1 * k, next);
+    T = next;
+  }
+  EXPECT_NEAR(m.wheelScale(), 0.97, 1e-9);
+  EXPECT_NEAR((T.inverse() * m.predict(3.1)).translation().x(), 0.97, 1e-9);
+}
+
 }  // namespace
 }  // namespace slamroute::evaluate

@@ -149,6 +149,34 @@ TEST(AlignFeaturesPrior, AWeakPriorDoesNotMoveAConstrainedResult) {
   EXPECT_LT((r.T_target_source.translation() - T_true.translation()).norm(), 0.01);
 }
 
+TEST(AlignFeaturesPrior, AFadedPriorActsWhereTheFeaturesAreWeakOnly) {
+  AlignOptions opt;
+  opt.iterations = 30;
+  opt.prior_weight << 0, 0, 0, 1000, 0, 0;
+  opt.prior_fade_info << 0, 0, 0, 0.05, 0, 0;
+  // The corridor says nothing along x: the faded prior holds x at the odometry's 0.7.
+  Cloud corridor_planes;
+  const FeatureMap open = corridor(corridor_planes);
+  opt.prior.translation() = Vec3(0.7, 0.0, 0.0);
+  Pose3 T_true = Pose3::Identity();
+  T_true.translation() = Vec3(0.0, 0.3, 0.0);
+  const AlignResult along =
+      alignFeatures(open, {}, moved(corridor_planes, T_true.inverse()), Pose3::Identity(), opt);
+  EXPECT_NEAR(along.T_target_source.translation().x(), 0.7, 0.03);
+  // The corner holds x itself: the same prior, 0.3 m off, no longer moves the result.
+  Cloud edges, planes;
+  const FeatureMap held = corner(edges, planes);
+  T_true.translation() = Vec3(0.4, -0.25, 0.05);
+  opt.prior.translation() = Vec3(0.7, -0.25, 0.05);
+  const AlignResult r = alignFeatures(held, moved(edges, T_true.inverse()),
+                                      moved(planes, T_true.inverse()), Pose3::Identity(), opt);
+  EXPECT_LT((r.T_target_source.translation() - T_true.translation()).norm(), 0.01);
+  opt.prior_fade_info.setZero();  // unfaded, the same weight pulls x towards the prior
+  const AlignResult pulled = alignFeatures(held, moved(edges, T_true.inverse()),
+                                           moved(planes, T_true.inverse()), Pose3::Identity(), opt);
+  EXPECT_GT(pulled.T_target_source.translation().x() - T_true.translation().x(), 0.05);
+}
+
 /// A street 16 m wide between two facades along x (-60..60 m), with the ground, and 2 m wide
 /// pillars standing 1 m out of each facade at the given x positions; 0.4 m point spacing.
 Cloud streetWithPillars(const std::vector<double>& pillars_x) {

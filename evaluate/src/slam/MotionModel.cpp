@@ -61,11 +61,23 @@ void MotionModel::recordFrame(double t, const Pose3& T_world) {
   started_ = true;
 }
 
+Pose3 MotionModel::wheelMotion(double t0, double t1) const {
+  Pose3 m = odometry_.motion(t0, t1);
+  m.translation().head<2>() *= wheel_scale_.scale();
+  return m;
+}
+
+void MotionModel::measureWheels(const Pose3& T_good, const Pose3& T_world, double dt) {
+  if (odometry_.empty() || !started_) return;
+  const double wheel_m = odometry_.motion(t_last_, t_last_ + dt).translation().head<2>().norm();
+  wheel_scale_.observe(wheel_m, (T_good.inverse() * T_world).translation().head<2>().norm());
+}
+
 Pose3 MotionModel::predict(double t) const {
   if (!started_) return T_world_last_;
   const Pose3 v = scaledMotion(velocity_, (t - t_last_) / velocity_dt_);
   if (odometry_.empty()) return T_world_last_ * v;
-  Pose3 m = odometry_.motion(t_last_, t);
+  Pose3 m = wheelMotion(t_last_, t);
   if (have_velocity_) m.translation().z() = v.translation().z();
   return T_world_last_ * m;
 }
@@ -82,7 +94,7 @@ Prediction MotionModel::predictStep(double t) const {
 
 Pose3 MotionModel::motionOver(double t, double duration) const {
   if (!odometry_.empty()) {
-    Pose3 m = odometry_.motion(t, t + duration);
+    Pose3 m = wheelMotion(t, t + duration);
     if (have_velocity_)
       m.translation().z() = scaledMotion(velocity_, duration / velocity_dt_).translation().z();
     return m;
@@ -108,6 +120,8 @@ void MotionModel::addOdometryPrior(AlignOptions& o, const Prediction& step) cons
   o.prior_weight.setZero();
   o.prior_weight(2) = w(c.prior_sigma_deg * std::numbers::pi / 180.0);
   o.prior_weight(3) = o.prior_weight(4) = w(c.prior_sigma_m);
+  o.prior_weight(3) += w(c.prior_along_sigma_m);  // informations of two priors add up
+  o.prior_fade_info(3) = c.prior_along_fade_info;
 }
 
 Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {

@@ -4,6 +4,7 @@
 // the IMU's roll / pitch. It owns the last pose and the velocity estimate.
 #include <optional>
 
+#include "WheelScale.hpp"
 #include "slamroute/core/Odometry.hpp"
 #include "slamroute/core/Types.hpp"
 #include "slamroute/evaluate/Config.hpp"
@@ -24,7 +25,7 @@ class MotionModel {
  public:
   /// Before the first frame the model stands at `T_world_first`.
   MotionModel(const Config& cfg, const Pose3& T_world_first)
-      : cfg_(cfg), T_world_last_(T_world_first) {}
+      : cfg_(cfg), wheel_scale_(cfg.odometry), T_world_last_(T_world_first) {}
 
   void setOdometry(WheelOdometry odometry) { odometry_ = std::move(odometry); }
   void setInitialMotion(const Pose3& T_first_second, double dt_s);
@@ -52,6 +53,10 @@ class MotionModel {
   /// fade; a relocalised one is a correction, not motion (straight ahead at the same speed).
   void update(Outcome outcome, bool consecutive, const Pose3& T_good, const Pose3& T_world,
               double dt);
+  /// A well-conditioned registration T_good -> T_world over dt, following the last frame,
+  /// measures the wheels' scale (OdometryConfig::wheel_scale_stretch_m).
+  void measureWheels(const Pose3& T_good, const Pose3& T_world, double dt);
+  double wheelScale() const { return wheel_scale_.scale(); }
   /// Records the pose the frame at t ended with (the next prediction starts there).
   void recordFrame(double t, const Pose3& T_world);
 
@@ -64,6 +69,7 @@ class MotionModel {
  private:
   const Config& cfg_;
   WheelOdometry odometry_;
+  WheelScale wheel_scale_;
   Pose3 T_world_last_;
   double t_last_ = 0.0;
   bool started_ = false;
@@ -76,6 +82,8 @@ class MotionModel {
   /// A car's motion `v` over dt with its turn rate at most max_accel * dt from the velocity's,
   /// unless the registration before measured the same turn rate (within that bound).
   Pose3 carTurn(const Pose3& v, double dt, double max_accel);
+  /// The wheels' planar motion t0 -> t1 at the measured scale.
+  Pose3 wheelMotion(double t0, double t1) const;
 };
 
 }  // namespace slamroute::evaluate::slam

@@ -84,6 +84,11 @@ struct OdometryConfig {
   /// features leave weak, e.g. yaw on an open street. No x/y prior by default: a simulated car
   /// slips sideways in turns and the wheels do not see it [m], [deg]
   double prior_sigma_m = 0.0;
+  double prior_along_sigma_m = 0.0;
+  /// The along prior fades out as the scan's own information along the heading (per residual)
+  /// rises to this: 0.05 keeps it on a bridge deck (0.015-0.02) and off in a street with posts
+  /// and doors (0.1-0.3). 0 = always on
+  double prior_along_fade_info = 0.0;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
   /// 0.05 deg/s); a drive that states its gyro's figures (odometry.yaml) scales it by
@@ -93,6 +98,14 @@ struct OdometryConfig {
   double prior_ref_bias_deg_s = 0.05;
   double prior_min_sigma_deg = 0.0002;
   double prior_registration_sigma_m = 0.05;
+  /// Wheel scale measured by the LiDAR (slam/WheelScale): the ratio of registered to wheel
+  /// distance per stretch of this length over well-conditioned scans, the median of the last
+  /// `wheel_scale_stretches` once there are `wheel_scale_min_stretches`, at most
+  /// `wheel_scale_max` from 1. 0 = the wheels as recorded [m]
+  double wheel_scale_stretch_m = 0.0;
+  int wheel_scale_stretches = 21;
+  int wheel_scale_min_stretches = 5;
+  double wheel_scale_max = 0.05;
   /// With IMU roll / pitch in odometry.csv: after each scan roll and pitch move this share of the
   /// way to the IMU's (LeGO-LOAM blends 0.002 per scan; 0 = off). Without it a pitch error
   /// taken on a ramp stays for good and the height wanders.
@@ -327,6 +340,12 @@ void visitFields(V& v, OdometryConfig& c) {
           "with wheel odometry: ... and turn it this much in yaw per 0.1 s [deg]");
   v.field("prior_sigma_m", c.prior_sigma_m,
           "scan-to-map prior towards the odometry, x/y sigma per 0.1 s (0 = off) [m]");
+  v.field("prior_along_sigma_m", c.prior_along_sigma_m,
+          "scan-to-map prior towards the odometry, along the heading only, sigma per 0.1 s "
+          "(0 = off) [m]");
+  v.field("prior_along_fade_info", c.prior_along_fade_info,
+          "the along prior fades out as the scan's own information along the heading per "
+          "residual rises to this (0 = always on)");
   v.field("prior_sigma_deg", c.prior_sigma_deg,
           "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
   v.field("prior_ref_noise_deg_s", c.prior_ref_noise_deg_s,
@@ -337,6 +356,13 @@ void visitFields(V& v, OdometryConfig& c) {
           "... but at least this (a noise-free gyro) [deg]");
   v.field("prior_registration_sigma_m", c.prior_registration_sigma_m,
           "LiDAR residual sigma for the odometry prior [m]");
+  v.field("wheel_scale_stretch_m", c.wheel_scale_stretch_m,
+          "wheel scale measured by the LiDAR over stretches of this length (0 = off) [m]");
+  v.field("wheel_scale_stretches", c.wheel_scale_stretches,
+          "... median over this many recent stretches");
+  v.field("wheel_scale_min_stretches", c.wheel_scale_min_stretches,
+          "... used once this many are measured");
+  v.field("wheel_scale_max", c.wheel_scale_max, "... at most this far from 1 (0.05 = 5 %)");
   v.field("imu_tilt_weight", c.imu_tilt_weight,
           "share of the way roll/pitch move to the IMU's after each scan (odometry.csv with "
           "roll/pitch), 0 = off");

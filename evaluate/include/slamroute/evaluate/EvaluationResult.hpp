@@ -91,6 +91,7 @@ struct EvaluationResult {
   double gyro_standstill_s = 0, gyro_bias_deg_s = 0;
   bool wheel_odometry = false;  ///< motion prior: odometry.csv, else const. velocity
   std::optional<double> odometry_prior_sigma_deg;  ///< with wheel odometry
+  std::optional<double> wheel_scale;  ///< with wheel odometry: measured by the LiDAR (1: not)
   long long scans = 0, scan_stride = 1, keyframes = 0;
   long long loop_candidates = 0, loops_rejected_correction = 0, loops_rejected_ambiguous = 0;
   std::vector<LoopRecord> loops;

@@ -40,6 +40,10 @@ struct AlignOptions {
   /// features leave a direction weak (a long wall: along the street). Zero weights: no prior.
   Pose3 prior = Pose3::Identity();
   Eigen::Matrix<double, 6, 1> prior_weight = Eigen::Matrix<double, 6, 1>::Zero();
+  /// > 0: the prior on that DoF fades out as the features' own information on it (diagonal of
+  /// the normal equations per residual) rises to this, so it acts only where the scan cannot
+  /// hold the DoF (a bridge deck between uniform parapets: along the street). 0: always.
+  Eigen::Matrix<double, 6, 1> prior_fade_info = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 struct AlignResult {

@@ -47,6 +47,7 @@ struct SlamResult {
   int loops_rejected = 0;           ///< ICP matches refused for too large a correction
   int loops_ambiguous = 0;  ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
+  double wheel_scale = 1.0;  ///< the wheels' scale measured by the LiDAR (1: not measured)
   StageTimes times;
   Cloud
       map;  ///< world frame, voxel-filtered (cfg.output.map_voxel_m); empty when a MapSink took it
