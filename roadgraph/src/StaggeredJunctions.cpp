@@ -1,7 +1,7 @@
 // Staggered T junctions: two side streets that meet a through street a few metres apart on its
-// opposite sides make one crossing place (as the place-level scoring sees it: SUMO joins such a
-// pair by an edge shorter than roadgraph.sumo.place_link_max_m). The hollow cylinder sees each T
-// on its own, so the graph has a node on each and the street between them; here the pair becomes
+// opposite sides make one crossing place (as the place-level scoring sees it: junctions joined by
+// a street whose centres lie within roadgraph.sumo.place_link_max_m). The hollow cylinder sees each
+// T on its own, so the graph has a node on each and the street between them; here the pair becomes
 // one node at one of the two junctions (a node at their middle would be 15-18 m from both).
 #include <algorithm>
 #include <cmath>
