@@ -26,6 +26,16 @@ double arcPosition(const Polyline& pl, const Point3& p) {
   return best_s;
 }
 
+Point3 pointAtArc(const Polyline& pl, double arc) {
+  double s = 0.0;
+  for (std::size_t i = 0; i + 1 < pl.size(); ++i) {
+    const double len = (pl[i + 1] - pl[i]).norm();
+    if (s + len >= arc && len > 1e-9) return pl[i] + (pl[i + 1] - pl[i]) * ((arc - s) / len);
+    s += len;
+  }
+  return pl.back();
+}
+
 void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::vector<int>& label,
               int comp, double tol, int src, std::vector<double>& dist) {
   using Item = std::pair<double, int>;

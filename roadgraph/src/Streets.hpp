@@ -116,6 +116,8 @@ TravelCounts countDirections(const Traces& traces, const std::vector<std::size_t
 // Centreline.cpp
 /// Arc-length position of the projection of p on a polyline.
 double arcPosition(const Polyline& pl, const Point3& p);
+/// The point `arc` metres along a polyline (the inverse of arcPosition on it).
+Point3 pointAtArc(const Polyline& pl, double arc);
 /// Geodesic (Dijkstra) distances from `src` within one street cluster; dist is indexed by subset
 /// index and only entries of the cluster's members are touched.
 void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::vector<int>& label,

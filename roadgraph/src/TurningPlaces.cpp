@@ -108,16 +108,6 @@ std::vector<double> placesAlong(const StreetRuns& r, double length_m, const Edge
   return places;
 }
 
-Point3 pointAtArc(const Polyline& c, double arc) {
-  double s = 0.0;
-  for (std::size_t i = 0; i + 1 < c.size(); ++i) {
-    const double len = (c[i + 1] - c[i]).norm();
-    if (s + len >= arc && len > 1e-9) return c[i] + (c[i + 1] - c[i]) * ((arc - s) / len);
-    s += len;
-  }
-  return c.back();
-}
-
 }  // namespace
 
 void splitAtTurningPlaces(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,

@@ -87,7 +87,7 @@ struct OdometryConfig {
   double prior_along_sigma_m = 0.0;
   /// The along prior fades out as the scan's own information along the heading (per residual)
   /// rises to this: 0.05 keeps it on a bridge deck (0.015-0.02) and off in a street with posts
-  /// and doors (0.1-0.3). 0 = always on
+  /// and doors (0.1-0.3). It fades the whole prior on x, prior_sigma_m's share too. 0 = always on
   double prior_along_fade_info = 0.0;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
