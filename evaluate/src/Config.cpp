@@ -68,6 +68,10 @@ void OdometryConfig::validate() const {
   requireNonNegative("prior_min_sigma_deg", prior_min_sigma_deg);
   requirePositive("prior_registration_sigma_m", prior_registration_sigma_m);
   requireRange("imu_tilt_weight", imu_tilt_weight, 0.0, 1.0);
+  requireNonNegative("tilt_bias_min_path_m", tilt_bias_min_path_m);
+  requireRange("tilt_bias_closures", tilt_bias_closures, 1, kMaxCount);
+  requireRange("tilt_bias_min_closures", tilt_bias_min_closures, 1, tilt_bias_closures);
+  requireRange("tilt_bias_max_deg", tilt_bias_max_deg, 0.0, 5.0);
   requireRange("failed_turn_decay", failed_turn_decay, 0.0, 1.0);
   requireNonNegative("max_yaw_accel_deg_s2", max_yaw_accel_deg_s2);
   requireNonNegative("gyro_standstill_mps", gyro_standstill_mps);
@@ -119,6 +123,7 @@ void LoopConfig::validate() const {
   for (double d : ambiguity_across_m) requirePositive("ambiguity_across_m entries", d);
   requireNonNegative("ambiguity_separation_m", ambiguity_separation_m);
   requirePositive("ambiguity_rival_share", ambiguity_rival_share);
+  requireRange("min_horizontal_conditioning", min_horizontal_conditioning, 0.0, 1.0);
   if (!std::isfinite(max_correction_m)) rejectValue("max_correction_m", max_correction_m, "finite");
   requireNonNegative("correction_per_m", correction_per_m);
   requireNonNegative("window_per_m", window_per_m);

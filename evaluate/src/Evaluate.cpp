@@ -241,6 +241,7 @@ EvaluationResult slamFigures(const SlamResult& slam, const MotionPrior& prior, c
   if (r.wheel_odometry) {
     r.odometry_prior_sigma_deg = prior.slam_cfg.odometry.prior_sigma_deg;
     r.wheel_scale = slam.wheel_scale;
+    r.imu_pitch_bias_deg = slam.imu_pitch_bias_deg;
   }
   r.scans = static_cast<long long>(slam.trajectory.size());
   r.scan_stride = cfg.input.scan_stride;

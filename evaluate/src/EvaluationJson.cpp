@@ -21,6 +21,7 @@ json loopJson(const LoopRecord& l) {
           {"t_new", l.t_new},
           {"fitness_m2", l.fitness_m2},
           {"correction_m", l.correction_m},
+          {"correction_z_m", l.correction_z_m},
           {"by_place", l.by_place},
           {"t_old_new", {l.t_old_new.x(), l.t_old_new.y(), l.t_old_new.z()}},
           {"yaw_old_new_deg", l.yaw_old_new_deg}};
@@ -34,6 +35,7 @@ LoopRecord loopFromJson(const json& j) {
   l.t_new = figure(j, "t_new");
   l.fitness_m2 = figure(j, "fitness_m2");
   l.correction_m = figure(j, "correction_m");
+  if (j.contains("correction_z_m")) l.correction_z_m = figure(j, "correction_z_m");
   l.by_place = j.at("by_place").get<bool>();
   const json& t = j.at("t_old_new");
   l.t_old_new = Vec3(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>());
@@ -178,6 +180,7 @@ void addMotionPriorJson(const EvaluationResult& r, json& j) {
       r.wheel_odometry ? "wheel odometry + gyro (odometry.csv)" : "constant velocity";
   if (r.odometry_prior_sigma_deg) j["odometry_prior_sigma_deg"] = *r.odometry_prior_sigma_deg;
   if (r.wheel_scale) j["wheel_scale"] = *r.wheel_scale;
+  if (r.imu_pitch_bias_deg) j["imu_pitch_bias_deg"] = *r.imu_pitch_bias_deg;
 }
 
 }  // namespace
@@ -243,6 +246,7 @@ EvaluationResult evaluationFromJson(const json& j) {
   if (j.contains("odometry_prior_sigma_deg"))
     r.odometry_prior_sigma_deg = figure(j, "odometry_prior_sigma_deg");
   if (j.contains("wheel_scale")) r.wheel_scale = figure(j, "wheel_scale");
+  if (j.contains("imu_pitch_bias_deg")) r.imu_pitch_bias_deg = figure(j, "imu_pitch_bias_deg");
   r.scans = j.at("scans").get<long long>();
   r.scan_stride = j.at("scan_stride").get<long long>();
   r.keyframes = j.at("keyframes").get<long long>();

@@ -42,6 +42,7 @@ void addSlamFigures(const EvaluationResult& r, std::map<std::string, double>& f)
   put(f, "gyro_bias_deg_s", r.gyro_bias_deg_s);
   if (r.odometry_prior_sigma_deg) put(f, "odometry_prior_sigma_deg", *r.odometry_prior_sigma_deg);
   if (r.wheel_scale) put(f, "wheel_scale", *r.wheel_scale);
+  if (r.imu_pitch_bias_deg) put(f, "imu_pitch_bias_deg", *r.imu_pitch_bias_deg);
   put(f, "scans", static_cast<double>(r.scans));
   put(f, "scan_stride", static_cast<double>(r.scan_stride));
   put(f, "keyframes", static_cast<double>(r.keyframes));

@@ -66,7 +66,7 @@ std::vector<LoopRecord> loopRecords(const SlamResult& slam) {
   std::vector<LoopRecord> out;
   for (const auto& l : slam.loops)
     out.push_back({l.from_keyframe, l.to_keyframe, l.t_old, l.t_new, l.fitness_m2, l.correction_m,
-                   l.by_place, l.T_old_new.translation(),
+                   l.correction_z_m, l.by_place, l.T_old_new.translation(),
                    yawOf(l.T_old_new) * 180.0 / std::numbers::pi});
   return out;
 }

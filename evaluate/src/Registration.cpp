@@ -369,6 +369,12 @@ Mat3 IcpTarget::translationInformation(const Cloud& source, const Pose3& T,
   return matched > 0 ? Mat3(info / matched) : info;
 }
 
+double horizontalConditioning(const Mat3& info) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(info.topLeftCorner<2, 2>());
+  const Eigen::Vector2d ev = es.eigenvalues();  // ascending
+  return ev(1) > 0.0 ? std::max(0.0, ev(0)) / ev(1) : 0.0;
+}
+
 IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
                         const IcpAmbiguity& amb) {
   IcpRival strongest;

@@ -191,9 +191,10 @@ struct LidarSlam::Impl {
     return m;
   }
 
-  /// Whether the registration `r` from `start` is believed: too few matches (an open street: the
-  /// prediction, with height, roll and pitch from the planes), an implausible jump (the
-  /// prediction), or the result.
+  /// Whether the registration `r` from `start` is believed: too few matches (an open street) or,
+  /// with wheel odometry, a result beyond the odometry's slack (a sweep smeared by a U-turn):
+  /// the prediction, with height, roll and pitch from the planes; without odometry an
+  /// implausible jump keeps the start; else the result.
   MapStep judge(const slam::PreparedScan& p, const slam::Prediction& step, const Pose3& start,
                 const AlignResult& r, const AlignOptions& fine, bool check,
                 bool implausible) const {
@@ -202,28 +203,34 @@ struct LidarSlam::Impl {
     m.status = implausible ? FrameStatus::Degenerate : FrameStatus::Ok;
     m.inliers = r.inliers;
     m.min_eig = r.min_eig_translation;
-    if (r.edge_matches < cfg.mapping.min_edge_features ||
-        r.plane_matches < cfg.mapping.min_plane_features) {
-      m.status = FrameStatus::FewFeatures;
+    const bool few = r.edge_matches < cfg.mapping.min_edge_features ||
+                     r.plane_matches < cfg.mapping.min_plane_features;
+    const bool jump = !few && check && !motion.plausibleStep(step.T_world, r.T_target_source, step);
+    if (few || jump) {
+      m.status = few ? FrameStatus::FewFeatures : FrameStatus::Degenerate;
       m.failed = true;
-      // Too few features to register against: the motion model (odometry, or a car's constant
-      // velocity) predicts better than a scan-to-scan match that had even fewer to work with.
-      if (motion.hasOdometry() || motion.hasVelocity()) m.T_world = step.T_world;
-      AlignOptions planes_only = fine;
-      planes_only.dof_mask = kZ | kRoll | kPitch;
-      const AlignResult g = scan_to_map.alignPlanes(p, m.T_world, planes_only);
-      if (g.plane_matches >= cfg.mapping.min_plane_features &&
-          motion.plausibleStep(step.T_world, g.T_target_source, step))
-        m.T_world = g.T_target_source;
-    } else if (check && !motion.plausibleStep(step.T_world, r.T_target_source, step)) {
-      m.status = FrameStatus::Degenerate;
-      m.failed = true;
+      // The motion model (odometry, or a car's constant velocity) predicts better than a
+      // scan-to-scan match that had even fewer features or an implausible turn to work with.
+      if (motion.hasOdometry() || (few && motion.hasVelocity())) m.T_world = step.T_world;
+      if (few || motion.hasOdometry()) m.T_world = levelledByPlanes(p, step, m.T_world, fine);
     } else {
       m.T_world = r.T_target_source;
       if (r.min_eig_translation < cfg.mapping.degeneracy_min_eig)
         m.status = FrameStatus::Degenerate;
     }
     return m;
+  }
+
+  /// Height, roll and pitch of `T` from the scan's planes alone, when they are plausible.
+  Pose3 levelledByPlanes(const slam::PreparedScan& p, const slam::Prediction& step, const Pose3& T,
+                         const AlignOptions& fine) const {
+    AlignOptions planes_only = fine;
+    planes_only.dof_mask = kZ | kRoll | kPitch;
+    const AlignResult g = scan_to_map.alignPlanes(p, T, planes_only);
+    if (g.plane_matches >= cfg.mapping.min_plane_features &&
+        motion.plausibleStep(step.T_world, g.T_target_source, step))
+      return g.T_target_source;
+    return T;
   }
 
   /// The search needs edges (in an open field it cannot succeed); with wheel odometry + gyro the
@@ -258,11 +265,16 @@ struct LidarSlam::Impl {
     graph.add(t, static_cast<int>(frames.size()), T_world, p.kf_edges, p.kf_planes,
               p.features.segmented);
     loop_closer.addPlace(graph, p.features.segmented);
+    motion.keyframeAt(T_world.translation());
     bool closed = false;
     if (cfg.loop.enabled) {
       const double t0 = cpuNow();
       closed = loop_closer.tryClose(graph, times);
       times.loop_closure += cpuSince(t0);
+    }
+    if (closed) {
+      const LoopClosure& l = loop_closer.stats().loops.back();
+      motion.measureTilt(l.from_keyframe, l.correction_z_m);
     }
     const double t0 = cpuNow();
     scan_to_map.rebuild(graph, closed || graph.size() == 1);
@@ -342,6 +354,7 @@ SlamResult LidarSlam::Impl::finish() {
   out.loops_rejected = ls.rejected;
   out.loops_ambiguous = ls.ambiguous;
   out.wheel_scale = motion.wheelScale();
+  out.imu_pitch_bias_deg = motion.pitchBiasRad() * 180.0 / std::numbers::pi;
   out.keyframes = static_cast<int>(graph.size());
   out.times = times;
   return out;

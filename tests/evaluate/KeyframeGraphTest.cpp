@@ -85,6 +85,34 @@ TEST(LoopCloser, ARevisitWithDriftClosesAndCorrectsIt) {
   EXPECT_LT((g.back().T_world.translation() - at(0, 0).translation()).norm(), 0.35);
 }
 
+/// A revisit 0.6 m off along a street between two long plain walls (a bridge deck between
+/// parapets), with the restart and correlative checks off so that only the conditioning decides.
+int corridorClosures(double min_conditioning) {
+  Config cfg;
+  cfg.loop.ambiguity_along_m.clear();
+  cfg.loop.ambiguity_across_m.clear();
+  cfg.loop.correlative = false;
+  cfg.loop.min_horizontal_conditioning = min_conditioning;
+  test::Scene corridor;
+  corridor.boxes = {{{-200, 6, 0}, {200, 7, 3}}, {{-200, -7, 0}, {200, -6, 3}}};
+  const LidarSpec spec = lidarPreset("vlp16");
+  slam::KeyframeGraph g(cfg);
+  slam::LoopCloser closer(cfg, 1.8);
+  StageTimes times;
+  const double xs[] = {0, 10, 20, 30, 0};
+  for (int k = 0; k < 5; ++k) {
+    const Cloud c = cloudOf(test::scanScene(corridor, at(xs[k], 0), spec));
+    g.add(20.0 * k, k, k == 4 ? at(0.6, 0.0) : at(xs[k], 0), c, c, c);
+    closer.tryClose(g, times);
+  }
+  return static_cast<int>(closer.stats().loops.size());
+}
+
+TEST(LoopCloser, ARevisitThatICPCannotPlaceAlongTheStreetIsRefused) {
+  EXPECT_EQ(corridorClosures(0.05), 0);
+  EXPECT_EQ(corridorClosures(0.0), 1);  // the check off: ICP stays where it started, 0.6 m off
+}
+
 class PlaceSearch : public ::testing::TestWithParam<bool> {};
 
 TEST_P(PlaceSearch, ThePlaceDescriptorFindsARevisitTheEstimateHasDriftedAwayFrom) {

@@ -139,7 +139,7 @@ TEST(MotionModel, AJumpOfMetresInOneScanIsNotPlausible) {
   EXPECT_FALSE(m.plausibleStep(p.T_world, p.T_world * forward(5.0), p));
 }
 
-TEST(MotionModel, TheOdometryPriorWeighsYawOnlyByDefault) {
+TEST(MotionModel, TheOdometryPriorWeighsYawAndAFadingAlongPriorByDefault) {
   const Config cfg;
   slam::MotionModel m(cfg, Pose3::Identity());
   AlignOptions o;
@@ -151,7 +151,9 @@ TEST(MotionModel, TheOdometryPriorWeighsYawOnlyByDefault) {
   const double sigma = cfg.odometry.prior_sigma_deg * std::numbers::pi / 180.0;
   EXPECT_NEAR(o.prior_weight(2), std::pow(cfg.odometry.prior_registration_sigma_m / sigma, 2),
               1e-6);
-  EXPECT_EQ(o.prior_weight(3), 0.0);
+  EXPECT_NEAR(o.prior_weight(3), std::pow(0.05 / 0.005, 2), 1e-9);  // along: 0.005 m per 0.1 s
+  EXPECT_EQ(o.prior_fade_info(3), 0.05);  // ... only where the scan says little that way
+  EXPECT_EQ(o.prior_weight(4), 0.0);      // sideways: none, a car slips in turns
 }
 
 TEST(MotionModel, TheAlongPriorWeighsTheHeadingDirectionOnly) {

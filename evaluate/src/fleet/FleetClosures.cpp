@@ -43,13 +43,6 @@ Cloud submap(const VehicleClouds& c, const std::vector<FleetKeyframe>& kfs, int 
   return voxelFilter(out, voxel_m);
 }
 
-/// Weakest over strongest eigenvalue of the horizontal block of a translation information.
-double horizontalConditioning(const Mat3& info) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(info.topLeftCorner<2, 2>());
-  const Eigen::Vector2d ev = es.eigenvalues();  // ascending
-  return ev(1) > 0.0 ? std::max(0.0, ev(0)) / ev(1) : 0.0;
-}
-
 /// Closures of vehicle b's keyframes against vehicle a's.
 void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
                const std::vector<VehicleClouds>& clouds, const Config& cfg,

@@ -168,6 +168,13 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
     ++stats_.ambiguous;
     return std::nullopt;
   }
+  const double conditioning = horizontalConditioning(
+      icp_target.translationInformation(source, icp.T_target_source, c.icp_max_corr_m / 3));
+  if (conditioning < c.min_horizontal_conditioning) {
+    ++stats_.ambiguous;
+    logDebug("loop candidate refused: horizontal conditioning " + std::to_string(conditioning));
+    return std::nullopt;
+  }
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
   const bool outside_gate = cand.place && correction > cand.gate_m;
   if (outside_gate || !plausibleLoopCorrection(correction, graph.drivenSinceLoop(), cfg_)) {
@@ -192,8 +199,9 @@ void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpR
   e.sigma_m = cfg_.loop.graph_loop_sigma_m;
   e.sigma_rad = cfg_.loop.graph_loop_sigma_rad;
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
-  stats_.loops.push_back(
-      {old_kf, n - 1, old.t, cur.t, icp.fitness_m2, correction, e.T_from_to, c.place.has_value()});
+  const double up = icp.T_target_source.translation().z() - cur.T_world.translation().z();
+  stats_.loops.push_back({old_kf, n - 1, old.t, cur.t, icp.fitness_m2, correction, up, e.T_from_to,
+                          c.place.has_value()});
   last_loop_t_ = cur.t;
   const double t_cur = cur.t;
   const double t0 = cpuNow();

@@ -19,7 +19,7 @@ struct LoopStats {
   std::vector<LoopClosure> loops;  ///< accepted
   int candidates = 0;              ///< ICP attempts
   int rejected = 0;                ///< refused for too large a correction
-  int ambiguous = 0;               ///< refused: ICP from nearby starts fits better elsewhere
+  int ambiguous = 0;  ///< refused: ICP from nearby starts fits as well elsewhere, or a corridor
 };
 
 /// An old keyframe the newest one may revisit, and where its ICP starts.

@@ -128,7 +128,8 @@ Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {
   if (cfg_.odometry.imu_tilt_weight <= 0) return T_world;
   const auto a = odometry_.attitude(t);
   if (!a) return T_world;
-  return evaluate::levelled(T_world, a->roll_rad, a->pitch_rad, cfg_.odometry.imu_tilt_weight);
+  return evaluate::levelled(T_world, a->roll_rad, a->pitch_rad - tilt_bias_.pitchBias(),
+                            cfg_.odometry.imu_tilt_weight);
 }
 
 void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,

@@ -4,6 +4,7 @@
 // the IMU's roll / pitch. It owns the last pose and the velocity estimate.
 #include <optional>
 
+#include "TiltBias.hpp"
 #include "WheelScale.hpp"
 #include "slamroute/core/Odometry.hpp"
 #include "slamroute/core/Types.hpp"
@@ -25,7 +26,10 @@ class MotionModel {
  public:
   /// Before the first frame the model stands at `T_world_first`.
   MotionModel(const Config& cfg, const Pose3& T_world_first)
-      : cfg_(cfg), wheel_scale_(cfg.odometry), T_world_last_(T_world_first) {}
+      : cfg_(cfg),
+        wheel_scale_(cfg.odometry),
+        tilt_bias_(cfg.odometry),
+        T_world_last_(T_world_first) {}
 
   void setOdometry(WheelOdometry odometry) { odometry_ = std::move(odometry); }
   void setInitialMotion(const Pose3& T_first_second, double dt_s);
@@ -43,7 +47,8 @@ class MotionModel {
   bool plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const;
   /// Prior of a scan-to-map towards the odometry's prediction (x, y, yaw); no-op without odometry.
   void addOdometryPrior(AlignOptions& o, const Prediction& step) const;
-  /// Roll and pitch moved towards the IMU's at time t (OdometryConfig::imu_tilt_weight).
+  /// Roll and pitch moved towards the IMU's at time t (OdometryConfig::imu_tilt_weight), its
+  /// pitch less the bias measured at loop closures.
   Pose3 levelled(const Pose3& T_world, double t) const;
 
   /// How the last scan went, for the next prediction.
@@ -57,6 +62,13 @@ class MotionModel {
   /// measures the wheels' scale (OdometryConfig::wheel_scale_stretch_m).
   void measureWheels(const Pose3& T_good, const Pose3& T_world, double dt);
   double wheelScale() const { return wheel_scale_.scale(); }
+  /// A keyframe at `position`, and a closure from keyframe `old_kf` to the newest that moved it
+  /// up by `correction_z_m`: they measure the IMU's pitch bias (OdometryConfig::tilt_bias_*).
+  void keyframeAt(const Vec3& position) { tilt_bias_.addKeyframe(position); }
+  void measureTilt(int old_kf, double correction_z_m) {
+    tilt_bias_.addClosure(old_kf, correction_z_m);
+  }
+  double pitchBiasRad() const { return tilt_bias_.pitchBias(); }
   /// Records the pose the frame at t ended with (the next prediction starts there).
   void recordFrame(double t, const Pose3& T_world);
 
@@ -70,6 +82,7 @@ class MotionModel {
   const Config& cfg_;
   WheelOdometry odometry_;
   WheelScale wheel_scale_;
+  TiltBias tilt_bias_;
   Pose3 T_world_last_;
   double t_last_ = 0.0;
   bool started_ = false;

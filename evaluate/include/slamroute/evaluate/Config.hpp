@@ -82,13 +82,15 @@ struct OdometryConfig {
   /// with these sigmas per 0.1 s against LiDAR residuals of prior_registration_sigma_m (a prior
   /// factor, as in LiDAR-inertial smoothers; 0 = off). It decides only the directions the
   /// features leave weak, e.g. yaw on an open street. No x/y prior by default: a simulated car
-  /// slips sideways in turns and the wheels do not see it [m], [deg]
+  /// slips sideways in turns and the wheels do not see it. Along the heading the wheels are
+  /// trusted (prior_along_sigma_m) where the scan says little that way: on a bridge deck the
+  /// scan-to-map otherwise slides along the street [m], [deg]
   double prior_sigma_m = 0.0;
-  double prior_along_sigma_m = 0.0;
+  double prior_along_sigma_m = 0.005;
   /// The along prior fades out as the scan's own information along the heading (per residual)
   /// rises to this: 0.05 keeps it on a bridge deck (0.015-0.02) and off in a street with posts
   /// and doors (0.1-0.3). It fades the whole prior on x, prior_sigma_m's share too. 0 = always on
-  double prior_along_fade_info = 0.0;
+  double prior_along_fade_info = 0.05;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
   /// 0.05 deg/s); a drive that states its gyro's figures (odometry.yaml) scales it by
@@ -101,8 +103,9 @@ struct OdometryConfig {
   /// Wheel scale measured by the LiDAR (slam/WheelScale): the ratio of registered to wheel
   /// distance per stretch of this length over well-conditioned scans, the median of the last
   /// `wheel_scale_stretches` once there are `wheel_scale_min_stretches`, at most
-  /// `wheel_scale_max` from 1. 0 = the wheels as recorded [m]
-  double wheel_scale_stretch_m = 0.0;
+  /// `wheel_scale_max` from 1. The along prior needs it: the wheels' scale is off by up to ~1 %.
+  /// 0 = the wheels as recorded [m]
+  double wheel_scale_stretch_m = 50.0;
   int wheel_scale_stretches = 21;
   int wheel_scale_min_stretches = 5;
   double wheel_scale_max = 0.05;
@@ -110,6 +113,14 @@ struct OdometryConfig {
   /// way to the IMU's (LeGO-LOAM blends 0.002 per scan; 0 = off). Without it a pitch error
   /// taken on a ramp stays for good and the height wanders.
   double imu_tilt_weight = 0.2;
+  /// The IMU's pitch bias measured at loop closures (slam/TiltBias): each closure's height
+  /// correction over a path of at least tilt_bias_min_path_m, the median of the last
+  /// tilt_bias_closures once there are tilt_bias_min_closures, at most tilt_bias_max_deg; it is
+  /// taken off the IMU's pitch before the levelling. 0 = the IMU as recorded [m], [deg]
+  double tilt_bias_min_path_m = 150.0;
+  int tilt_bias_closures = 15;
+  int tilt_bias_min_closures = 2;
+  double tilt_bias_max_deg = 0.5;
   double failed_turn_decay = 0.9;  ///< a failed scan keeps the speed, the turn rate times this
   /// Without wheel odometry the constant-velocity prediction keeps only what a car does: forward
   /// speed and yaw rate. Its sideways and vertical speeds and roll / pitch rates are set to zero,
@@ -193,6 +204,11 @@ struct LoopConfig {
   double ambiguity_separation_m = 1.5;
   double ambiguity_inlier_margin = 0.0;
   double ambiguity_rival_share = 0.98;
+  /// ... and refused when the match's horizontal conditioning (weakest over strongest direction
+  /// of what the matched planes tell, horizontalConditioning) is below this: on a bridge deck
+  /// between uniform parapets (~0.02) ICP stays near where it started along the deck, a metre
+  /// or more off, without a rival standing out; a street's doors and posts give 0.1-0.4. 0 = off
+  double min_horizontal_conditioning = 0.05;
   /// A closure may move the new keyframe at most max_correction_m plus correction_per_m times
   /// the distance driven since the last accepted closure; a larger jump is taken for a look-alike
   /// place. Off by default: refusing true closures leaves the drift in place. Negative = no
@@ -366,6 +382,12 @@ void visitFields(V& v, OdometryConfig& c) {
   v.field("imu_tilt_weight", c.imu_tilt_weight,
           "share of the way roll/pitch move to the IMU's after each scan (odometry.csv with "
           "roll/pitch), 0 = off");
+  v.field("tilt_bias_min_path_m", c.tilt_bias_min_path_m,
+          "IMU pitch bias measured by loop closures after at least this path (0 = off) [m]");
+  v.field("tilt_bias_closures", c.tilt_bias_closures, "... median over this many recent closures");
+  v.field("tilt_bias_min_closures", c.tilt_bias_min_closures,
+          "... used once this many are measured");
+  v.field("tilt_bias_max_deg", c.tilt_bias_max_deg, "... at most this [deg]");
   v.field("failed_turn_decay", c.failed_turn_decay, "turn rate kept per failed scan (share)");
   v.field("vehicle_motion", c.vehicle_motion,
           "without wheel odometry, predict with forward speed and yaw rate only (false = full "
@@ -432,6 +454,8 @@ void visitFields(V& v, LoopConfig& c) {
           "... matching this much larger a share of the points (and with a lower fitness)");
   v.field("ambiguity_rival_share", c.ambiguity_rival_share,
           "... or fitting as well: this share of the inliers and fitness (>= 1: only better)");
+  v.field("min_horizontal_conditioning", c.min_horizontal_conditioning,
+          "... or whose weakest over strongest horizontal information is below this (0 = off)");
   v.field("correlative", c.correlative,
           "refuse a candidate that a pose elsewhere in the window fits nearly as well");
   v.field("window_per_m", c.window_per_m,

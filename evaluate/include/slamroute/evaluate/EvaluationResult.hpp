@@ -32,6 +32,7 @@ struct TrajectorySummary {
 struct LoopRecord {
   long long old_keyframe = 0, new_keyframe = 0;
   double t_old = 0, t_new = 0, fitness_m2 = 0, correction_m = 0;
+  double correction_z_m = 0;  ///< the part of the correction upwards [m]
   bool by_place = false;
   Vec3 t_old_new = Vec3::Zero();  ///< measured relative translation [m]
   double yaw_old_new_deg = 0;
@@ -92,6 +93,8 @@ struct EvaluationResult {
   bool wheel_odometry = false;  ///< motion prior: odometry.csv, else const. velocity
   std::optional<double> odometry_prior_sigma_deg;  ///< with wheel odometry
   std::optional<double> wheel_scale;  ///< with wheel odometry: measured by the LiDAR (1: not)
+  /// ... and the IMU's pitch bias measured at loop closures (0: not measured) [deg]
+  std::optional<double> imu_pitch_bias_deg;
   long long scans = 0, scan_stride = 1, keyframes = 0;
   long long loop_candidates = 0, loops_rejected_correction = 0, loops_rejected_ambiguous = 0;
   std::vector<LoopRecord> loops;

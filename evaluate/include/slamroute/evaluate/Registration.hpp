@@ -87,6 +87,10 @@ class IcpTarget {
   std::vector<Vec3> normals_;  ///< zero where the neighbours show no clear plane
 };
 
+/// Weakest over strongest eigenvalue of the horizontal block of a translation information
+/// (IcpTarget::translationInformation): near 0 where ICP cannot tell where along a street it is.
+double horizontalConditioning(const Mat3& info);
+
 /// A match is accepted when its fitness is below max_fitness_m2 and enough points matched.
 struct IcpAcceptance {
   double max_fitness_m2 = 0.09;

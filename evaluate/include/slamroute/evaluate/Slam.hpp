@@ -33,7 +33,8 @@ struct LoopClosure {
   int from_keyframe = 0, to_keyframe = 0;  ///< old, new
   double t_old = 0, t_new = 0;
   double fitness_m2 = 0;
-  double correction_m = 0;  ///< how far the ICP moved the new keyframe from its estimate [m]
+  double correction_m = 0;    ///< how far the ICP moved the new keyframe from its estimate [m]
+  double correction_z_m = 0;  ///< ... of it upwards [m]
   Pose3 T_old_new = Pose3::Identity();  ///< the measured relative pose (for checks against truth)
   bool by_place = false;  ///< the candidate came from the place descriptor, not the estimate
 };
@@ -47,7 +48,8 @@ struct SlamResult {
   int loops_rejected = 0;           ///< ICP matches refused for too large a correction
   int loops_ambiguous = 0;  ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
-  double wheel_scale = 1.0;  ///< the wheels' scale measured by the LiDAR (1: not measured)
+  double wheel_scale = 1.0;         ///< the wheels' scale measured by the LiDAR (1: not measured)
+  double imu_pitch_bias_deg = 0.0;  ///< the IMU's pitch bias measured at loop closures [deg]
   StageTimes times;
   Cloud
       map;  ///< world frame, voxel-filtered (cfg.output.map_voxel_m); empty when a MapSink took it
