@@ -6,7 +6,9 @@ drive as evaluated), route length in SUMO [km], aco-ga / postman length, ATE RMS
 aco-ga / postman ATE; a seed whose SLAM has not run shows its planned coverage and length.
 Then where the ATE comes from: the SLAM's loop closures per km driven and the largest error
 per planner, and aco-ga's planned revisits (count, length) and its predicted C_max against the
-bound. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
+bound. Directed coverage counts the net's part a car can drive round legally (turns included);
+a last table gives the junction-level part (turns ignored) and how many of its edges no legal
+drive enters and leaves again. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
 import json
 import statistics
 import sys
@@ -89,6 +91,26 @@ def diagnostics(out, seeds):
               f"{unc['c_max_m2']:.0f} / {unc['c_threshold_m2']:.0f} |")
 
 
+def junction_part(out, seeds):
+    """Per seed: the directed figure over the junction-level part, planned, and its edges."""
+    rows = []
+    for s in seeds:
+        cov = [(load(out / f"seed_{s}" / "routes" / f"{p}.json") or {}).get("directed_coverage", {})
+               for p in ("postman", "aco-ga")]
+        if all("junction_part" in c for c in cov):
+            j = [c["junction_part"] for c in cov]
+            rows.append(f"| {s} | {cov[0]['edges_total']} of {j[0]['edges_total']} "
+                        f"({j[0]['edges_without_legal_route']} without) | "
+                        f"{j[0]['edges_pct']:.1f} | {j[1]['edges_pct']:.1f} |")
+    if rows:
+        print()
+        print("| seed | legal part of the junction-level part, edges (without a legal route) | "
+              "postman junction-level [%] | aco-ga junction-level [%] |")
+        print("|---|---|---|---|")
+        print("\n".join(rows))
+
+
 if __name__ == "__main__":
     main()
     diagnostics(Path(sys.argv[1]), sys.argv[2:])
+    junction_part(Path(sys.argv[1]), sys.argv[2:])

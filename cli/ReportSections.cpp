@@ -76,18 +76,29 @@ std::string drivenOf(const json& j, const char* obj, const char* a, const char* 
   return reportNumber(j[obj], a, 0) + " / " + reportNumber(j[obj], b, 0);
 }
 
+/// "pct (n)": the junction-level part's directed figure and its edges without a legal route.
+std::string junctionPart(const json& d) {
+  if (!d.contains("junction_part")) return "–";
+  return reportNumber(d["junction_part"], "edges_pct", 1) + " (" +
+         reportNumber(d["junction_part"], "edges_without_legal_route", 0) + ")";
+}
+
 /// The primary coverage figures: directed SUMO edges of the drivable part (count and length),
 /// planned (route.json) and as driven (metrics.json), beside the two-way figure on the extracted
 /// graph; the route's length on the graph, in SUMO (edges + junction lanes) and as driven.
 void coverageTable(std::ostringstream& md, const ReportData& data) {
   md << "Coverage counts each direction of a street (a two-way street driven one way is half "
-        "covered) over the SUMO edges a passenger car can drive round (the net's largest strongly "
-        "connected part; junction-internal edges excluded). The two-way figure counts a street "
-        "once, on the graph built from the survey.\n\n"
+        "covered) over the SUMO edges a passenger car can drive round legally (the net's largest "
+        "part strongly connected under its turn permissions; junction-internal edges excluded). "
+        "The junction-level part (strongly connected over junctions, turns ignored) also holds "
+        "edges no legal drive enters and leaves again, e.g. streets to the map border where cars "
+        "may not turn round: its figure and how many such edges it has are beside. The two-way "
+        "figure counts a street once, on the graph built from the survey.\n\n"
      << "| planner | directed SUMO edges [%] | edges driven / drivable | directed length [%] | "
-        "directed edges as driven [%] | two-way graph coverage [%] | length on the graph [km] | "
-        "length in SUMO [km] (of it in junctions) | driven [km] |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
+        "directed edges as driven [%] | junction-level part [%] (no legal route) | two-way graph "
+        "coverage [%] | length on the graph [km] | length in SUMO [km] (of it in junctions) | "
+        "driven [km] |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : data.in.planners) {
     const json r = routeJson(data, p);
     const json m = pipeline::readJsonIfPresent(data.in.out / "eval" / p / "metrics.json");
@@ -98,9 +109,9 @@ void coverageTable(std::ostringstream& md, const ReportData& data) {
     md << "| " << p << " | " << reportNumber(d, "edges_pct", 1) << " | "
        << drivenOf(r, "directed_coverage", "edges_driven", "edges_total") << " | "
        << reportNumber(d, "length_pct", 1) << " | " << reportNumber(md_cov, "edges_pct", 1) << " | "
-       << reportNumber(r, "edge_coverage_pct", 1) << " | " << reportNumber(r, "length_m", 2, 1e-3)
-       << " | " << reportNumber(l, "total_m", 2, 1e-3) << " ("
-       << reportNumber(l, "in_junctions_m", 2, 1e-3) << ") | "
+       << junctionPart(d) << " | " << reportNumber(r, "edge_coverage_pct", 1) << " | "
+       << reportNumber(r, "length_m", 2, 1e-3) << " | " << reportNumber(l, "total_m", 2, 1e-3)
+       << " (" << reportNumber(l, "in_junctions_m", 2, 1e-3) << ") | "
        << reportNumber(ml, "total_m", 2, 1e-3) << " |\n";
   }
   md << "\n";

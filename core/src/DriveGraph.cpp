@@ -3,10 +3,34 @@
 
 #include <boost/graph/strong_components.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
 
 namespace slamroute {
+namespace {
+
+/// Marks the largest set of edges strongly connected under allowed_next (edges as vertices).
+void markLegalPart(DriveGraph& dg) {
+  using EdgeGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
+  EdgeGraph eg(dg.edges.size());
+  for (std::size_t i = 0; i < dg.edges.size(); ++i)
+    for (std::size_t next : dg.allowed_next[i]) boost::add_edge(i, next, eg);
+  std::vector<int> comp(dg.edges.size());
+  const int ncomp = boost::strong_components(
+      eg, boost::make_iterator_property_map(comp.begin(), boost::get(boost::vertex_index, eg)));
+  std::vector<std::size_t> size(static_cast<std::size_t>(ncomp), 0);
+  for (int c : comp) ++size[static_cast<std::size_t>(c)];
+  const auto best = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
+  dg.in_legal_edge.assign(dg.edges.size(), false);
+  for (std::size_t i = 0; i < comp.size(); ++i)
+    if (comp[i] == best) {
+      dg.in_legal_edge[i] = true;
+      ++dg.legal_edges;
+    }
+}
+
+}  // namespace
 
 DriveGraph DriveGraph::fromNet(const SumoNet& net) {
   DriveGraph dg;
@@ -67,6 +91,7 @@ DriveGraph DriveGraph::fromNet(const SumoNet& net) {
       dg.in_lscc_edge[i] = true;
       ++dg.lscc_edges;
     }
+  markLegalPart(dg);
   return dg;
 }
 

@@ -29,8 +29,13 @@ void countCovered(const SumoNet& net, const std::vector<const SumoEdge*>& driven
   const DriveGraph dg = DriveGraph::fromNet(net);
   std::unordered_set<const SumoEdge*> seen(driven.begin(), driven.end());
   for (std::size_t i = 0; i < dg.edges.size(); ++i) {
-    if (!dg.in_lscc_edge[i]) continue;
     const SumoEdge* e = net.findEdge(dg.edges[i].sumo_edge);
+    if (dg.in_lscc_edge[i]) {
+      ++c.junction_part_edges;
+      c.junction_part_driven += seen.count(e) ? 1 : 0;
+      c.edges_without_legal_route += dg.in_legal_edge[i] ? 0 : 1;
+    }
+    if (!dg.in_legal_edge[i]) continue;
     ++c.edges_total;
     c.length_total_m += e->length();
     if (!seen.count(e)) continue;
@@ -39,6 +44,8 @@ void countCovered(const SumoNet& net, const std::vector<const SumoEdge*>& driven
   }
   c.edges_pct = c.edges_total > 0 ? 100.0 * c.edges_driven / c.edges_total : 0.0;
   c.length_pct = c.length_total_m > 0 ? 100.0 * c.length_driven_m / c.length_total_m : 0.0;
+  c.junction_part_pct =
+      c.junction_part_edges > 0 ? 100.0 * c.junction_part_driven / c.junction_part_edges : 0.0;
 }
 
 /// Internal-lane length of each passenger turn (the shortest of its lane connections) [m],
@@ -75,14 +82,21 @@ SumoCoverage sumoCoverage(const SumoNet& net, const std::vector<std::string>& ro
 void sumoCoverageToJson(const SumoCoverage& c, nlohmann::json& j) {
   j["directed_coverage"] = {
       {"definition",
-       "directed SUMO edges driven, of the passenger edges in the net's largest "
-       "strongly connected part (internal junction edges excluded)"},
+       "directed SUMO edges driven, of the passenger edges in the net's largest part "
+       "strongly connected under its turn permissions (internal junction edges excluded); "
+       "junction_part: the same over the largest part strongly connected over junctions, "
+       "turns ignored, whose edges_without_legal_route no legal drive enters and leaves"},
       {"edges_pct", c.edges_pct},
       {"length_pct", c.length_pct},
       {"edges_driven", c.edges_driven},
       {"edges_total", c.edges_total},
       {"length_driven_m", c.length_driven_m},
-      {"length_total_m", c.length_total_m}};
+      {"length_total_m", c.length_total_m},
+      {"junction_part",
+       {{"edges_total", c.junction_part_edges},
+        {"edges_driven", c.junction_part_driven},
+        {"edges_pct", c.junction_part_pct},
+        {"edges_without_legal_route", c.edges_without_legal_route}}}};
   j["sumo_length"] = {{"total_m", c.routeLengthM()},
                       {"on_edges_m", c.route_on_edges_m},
                       {"in_junctions_m", c.route_in_junctions_m},
@@ -100,6 +114,13 @@ std::optional<SumoCoverage> sumoCoverageFromJson(const nlohmann::json& j) {
   c.edges_total = d.at("edges_total").get<int>();
   c.length_driven_m = d.at("length_driven_m").get<double>();
   c.length_total_m = d.at("length_total_m").get<double>();
+  if (d.contains("junction_part")) {
+    const nlohmann::json& jp = d.at("junction_part");
+    c.junction_part_edges = jp.at("edges_total").get<int>();
+    c.junction_part_driven = jp.at("edges_driven").get<int>();
+    c.junction_part_pct = jp.at("edges_pct").get<double>();
+    c.edges_without_legal_route = jp.at("edges_without_legal_route").get<int>();
+  }
   c.route_on_edges_m = l.at("on_edges_m").get<double>();
   c.route_in_junctions_m = l.at("in_junctions_m").get<double>();
   c.turns_without_connection = l.value("turns_without_connection", 0);

@@ -92,6 +92,7 @@ nlohmann::json statsJson(const GraphBuildStats& st) {
           {"merged_end_pairs", st.merged_end_pairs},
           {"short_links", st.short_links},
           {"stop_line_junctions", st.stop_line_junctions},
+          {"bend_end_junctions", st.bend_end_junctions},
           {"passed_nodes", st.passed_nodes},
           {"u_turn_streets", st.u_turn_streets},
           {"roundabouts", st.roundabouts},

@@ -83,4 +83,18 @@ Polyline binnedCentre(const std::vector<Point3>& sp, const std::vector<int>& mem
   return centre;
 }
 
+std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach) {
+  const Polyline pl = at_u ? Polyline(c.rbegin(), c.rend()) : c;
+  const Point3& tip = pl.back();
+  Point3 back = pl.front();
+  double run = 0.0;
+  for (std::size_t i = pl.size() - 1; i > 0; --i) {
+    run += (pl[i] - pl[i - 1]).head<2>().norm();
+    back = pl[i - 1];
+    if (run >= reach) break;
+  }
+  const Eigen::Vector2d d = (tip - back).head<2>();
+  return {tip, d.norm() > 1e-6 ? Eigen::Vector2d(d.normalized()) : Eigen::Vector2d::Zero()};
+}
+
 }  // namespace slamroute::roadgraph::detail

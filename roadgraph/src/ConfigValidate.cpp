@@ -47,6 +47,7 @@ void EdgeConfig::validate() const {
   requirePositive("max_gap_s", max_gap_s, 1e5);
   requireRange("min_direction_runs", min_direction_runs, 1, 1000000);
   requireNonNegative("stop_line_reach_m", stop_line_reach_m, 1000.0);
+  requireNonNegative("bend_end_reach_m", bend_end_reach_m, 1000.0);
   requireNonNegative("link_visit_m", link_visit_m, 1000.0);
   requireNonNegative("link_max_m", link_max_m, 1000.0);
   requireRange("min_link_vehicles", min_link_vehicles, 1, 1000000);

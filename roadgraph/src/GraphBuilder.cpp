@@ -4,7 +4,9 @@
 // 2. Streets: the trace points left after removing the nodes' neighbourhoods, clustered, each
 //    cluster attached to its two nearest nodes, eqs. 1-2 (StreetClusters.cpp), with its centreline
 //    (Centreline.cpp); dead ends that nearly touch are one node (EndNodes.cpp); a dead end that
-//    stops just short of a street it runs at is a T junction on that street (StopLineEnds.cpp);
+//    stops just short of a street it runs at is a T junction on that street (StopLineEnds.cpp),
+//    one that starts beside a street's bend in line with one of its legs a junction at the bend
+//    (BendEnds.cpp);
 //    a street is split where vehicles turn round part-way along it (TurningPlaces.cpp).
 // 3. Links between junctions too close for a street to survive the clearing, from vehicles that
 //    drive from one straight into the other (ShortLinks.cpp).
@@ -201,6 +203,7 @@ GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg) {
       detail::attachStreets(spts, traces, p.order, p.ds.voxel_of, gn, ec, half_h, st);
   detail::mergeNearbyEnds(gn.pos, gn.is_end, ec.end_merge_m, half_h, streets, st);
   detail::joinStopLineEnds(gn, streets, spts, ec, half_h, st);
+  detail::joinBendEnds(gn, streets, spts, ec, half_h, st);
   detail::splitAtTurningPlaces(gn, streets, spts, traces, p.order,
                                streetOfTracePoints(streets, spts, p.ds), ec, st);
   st.streets = streets.size();

@@ -5,6 +5,14 @@
 //   apart end up with no street points between them and no edge, although vehicles drive from
 //   one to the other (Bologna: 9 such pairs, several on the only way out of a part of the
 //   network). Drives between two junctions with no street point in between give that link.
+//   Where a street already joins the two, a link is added for a direction no vehicle drove along
+//   it: at a junction complex the street can be one carriageway (Bologna junction 15: the
+//   eastbound lane between two nodes 22 m apart is a street of its own, while the westbound
+//   traffic turns through the junction box, past no street point). A drive from a node along a
+//   street whose near end it did not pass (a node of the same junction complex, 15-30 m off:
+//   Bologna junction 3, whose arms end at two nodes 21 m apart) is a drive from that node to the
+//   street's near end, past no street point, and counts for a link between the two; so is a
+//   drive along a street to a node past the street's far end.
 // - Short streets. Of a street 25-40 m long only a few metres are left outside the cleared
 //   disks, too little for a run to show its direction of travel: drives from one end node to the
 //   other over that street's points give it (otherwise a two-way street can look one-way).
@@ -73,17 +81,53 @@ Passages junctionPassages(const Traces& traces, const std::vector<std::size_t>& 
   return out;
 }
 
+namespace {
+
+/// Directions (from, to) between two nodes that some vehicle drove along a street joining them.
+std::set<std::pair<int, int>> drivenAlongStreets(const Passages& passages,
+                                                 const std::vector<Street>& streets) {
+  std::set<std::pair<int, int>> out;
+  for (const auto& [key, vehicles] : passages) {
+    const auto [from, to, street] = key;
+    if (street < 0 || vehicles < 1) continue;
+    const Street& s = streets[static_cast<std::size_t>(street)];
+    if ((s.u == from && s.v == to) || (s.u == to && s.v == from)) out.emplace(from, to);
+  }
+  return out;
+}
+
+/// Vehicles per direction (from, to) that drove from one node to the other past no street point:
+/// drives with no street between, and drives that entered a street at an end they did not pass
+/// (from -> that end) or left it at one (that end -> to).
+std::map<std::pair<int, int>, int> linkDrives(const Passages& passages,
+                                              const std::vector<Street>& streets) {
+  std::map<std::pair<int, int>, int> out;
+  for (const auto& [key, vehicles] : passages) {
+    const auto [from, to, street] = key;
+    if (street < 0) {
+      out[{from, to}] += vehicles;
+      continue;
+    }
+    const Street& s = streets[static_cast<std::size_t>(street)];
+    const bool from_end = from == s.u || from == s.v, to_end = to == s.u || to == s.v;
+    if (!from_end && to_end) out[{from, to == s.u ? s.v : s.u}] += vehicles;
+    if (from_end && !to_end) out[{from == s.u ? s.v : s.u, to}] += vehicles;
+  }
+  return out;
+}
+
+}  // namespace
+
 void addShortLinks(const Passages& passages, const std::vector<Point3>& nodes, const EdgeConfig& ec,
                    std::vector<Street>& streets, std::vector<Polyline>& polys,
                    GraphBuildStats& st) {
   if (!(ec.link_max_m > 0)) return;
-  std::set<std::pair<int, int>> linked;
-  for (const auto& s : streets) linked.emplace(std::min(s.u, s.v), std::max(s.u, s.v));
+  const std::set<std::pair<int, int>> along = drivenAlongStreets(passages, streets);
   std::map<std::pair<int, int>, Street> links;
-  for (const auto& [key, vehicles] : passages) {
-    const auto [from, to, street] = key;
+  for (const auto& [key, vehicles] : linkDrives(passages, streets)) {
+    const auto [from, to] = key;
     const int a = std::min(from, to), b = std::max(from, to);
-    if (street >= 0 || vehicles < ec.min_link_vehicles || linked.count({a, b}) ||
+    if (from == to || vehicles < ec.min_link_vehicles || along.count({from, to}) ||
         (nodes[static_cast<std::size_t>(a)] - nodes[static_cast<std::size_t>(b)]).head<2>().norm() >
             ec.link_max_m)
       continue;

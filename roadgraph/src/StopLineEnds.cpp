@@ -25,22 +25,6 @@ struct Crossing {
   Point3 at = Point3::Zero();
 };
 
-/// The tip of centreline c at its u end (or v end) and its heading out of the street there, from
-/// the point `reach` back along it.
-std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach) {
-  const Polyline pl = at_u ? Polyline(c.rbegin(), c.rend()) : c;
-  const Point3& tip = pl.back();
-  Point3 back = pl.front();
-  double run = 0.0;
-  for (std::size_t i = pl.size() - 1; i > 0; --i) {
-    run += (pl[i] - pl[i - 1]).head<2>().norm();
-    back = pl[i - 1];
-    if (run >= reach) break;
-  }
-  const Eigen::Vector2d d = (tip - back).head<2>();
-  return {tip, d.norm() > 1e-6 ? Eigen::Vector2d(d.normalized()) : Eigen::Vector2d::Zero()};
-}
-
 /// The nearest crossing of the ray tip + t * dir (0 <= t <= reach) with the centreline of a
 /// street other than `self` at more than 30 degrees, at least `margin` from both of its ends.
 std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::size_t self,
@@ -71,26 +55,6 @@ std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::siz
     }
   }
   return best;
-}
-
-/// Streets ending at node n.
-int degreeOf(const std::vector<Street>& streets, int n) {
-  int d = 0;
-  for (const auto& s : streets) d += (s.u == n) + (s.v == n);
-  return d;
-}
-
-/// A new intersection node at p: inserted after the intersections, the end nodes move up one.
-int insertIntersection(GraphNodes& gn, std::vector<Street>& streets, const Point3& p) {
-  const int at = static_cast<int>(gn.n_inter);
-  for (auto& s : streets) {
-    if (s.u >= at) ++s.u;
-    if (s.v >= at) ++s.v;
-  }
-  gn.pos.insert(gn.pos.begin() + at, p);
-  gn.is_end.insert(gn.is_end.begin() + at, 0);
-  ++gn.n_inter;
-  return at;
 }
 
 }  // namespace

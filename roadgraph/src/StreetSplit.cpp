@@ -1,5 +1,6 @@
 // A street split in two at a node placed part-way along it: a T junction whose side street ends
-// at the stop line (StopLineEnds.cpp), a place where vehicles turn round (TurningPlaces.cpp).
+// at the stop line (StopLineEnds.cpp), a junction at a bend where survey vehicles set off
+// (BendEnds.cpp), a place where vehicles turn round (TurningPlaces.cpp).
 #include "Streets.hpp"
 
 namespace slamroute::roadgraph::detail {
@@ -25,6 +26,24 @@ void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int no
   head.v = node;
   tail.u = node;
   streets.push_back(std::move(tail));
+}
+
+int degreeOf(const std::vector<Street>& streets, int n) {
+  int d = 0;
+  for (const auto& s : streets) d += (s.u == n) + (s.v == n);
+  return d;
+}
+
+int insertIntersection(GraphNodes& gn, std::vector<Street>& streets, const Point3& p) {
+  const int at = static_cast<int>(gn.n_inter);
+  for (auto& s : streets) {
+    if (s.u >= at) ++s.u;
+    if (s.v >= at) ++s.v;
+  }
+  gn.pos.insert(gn.pos.begin() + at, p);
+  gn.is_end.insert(gn.is_end.begin() + at, 0);
+  ++gn.n_inter;
+  return at;
 }
 
 }  // namespace slamroute::roadgraph::detail

@@ -3,6 +3,7 @@
 // the nodes and their neighbourhoods. GraphBuilder.cpp runs the steps; each file documents its
 // choices.
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "PointGrid.hpp"
@@ -96,6 +97,16 @@ void forEachRun(const Traces& traces, const std::vector<std::size_t>& order,
 void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int node,
                  const std::vector<Point3>& sp);
 
+/// Streets ending at node n.
+int degreeOf(const std::vector<Street>& streets, int n);
+/// A new intersection node at p: inserted after the intersections, the end nodes move up one.
+int insertIntersection(GraphNodes& gn, std::vector<Street>& streets, const Point3& p);
+
+/// Dead ends where survey vehicles set off beside a bend of another street, on the straight
+/// continuation of one of its legs, become a junction at the bend (BendEnds.cpp).
+void joinBendEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
+                  const EdgeConfig& ec, double half_h, GraphBuildStats& st);
+
 /// Where vehicles turn round part-way along a street (a bend where a two-way street meets a
 /// one-way one), a node of kind kTurningPlace splits the street (TurningPlaces.cpp).
 /// `street_of_point`: per trace point, its street (-1: none).
@@ -118,6 +129,9 @@ TravelCounts countDirections(const Traces& traces, const std::vector<std::size_t
 double arcPosition(const Polyline& pl, const Point3& p);
 /// The point `arc` metres along a polyline (the inverse of arcPosition on it).
 Point3 pointAtArc(const Polyline& pl, double arc);
+/// The tip of centreline c at its u end (or v end) and its heading out of the street there, from
+/// the point `reach` back along it (zero when the street is a point).
+std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach);
 /// Geodesic (Dijkstra) distances from `src` within one street cluster; dist is indexed by subset
 /// index and only entries of the cluster's members are touched.
 void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::vector<int>& label,

@@ -1,6 +1,8 @@
 // Directed coverage of SUMO edges and route lengths as SUMO drives them (SumoCoverage.hpp).
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "TestUtil.hpp"
@@ -36,6 +38,45 @@ TEST(SumoCoverage, CountsTurnsSumoDoesNotJoin) {
   EXPECT_EQ(c.turns_without_connection, 1);
   EXPECT_DOUBLE_EQ(c.route_in_junctions_m, 0.0);
   EXPECT_EQ(c.edges_driven, 1);  // the bus lane is driven but not counted
+}
+
+// A-B two-way, cars turn round at A and at B; B-C two-way to C at the map border, where they
+// may not turn round: BC is entered but never left, CB left but never entered.
+const char* kBorderNet = R"(<?xml version="1.0"?>
+<net version="1.9">
+  <location netOffset="0.00,0.00" convBoundary="0,0,200,0" origBoundary="0,0,200,0" projParameter="!"/>
+  <edge id="AB" from="A" to="B"><lane id="AB_0" index="0" speed="13.89" length="100" shape="0,-1.6 100,-1.6"/></edge>
+  <edge id="BA" from="B" to="A"><lane id="BA_0" index="0" speed="13.89" length="100" shape="100,1.6 0,1.6"/></edge>
+  <edge id="BC" from="B" to="C"><lane id="BC_0" index="0" speed="13.89" length="100" shape="100,-1.6 200,-1.6"/></edge>
+  <edge id="CB" from="C" to="B"><lane id="CB_0" index="0" speed="13.89" length="100" shape="200,1.6 100,1.6"/></edge>
+  <junction id="A" type="priority" x="0" y="0" incLanes="BA_0" intLanes="" shape=""/>
+  <junction id="B" type="priority" x="100" y="0" incLanes="AB_0 CB_0" intLanes="" shape=""/>
+  <junction id="C" type="dead_end" x="200" y="0" incLanes="BC_0" intLanes="" shape=""/>
+  <connection from="AB" to="BA" fromLane="0" toLane="0" dir="t" state="M"/>
+  <connection from="AB" to="BC" fromLane="0" toLane="0" dir="s" state="M"/>
+  <connection from="CB" to="BA" fromLane="0" toLane="0" dir="s" state="M"/>
+  <connection from="BA" to="AB" fromLane="0" toLane="0" dir="t" state="M"/>
+</net>
+)";
+
+TEST(SumoCoverage, EdgesWithoutALegalDriveRoundAreCountedApart) {
+  const auto path = test::tempDir("sumo_coverage_border") / "border.net.xml";
+  std::ofstream(path, std::ios::binary) << kBorderNet;
+  const SumoCoverage c = sumoCoverage(SumoNet::read(path), {"AB", "BA", "AB", "BC"});
+  EXPECT_EQ(c.edges_total, 2);  // AB, BA: BC and CB are no part of a legal drive round
+  EXPECT_EQ(c.edges_driven, 2);
+  EXPECT_DOUBLE_EQ(c.edges_pct, 100.0);
+  EXPECT_EQ(c.junction_part_edges, 4);  // over junctions A, B, C strongly connect
+  EXPECT_EQ(c.junction_part_driven, 3);
+  EXPECT_DOUBLE_EQ(c.junction_part_pct, 75.0);
+  EXPECT_EQ(c.edges_without_legal_route, 2);
+  nlohmann::json j;
+  sumoCoverageToJson(c, j);
+  EXPECT_EQ(j["directed_coverage"]["junction_part"]["edges_without_legal_route"].get<int>(), 2);
+  const auto back = sumoCoverageFromJson(j);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->edges_without_legal_route, 2);
+  EXPECT_DOUBLE_EQ(back->junction_part_pct, 75.0);
 }
 
 TEST(SumoCoverage, RoundTripsThroughRouteJson) {

@@ -36,9 +36,15 @@ struct DriveGraph {
   std::vector<EdgeRef> edges;
   /// allowed_next[i] = indices of edges one may drive onto after edge i (SUMO <connection>s).
   std::vector<std::vector<std::size_t>> allowed_next;
-  /// Vertices (and edges) in the largest strongly connected component.
+  /// Vertices (and edges) in the largest strongly connected component over junctions (turn
+  /// permissions ignored).
   std::vector<bool> in_lscc_vertex, in_lscc_edge;
   std::size_t lscc_vertices = 0, lscc_edges = 0;
+  /// Edges in the largest set strongly connected under the turn permissions (allowed_next): the
+  /// edges a car can drive onto and leave again legally. An edge to a junction at the map border
+  /// where cars may not turn round is in the junction part but not in this one.
+  std::vector<bool> in_legal_edge;
+  std::size_t legal_edges = 0;
 
   /// SUMO edge id -> index into `edges`.
   std::unordered_map<std::string, std::size_t> edge_of;

@@ -115,6 +115,9 @@ struct EdgeConfig {
   /// A dead end whose street, continued this far, crosses another street is a T junction there
   /// (its vehicles' routes ended at the stop line, 5-8 m short of the street) [m]; 0 = off.
   double stop_line_reach_m = 15.0;
+  /// A dead end this close to a bend of another street, lined up with one of its legs, is a
+  /// junction there (a survey route set off on the street: BendEnds.cpp) [m]; 0 = off.
+  double bend_end_reach_m = 15.0;
   /// Links between junctions too close for a street to survive the clearing (ShortLinks.cpp):
   /// A vehicle this close to a node passes its junction [m]. 12 m = clear_radius_m: the node of a
   /// big junction lies up to 10-15 m from the lanes through it, so 8 m misses links there.
@@ -141,6 +144,9 @@ void visitFields(V& v, EdgeConfig& c) {
   v.field("stop_line_reach_m", c.stop_line_reach_m,
           "a dead end whose street, continued this far, crosses another street's middle is a T "
           "junction on it (routes that end at the stop line) (0 = off) [m]");
+  v.field("bend_end_reach_m", c.bend_end_reach_m,
+          "a dead end this close to another street's bend, its street lined up with one leg of "
+          "the bend, is a junction at the bend (routes that set off there) (0 = off) [m]");
   v.field("link_visit_m", c.link_visit_m,
           "a vehicle this close to a node passes its junction (short links) [m]");
   v.field("link_max_m", c.link_max_m,

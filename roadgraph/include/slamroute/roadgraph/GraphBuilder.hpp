@@ -19,6 +19,7 @@ struct GraphBuildStats {
   std::size_t passed_nodes = 0;         ///< street clusters split at a junction they run through
   std::size_t short_links = 0;          ///< streets between close junctions from vehicle passes
   std::size_t stop_line_junctions = 0;  ///< dead ends just short of a street made a T junction
+  std::size_t bend_end_junctions = 0;   ///< dead ends beside a street's bend made a junction there
   std::size_t u_turn_streets = 0;  ///< U-shaped clusters (separate lanes) attached at their bend
   std::size_t roundabouts = 0;     ///< rings whose junctions replaced the nodes there
   std::size_t divided_node_pairs = 0;    ///< carriageway nodes of divided roads merged (pairs)
