@@ -15,7 +15,7 @@ struct FleetConfig {
   int kmeans_iterations = 100;   ///< partition: Lloyd iterations at most
   /// partition: the merge-splits (two neighbouring parts as one tour, cut in two) of a descent
   /// stop once they have solved this many min-cost circulations (a count: same seed, same routes)
-  int merge_budget = 600;
+  int merge_budget = 100;
   int kick_rounds = 30;  ///< partition: rounds of random kicks of the parts, each re-balanced
   /// partition: the kicks stop once their re-plans' work (sum of the re-planned parts' squared
   /// directed-edge counts) reaches this
