@@ -4,7 +4,8 @@
 // for K = 2, 4, 8 and both strategies. Depot: the first node of the planning
 // graph (rl.start_node = -1). Usage:
 //   bench_fleet [--strategies partition,postman] [--k 2,4,8] [--candidates N] [--moves N]
-//               [--kicks N] [--seed S] [--nets NAME,NAME] (names as in the table)
+//               [--kicks N] [--merge-budget N] [--budget W] [--seed S]
+//               [--nets NAME,NAME] (names as in the table)
 // Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
 // networks/README.md); Berlin-Adlershof from Debian's sumo-tools.
 #include <algorithm>
@@ -53,6 +54,10 @@ int main(int argc, char** argv) {
       defaults.balance_moves = std::stoi(argv[i + 1]);
     else if (a == "--kicks")
       defaults.kick_rounds = std::stoi(argv[i + 1]);
+    else if (a == "--merge-budget")
+      defaults.merge_budget = std::stoi(argv[i + 1]);
+    else if (a == "--budget")
+      defaults.kick_budget = std::stoi(argv[i + 1]);
     else if (a == "--seed")
       seed = std::stoull(argv[i + 1]);
     else if (a == "--nets")

@@ -11,6 +11,7 @@ void FleetConfig::validate() const {
   config::requireRange("balance_moves", balance_moves, 0, 1000000);
   config::requireRange("candidates_per_move", candidates_per_move, 1, 100000);
   config::requireRange("kmeans_iterations", kmeans_iterations, 1, 100000);
+  config::requireRange("merge_budget", merge_budget, 0, 1000000);
   config::requireRange("kick_rounds", kick_rounds, 0, 100000);
   config::requireRange("kick_budget", kick_budget, 0, 2000000000);
 }

@@ -3,11 +3,16 @@
 // the Hungarian algorithm, a rural postman route per part, then moves of boundary streets from
 // the longest route to another part while each move shortens the longest route: first streets
 // the other part's route drives anyway (on its way from the depot, the far parts' routes cross
-// the near parts), then streets on the boundary to a neighbouring part. Two more starts are
-// balanced the same way and the shortest makespan is kept: sectors of the streets around the
-// depot (the sweep of vehicle routing; K-means parts ignore how far the depot is, a sector
-// holds near and far streets alike) and the postman circuit's legs (routes and the edges each
-// drives first), so partition is never longer than the postman strategy.
+// the near parts), then streets on the boundary to a neighbouring part. When no single street
+// helps, merge-splits (MergeSplit.cpp) re-cut two neighbouring parts at once, kept when the sum
+// of the two routes' squared lengths falls without either passing the makespan: that shortens
+// the total and lets length flow from long routes to short ones through a chain of neighbours,
+// which single-street moves off the longest route cannot. Three more starts are balanced the
+// same way and the shortest makespan is kept: sectors of the streets around the depot (the
+// sweep of vehicle routing; K-means parts ignore how far the depot is, a sector holds near and
+// far streets alike), swept both ways round (the sectors' cuts fall elsewhere), and the postman
+// circuit's legs (routes and the edges each drives first), so partition is never longer than
+// the postman strategy.
 // Parts hold directed edges: a street starts with both directions in one part, a move takes
 // the directions of the street that the longest route's part holds.
 #include <algorithm>
@@ -31,6 +36,7 @@ struct Partition {
   std::vector<std::vector<int>> route;  ///< per vehicle
   std::vector<double> length;           ///< per vehicle [m]
   std::int64_t work = 0;  ///< the re-plans' work so far (replanWork), the kicks' budget
+  int merge_solves = 0;   ///< circulations the merge-splits of this descent solved
 };
 
 /// Street midpoints (what K-means clusters) and the edges meeting at each node.
@@ -62,10 +68,10 @@ Layout layoutOf(const FleetContext& ctx) {
 }
 
 std::vector<int> solvePart(const FleetContext& ctx, const std::vector<int>& part_of_edge,
-                           int vehicle) {
+                           int vehicle, int* solves = nullptr) {
   std::vector<char> required(sz(ctx.pg.m));
   for (int e = 0; e < ctx.pg.m; ++e) required[sz(e)] = part_of_edge[sz(e)] == vehicle;
-  return ruralPostmanRoute(ctx.pg, ctx.paths, required, ctx.depot[sz(vehicle)]);
+  return ruralPostmanRoute(ctx.pg, ctx.paths, required, ctx.depot[sz(vehicle)], solves);
 }
 
 /// Row vehicle, column cluster: from the depot to the cluster's nearest edge and back.
@@ -112,7 +118,7 @@ std::vector<int> kMeansParts(const FleetContext& ctx, const FleetConfig& cfg, st
 /// sorted by their bearing from the depot, starting after the widest empty wedge, cut into K
 /// runs of equal street length. Each sector reaches from the depot to the city's edge, so every
 /// vehicle has near and far streets and the trips out and back weigh alike on all.
-std::vector<int> sweepParts(const FleetContext& ctx, const Layout& layout) {
+std::vector<int> sweepParts(const FleetContext& ctx, const Layout& layout, bool backwards) {
   const PlanGraph& pg = ctx.pg;
   const Point2 depot = ctx.g.nodes[sz(pg.node_orig[sz(ctx.depot[0])])].pos.head<2>();
   std::vector<std::pair<double, int>> bearing;
@@ -129,6 +135,7 @@ std::vector<int> sweepParts(const FleetContext& ctx, const Layout& layout) {
   }
   std::rotate(bearing.begin(), bearing.begin() + static_cast<long>(start % bearing.size()),
               bearing.end());
+  if (backwards) std::reverse(bearing.begin(), bearing.end());
   std::vector<int> sector_of_street(sz(pg.num_streets));
   double done = 0.0;
   for (const auto& [angle, st] : bearing) {
@@ -242,6 +249,27 @@ std::int64_t replanWork(const std::vector<int>& part_of_edge, int v) {
   return n * n;
 }
 
+double makespanOf(const Partition& part) {
+  return *std::max_element(part.length.begin(), part.length.end());
+}
+
+/// Parts p and q of `trial` re-planned; applied when p and q both keep an edge and the longer
+/// of their routes is shorter than p's route now.
+bool applyIfShorter(const FleetContext& ctx, std::vector<int> trial, int p, int q,
+                    Partition& part) {
+  if (std::find(trial.begin(), trial.end(), p) == trial.end() ||
+      std::find(trial.begin(), trial.end(), q) == trial.end())
+    return false;
+  std::vector<int> route_p = solvePart(ctx, trial, p), route_q = solvePart(ctx, trial, q);
+  part.work += replanWork(trial, p) + replanWork(trial, q);
+  const double lp = routeLength(ctx.pg, route_p), lq = routeLength(ctx.pg, route_q);
+  if (std::max(lp, lq) >= part.length[sz(p)] - 1e-6) return false;
+  part.part_of_edge = std::move(trial);
+  part.route[sz(p)] = std::move(route_p), part.length[sz(p)] = lp;
+  part.route[sz(q)] = std::move(route_q), part.length[sz(q)] = lq;
+  return true;
+}
+
 /// One move of a street off the longest route p that shortens it without the receiving route
 /// reaching p's old length, applied; false when no candidate does.
 bool improveOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
@@ -249,18 +277,9 @@ bool improveOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& 
   const int p = static_cast<int>(std::max_element(part.length.begin(), part.length.end()) -
                                  part.length.begin());
   if (std::count(part.part_of_edge.begin(), part.part_of_edge.end(), p) <= 1) return false;
-  for (const auto& [e, q] : candidateMoves(cfg, layout, ctx.pg, part, p)) {
-    std::vector<int> trial = movedStreet(layout, ctx.pg, part.part_of_edge, e, q);
-    if (std::find(trial.begin(), trial.end(), p) == trial.end()) continue;  // p keeps an edge
-    std::vector<int> route_p = solvePart(ctx, trial, p), route_q = solvePart(ctx, trial, q);
-    part.work += replanWork(trial, p) + replanWork(trial, q);
-    const double lp = routeLength(ctx.pg, route_p), lq = routeLength(ctx.pg, route_q);
-    if (std::max(lp, lq) >= part.length[sz(p)] - 1e-6) continue;
-    part.part_of_edge = std::move(trial);
-    part.route[sz(p)] = std::move(route_p), part.length[sz(p)] = lp;
-    part.route[sz(q)] = std::move(route_q), part.length[sz(q)] = lq;
-    return true;
-  }
+  for (const auto& [e, q] : candidateMoves(cfg, layout, ctx.pg, part, p))
+    if (applyIfShorter(ctx, movedStreet(layout, ctx.pg, part.part_of_edge, e, q), p, q, part))
+      return true;
   return false;
 }
 
@@ -290,15 +309,73 @@ bool kick(const FleetContext& ctx, const Layout& layout, Partition& part, std::m
   return true;
 }
 
-double makespanOf(const Partition& part) {
-  return *std::max_element(part.length.begin(), part.length.end());
+/// Parts p and q of `trial` re-planned; applied when both keep an edge, neither route gets
+/// longer than the makespan now and the sum of their squared lengths falls: the total length
+/// falls, or the two get more even, so length flows from long routes to short ones.
+bool applyIfSquaresFall(const FleetContext& ctx, std::vector<int> trial, int p, int q,
+                        Partition& part) {
+  if (std::find(trial.begin(), trial.end(), p) == trial.end() ||
+      std::find(trial.begin(), trial.end(), q) == trial.end())
+    return false;
+  std::vector<int> route_p = solvePart(ctx, trial, p, &part.merge_solves),
+                   route_q = solvePart(ctx, trial, q, &part.merge_solves);
+  part.work += replanWork(trial, p) + replanWork(trial, q);
+  const double lp = routeLength(ctx.pg, route_p), lq = routeLength(ctx.pg, route_q);
+  const double makespan = makespanOf(part), was_p = part.length[sz(p)], was_q = part.length[sz(q)];
+  // 1 m^2: a fall that small is rounding, and a strict fall ends the descent
+  if (std::max(lp, lq) > makespan + 1e-6 ||
+      lp * lp + lq * lq >= was_p * was_p + was_q * was_q - 1.0)
+    return false;
+  part.part_of_edge = std::move(trial);
+  part.route[sz(p)] = std::move(route_p), part.length[sz(p)] = lp;
+  part.route[sz(q)] = std::move(route_q), part.length[sz(q)] = lq;
+  return true;
 }
 
-/// The balancing moves until none helps (at most balance_moves); returns how many were made.
+/// Per pair of parts: they meet at a junction.
+std::vector<std::vector<char>> neighbouringParts(const FleetContext& ctx, const Layout& layout,
+                                                 const std::vector<int>& part_of_edge) {
+  const auto k = sz(ctx.vehicles());
+  std::vector<std::vector<char>> meet(k, std::vector<char>(k, 0));
+  for (const auto& edges : layout.edges_at_node)
+    for (int a : edges)
+      for (int b : edges) meet[sz(part_of_edge[sz(a)])][sz(part_of_edge[sz(b)])] = 1;
+  return meet;
+}
+
+/// The first merge-split of two neighbouring parts, the longest routes first, that
+/// applyIfSquaresFall applies; none once the descent's merge-splits have solved cfg.merge_budget
+/// circulations.
+bool mergeSplitOnce(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
+                    Partition& part) {
+  std::vector<int> order(sz(ctx.vehicles()));
+  for (int i = 0; i < ctx.vehicles(); ++i) order[sz(i)] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return part.length[sz(a)] > part.length[sz(b)]; });
+  const auto meet = neighbouringParts(ctx, layout, part.part_of_edge);
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t j = i + 1; j < order.size(); ++j) {
+      const int a = order[i], b = order[j];
+      if (!meet[sz(a)][sz(b)]) continue;
+      if (part.merge_solves >= cfg.merge_budget) return false;
+      // the merged tour: at most twice the work of re-planning both parts
+      part.work += 2 * (replanWork(part.part_of_edge, a) + replanWork(part.part_of_edge, b));
+      if (applyIfSquaresFall(ctx, mergeSplitParts(ctx, part.part_of_edge, a, b, &part.merge_solves),
+                             a, b, part))
+        return true;
+    }
+  return false;
+}
+
+/// The balancing moves until none helps (at most balance_moves): single streets off the
+/// longest route first, merge-splits when none is left; returns how many were made.
 int descend(const FleetContext& ctx, const FleetConfig& cfg, const Layout& layout,
             Partition& part) {
   int moves = 0;
-  while (moves < cfg.balance_moves && improveOnce(ctx, cfg, layout, part)) ++moves;
+  part.merge_solves = 0;
+  while (moves < cfg.balance_moves &&
+         (improveOnce(ctx, cfg, layout, part) || mergeSplitOnce(ctx, cfg, layout, part)))
+    ++moves;
   return moves;
 }
 
@@ -331,8 +408,10 @@ std::vector<std::vector<int>> partitionRoutes(const FleetContext& ctx, const Fle
   std::vector<std::pair<const char*, Partition>> starts;
   if (auto parts = kMeansParts(ctx, cfg, seed, layout); usable(parts, ctx.vehicles()))
     starts.emplace_back("kmeans", routesOf(ctx, std::move(parts)));
-  if (auto parts = sweepParts(ctx, layout); usable(parts, ctx.vehicles()))
+  if (auto parts = sweepParts(ctx, layout, false); usable(parts, ctx.vehicles()))
     starts.emplace_back("sweep", routesOf(ctx, std::move(parts)));
+  if (auto parts = sweepParts(ctx, layout, true); usable(parts, ctx.vehicles()))
+    starts.emplace_back("sweep back", routesOf(ctx, std::move(parts)));
   if (auto parts = circuitLegParts(ctx, circuit); usable(parts, ctx.vehicles())) {
     // The legs themselves are routes for these parts: moves re-plan only the parts they change.
     Partition p{std::move(parts), splitCircuitRoutes(ctx, circuit, legs), {}};

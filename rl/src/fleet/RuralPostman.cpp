@@ -203,8 +203,9 @@ int firstApart(const PlanGraph& pg, Components& parts, const std::vector<char>& 
 /// often drives them as one trail with the rest (a closed walk added on top would drive the
 /// depot's part twice). At most `rounds` re-solves; what stays apart is left to joinToDepot.
 Circulation solveJoined(const PlanGraph& pg, const TurnPaths& paths, std::vector<char> required,
-                        int depot, int rounds) {
+                        int depot, int rounds, int& solves) {
   Circulation c = cheapestCirculation(pg, required, depot);
+  ++solves;
   for (int round = 0; round < rounds; ++round) {
     std::vector<char> used;
     Components parts = mergedParts(pg, c, used);
@@ -214,6 +215,7 @@ Circulation solveJoined(const PlanGraph& pg, const TurnPaths& paths, std::vector
     if (walk.empty()) break;
     for (int e : walk) required[sz(e)] = 1;
     c = cheapestCirculation(pg, required, depot);
+    ++solves;
   }
   return c;
 }
@@ -270,11 +272,13 @@ std::vector<int> eulerRoute(const PlanGraph& pg, Circulation c) {
 }  // namespace
 
 std::vector<int> ruralPostmanRoute(const PlanGraph& pg, const TurnPaths& paths,
-                                   const std::vector<char>& required, int depot) {
+                                   const std::vector<char>& required, int depot, int* solves) {
   bool any = false;
   for (char r : required) any = any || r;
   if (!any) return {};
-  Circulation c = solveJoined(pg, paths, required, depot, kJoinRounds);
+  int count = 0;
+  Circulation c = solveJoined(pg, paths, required, depot, kJoinRounds, count);
+  if (solves) *solves += count;
   joinToDepot(pg, paths, c);
   return eulerRoute(pg, std::move(c));
 }

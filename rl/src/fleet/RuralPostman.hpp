@@ -11,8 +11,10 @@ namespace slamroute::rl::fleet {
 /// Edges from the node state of `depot` back to `depot` that drive every edge e with
 /// required[e] != 0, each consecutive pair an allowed turn. Empty when nothing is required.
 /// Throws std::runtime_error when a required edge cannot be reached and left legally.
+/// `solves`, when given, grows by the min-cost circulations solved (what the route costs).
 std::vector<int> ruralPostmanRoute(const PlanGraph& pg, const TurnPaths& paths,
-                                   const std::vector<char>& required, int depot);
+                                   const std::vector<char>& required, int depot,
+                                   int* solves = nullptr);
 
 /// Per edge e: the shortest legal length driven after e until arriving at `node` (0 when e ends
 /// there; +inf when it cannot). The reverse of TurnPaths::distances.

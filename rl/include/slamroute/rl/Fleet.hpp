@@ -6,8 +6,10 @@
 //    parts; the Hungarian algorithm assigns parts to vehicles (cost: the round trip from the
 //    vehicle's depot to the part); each vehicle drives a rural postman route of its part; then
 //    boundary streets move from the longest route to a neighbouring part while that shortens
-//    the makespan. The same from two more starts (sectors of the streets around the first
-//    depot; the streets of the postman strategy's legs); the shortest makespan is kept.
+//    the makespan, then merge-splits (two neighbouring parts driven as one tour and cut again
+//    in two) while they shorten the routes or even them out. The same from three more starts
+//    (sectors of the streets around the first depot, swept either way round; the streets of
+//    the postman strategy's legs); the shortest makespan is kept.
 //  - postman: the single-vehicle postman circuit cut into K consecutive legs (the cut points
 //    minimise the longest leg including its trips from and back to the depot), legs assigned
 //    to vehicles by the Hungarian algorithm.
