@@ -21,18 +21,12 @@ namespace slamroute::roadgraph::detail {
 namespace {
 
 /// The point of a street's centreline nearest to a tip: the street, its arc position, the point.
-struct Nearest {
-  std::size_t street = 0;
-  double arc = 0.0;
-  Point3 at = Point3::Zero();
-};
-
 /// The nearest centreline point to `tip` within `reach` (2D, within half_h in height) on a
 /// street other than `self`, at least `margin` from both of its ends.
-std::optional<Nearest> nearestStreetPoint(const std::vector<Street>& streets, std::size_t self,
-                                          const Point3& tip, double reach, double margin,
-                                          double half_h) {
-  std::optional<Nearest> best;
+std::optional<PointOnStreet> nearestStreetPoint(const std::vector<Street>& streets,
+                                                std::size_t self, const Point3& tip, double reach,
+                                                double margin, double half_h) {
+  std::optional<PointOnStreet> best;
   double best_d = reach;
   for (std::size_t k = 0; k < streets.size(); ++k) {
     const Polyline& c = streets[k].centre;
@@ -49,7 +43,7 @@ std::optional<Nearest> nearestStreetPoint(const std::vector<Street>& streets, st
       if (d > best_d || std::abs(at.z() - tip.z()) > half_h || arc < margin || arc > len - margin)
         continue;
       best_d = d;
-      best = Nearest{k, arc, at};
+      best = PointOnStreet{k, arc, at};
     }
   }
   return best;
@@ -61,7 +55,8 @@ Eigen::Vector2d headingTo(const Point3& from, const Point3& to) {
 }
 
 /// Whether the street bends at `x` with one leg running on along `dir`.
-bool bendLinesUp(const Street& s, const Nearest& x, const Eigen::Vector2d& dir, double leg_m) {
+bool bendLinesUp(const Street& s, const PointOnStreet& x, const Eigen::Vector2d& dir,
+                 double leg_m) {
   const double max_cos = std::cos(30.0 * M_PI / 180.0);
   const Eigen::Vector2d back = headingTo(x.at, pointAtArc(s.centre, x.arc - leg_m));
   const Eigen::Vector2d fwd = headingTo(x.at, pointAtArc(s.centre, x.arc + leg_m));
@@ -74,23 +69,18 @@ bool bendLinesUp(const Street& s, const Nearest& x, const Eigen::Vector2d& dir, 
 void joinBendEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
                   const EdgeConfig& ec, double half_h, GraphBuildStats& st) {
   if (ec.bend_end_reach_m <= 0.0) return;
-  for (std::size_t k = 0; k < streets.size(); ++k)
-    for (const bool at_u : {true, false}) {
-      const int end = at_u ? streets[k].u : streets[k].v;
-      if (streets[k].comp < 0 || !gn.is_end[static_cast<std::size_t>(end)] ||
-          degreeOf(streets, end) != 1)
-        continue;
-      const auto [tip, dir] = tipAndHeading(streets[k].centre, at_u, ec.clear_radius_m);
-      if (dir.isZero()) continue;
-      const auto x =
-          nearestStreetPoint(streets, k, tip, ec.bend_end_reach_m, ec.clear_radius_m, half_h);
-      if (!x || !bendLinesUp(streets[x->street], *x, dir, ec.clear_radius_m)) continue;
-      const int node = insertIntersection(gn, streets, x->at);
-      splitStreet(streets, x->street, x->arc, node, spts.pts);
-      (at_u ? streets[k].u : streets[k].v) = node;
-      --st.dead_ends;
-      ++st.bend_end_junctions;
-    }
+  const int joined =
+      joinDeadEnds(gn, streets, spts, ec.clear_radius_m,
+                   [&](std::size_t k, const Point3& tip,
+                       const Eigen::Vector2d& dir) -> std::optional<PointOnStreet> {
+                     const auto x = nearestStreetPoint(streets, k, tip, ec.bend_end_reach_m,
+                                                       ec.clear_radius_m, half_h);
+                     if (!x || !bendLinesUp(streets[x->street], *x, dir, ec.clear_radius_m))
+                       return std::nullopt;
+                     return x;
+                   });
+  st.dead_ends -= static_cast<std::size_t>(joined);
+  st.bend_end_junctions += static_cast<std::size_t>(joined);
 }
 
 }  // namespace slamroute::roadgraph::detail

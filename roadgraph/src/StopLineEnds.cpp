@@ -19,18 +19,12 @@ namespace {
 
 /// Where a dead end's ray meets a street: the street, the arc position along its centreline and
 /// the point.
-struct Crossing {
-  std::size_t street = 0;
-  double arc = 0.0;
-  Point3 at = Point3::Zero();
-};
-
 /// The nearest crossing of the ray tip + t * dir (0 <= t <= reach) with the centreline of a
 /// street other than `self` at more than 30 degrees, at least `margin` from both of its ends.
-std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::size_t self,
-                                    const Point3& tip, const Eigen::Vector2d& dir, double reach,
-                                    double margin, double half_h) {
-  std::optional<Crossing> best;
+std::optional<PointOnStreet> rayCrossing(const std::vector<Street>& streets, std::size_t self,
+                                         const Point3& tip, const Eigen::Vector2d& dir,
+                                         double reach, double margin, double half_h) {
+  std::optional<PointOnStreet> best;
   double best_t = reach;
   const double max_cos = std::cos(30.0 * M_PI / 180.0);
   for (std::size_t k = 0; k < streets.size(); ++k) {
@@ -51,7 +45,7 @@ std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::siz
       const double arc = s + u * (c[i + 1] - c[i]).norm();
       if (std::abs(at.z() - tip.z()) > half_h || arc < margin || arc > len - margin) continue;
       best_t = t;
-      best = Crossing{k, arc, at};
+      best = PointOnStreet{k, arc, at};
     }
   }
   return best;
@@ -62,23 +56,13 @@ std::optional<Crossing> rayCrossing(const std::vector<Street>& streets, std::siz
 void joinStopLineEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
                       const EdgeConfig& ec, double half_h, GraphBuildStats& st) {
   if (ec.stop_line_reach_m <= 0.0) return;
-  for (std::size_t k = 0; k < streets.size(); ++k)
-    for (const bool at_u : {true, false}) {
-      const int end = at_u ? streets[k].u : streets[k].v;
-      if (streets[k].comp < 0 || !gn.is_end[static_cast<std::size_t>(end)] ||
-          degreeOf(streets, end) != 1)
-        continue;
-      const auto [tip, dir] = tipAndHeading(streets[k].centre, at_u, ec.stop_line_reach_m);
-      if (dir.isZero()) continue;
-      const auto x =
-          rayCrossing(streets, k, tip, dir, ec.stop_line_reach_m, ec.clear_radius_m, half_h);
-      if (!x) continue;
-      const int node = insertIntersection(gn, streets, x->at);
-      splitStreet(streets, x->street, x->arc, node, spts.pts);
-      (at_u ? streets[k].u : streets[k].v) = node;
-      --st.dead_ends;
-      ++st.stop_line_junctions;
-    }
+  const int joined = joinDeadEnds(
+      gn, streets, spts, ec.stop_line_reach_m,
+      [&](std::size_t k, const Point3& tip, const Eigen::Vector2d& dir) {
+        return rayCrossing(streets, k, tip, dir, ec.stop_line_reach_m, ec.clear_radius_m, half_h);
+      });
+  st.dead_ends -= static_cast<std::size_t>(joined);
+  st.stop_line_junctions += static_cast<std::size_t>(joined);
 }
 
 }  // namespace slamroute::roadgraph::detail

@@ -46,4 +46,27 @@ int insertIntersection(GraphNodes& gn, std::vector<Street>& streets, const Point
   return at;
 }
 
+int joinDeadEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
+                 double heading_m,
+                 const std::function<std::optional<PointOnStreet>(std::size_t, const Point3&,
+                                                                  const Eigen::Vector2d&)>& find) {
+  int joined = 0;
+  for (std::size_t k = 0; k < streets.size(); ++k)
+    for (const bool at_u : {true, false}) {
+      const int end = at_u ? streets[k].u : streets[k].v;
+      if (streets[k].comp < 0 || !gn.is_end[static_cast<std::size_t>(end)] ||
+          degreeOf(streets, end) != 1)
+        continue;
+      const auto [tip, dir] = tipAndHeading(streets[k].centre, at_u, heading_m);
+      if (dir.isZero()) continue;
+      const std::optional<PointOnStreet> x = find(k, tip, dir);
+      if (!x) continue;
+      const int node = insertIntersection(gn, streets, x->at);
+      splitStreet(streets, x->street, x->arc, node, spts.pts);
+      (at_u ? streets[k].u : streets[k].v) = node;
+      ++joined;
+    }
+  return joined;
+}
+
 }  // namespace slamroute::roadgraph::detail

@@ -3,6 +3,7 @@
 // the nodes and their neighbourhoods. GraphBuilder.cpp runs the steps; each file documents its
 // choices.
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -99,6 +100,19 @@ void splitStreet(std::vector<Street>& streets, std::size_t k, double arc, int no
 
 /// Streets ending at node n.
 int degreeOf(const std::vector<Street>& streets, int n);
+/// A point on a street: its index, arc position along the centreline and the point.
+struct PointOnStreet {
+  std::size_t street = 0;
+  double arc = 0.0;
+  Point3 at = Point3::Zero();
+};
+/// Every dead end (a node only street k ends at) is offered to `find` with its tip and heading
+/// over `heading_m`; where `find` names a point on another street, that street is split there at
+/// a new intersection and street k ends at it. Returns how many ends were joined (StreetSplit.cpp).
+int joinDeadEnds(GraphNodes& gn, std::vector<Street>& streets, const StreetPoints& spts,
+                 double heading_m,
+                 const std::function<std::optional<PointOnStreet>(std::size_t, const Point3&,
+                                                                  const Eigen::Vector2d&)>& find);
 /// A new intersection node at p: inserted after the intersections, the end nodes move up one.
 int insertIntersection(GraphNodes& gn, std::vector<Street>& streets, const Point3& p);
 
