@@ -205,9 +205,10 @@ struct LoopConfig {
   double ambiguity_inlier_margin = 0.0;
   double ambiguity_rival_share = 0.98;
   /// ... and refused when the match's horizontal conditioning (weakest over strongest direction
-  /// of what the matched planes tell, horizontalConditioning) is below this: on a bridge deck
-  /// between uniform parapets (~0.02) ICP stays near where it started along the deck, a metre
-  /// or more off, without a rival standing out; a street's doors and posts give 0.1-0.4. 0 = off
+  /// of what the matched planes tell, horizontalConditioning) is below this: between two long
+  /// plain walls (a bridge deck's parapets) ICP stays near where it started along the street,
+  /// a metre or more off, without a rival standing out. Half the fleet merge's 0.1, which
+  /// judges closures between cars with no odometry between them. 0 = off
   double min_horizontal_conditioning = 0.05;
   /// A closure may move the new keyframe at most max_correction_m plus correction_per_m times
   /// the distance driven since the last accepted closure; a larger jump is taken for a look-alike
