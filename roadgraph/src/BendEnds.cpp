@@ -20,7 +20,6 @@
 namespace slamroute::roadgraph::detail {
 namespace {
 
-/// The point of a street's centreline nearest to a tip: the street, its arc position, the point.
 /// The nearest centreline point to `tip` within `reach` (2D, within half_h in height) on a
 /// street other than `self`, at least `margin` from both of its ends.
 std::optional<PointOnStreet> nearestStreetPoint(const std::vector<Street>& streets,

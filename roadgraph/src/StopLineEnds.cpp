@@ -17,8 +17,6 @@
 namespace slamroute::roadgraph::detail {
 namespace {
 
-/// Where a dead end's ray meets a street: the street, the arc position along its centreline and
-/// the point.
 /// The nearest crossing of the ray tip + t * dir (0 <= t <= reach) with the centreline of a
 /// street other than `self` at more than 30 degrees, at least `margin` from both of its ends.
 std::optional<PointOnStreet> rayCrossing(const std::vector<Street>& streets, std::size_t self,

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+
+#include "RecentMedian.hpp"
 
 namespace slamroute::evaluate::slam {
 
@@ -24,13 +27,12 @@ void TiltBias::addClosure(int old_kf, double correction_z_m) {
   const double path = path_m_[n] - path_m_[f];
   if (path < c.tilt_bias_min_path_m || !std::isfinite(correction_z_m)) return;
   // correction = (b - b_in_effect) x path, so b = mean b_in_effect + correction / path.
-  implied_rad_.push_back((bias_path_[n] - bias_path_[f] + correction_z_m) / path);
-  if (static_cast<int>(implied_rad_.size()) > c.tilt_bias_closures) implied_rad_.pop_front();
-  if (static_cast<int>(implied_rad_.size()) < c.tilt_bias_min_closures) return;
-  std::vector<double> b(implied_rad_.begin(), implied_rad_.end());
-  std::nth_element(b.begin(), b.begin() + static_cast<long>(b.size() / 2), b.end());
+  const std::optional<double> b =
+      pushRecentMedian(implied_rad_, (bias_path_[n] - bias_path_[f] + correction_z_m) / path,
+                       c.tilt_bias_closures, c.tilt_bias_min_closures);
+  if (!b) return;
   const double max_rad = c.tilt_bias_max_deg * std::numbers::pi / 180.0;
-  bias_rad_ = std::clamp(b[b.size() / 2], -max_rad, max_rad);
+  bias_rad_ = std::clamp(*b, -max_rad, max_rad);
 }
 
 }  // namespace slamroute::evaluate::slam

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <optional>
+
+#include "RecentMedian.hpp"
 
 namespace slamroute::evaluate::slam {
 
@@ -12,13 +14,10 @@ void WheelScale::observe(double wheel_m, double lidar_m) {
   wheel_sum_m_ += wheel_m;
   lidar_sum_m_ += lidar_m;
   if (wheel_sum_m_ < c.wheel_scale_stretch_m) return;
-  ratios_.push_back(lidar_sum_m_ / wheel_sum_m_);
+  const std::optional<double> r = pushRecentMedian(
+      ratios_, lidar_sum_m_ / wheel_sum_m_, c.wheel_scale_stretches, c.wheel_scale_min_stretches);
   wheel_sum_m_ = lidar_sum_m_ = 0.0;
-  if (static_cast<int>(ratios_.size()) > c.wheel_scale_stretches) ratios_.pop_front();
-  if (static_cast<int>(ratios_.size()) < c.wheel_scale_min_stretches) return;
-  std::vector<double> r(ratios_.begin(), ratios_.end());
-  std::nth_element(r.begin(), r.begin() + static_cast<long>(r.size() / 2), r.end());
-  scale_ = std::clamp(r[r.size() / 2], 1.0 - c.wheel_scale_max, 1.0 + c.wheel_scale_max);
+  if (r) scale_ = std::clamp(*r, 1.0 - c.wheel_scale_max, 1.0 + c.wheel_scale_max);
 }
 
 }  // namespace slamroute::evaluate::slam
