@@ -82,6 +82,8 @@ void SumoMatchConfig::validate() const {
   requireNonNegative("end_skip_m", end_skip_m, 1000.0);
   requireNonNegative("stray_radius_m", stray_radius_m, 1000.0);
   requireNonNegative("stray_min_length_m", stray_min_length_m, 1e5);
+  requireNonNegative("connector_max_m", connector_max_m, 100.0);
+  requireRange("bridged_end_max_samples", bridged_end_max_samples, 0, 1000);
   requireNonNegative("turn_max_detour_m", turn_max_detour_m, 1e5);
   requireNonNegative("place_link_max_m", place_link_max_m, 1000.0);
 }

@@ -232,8 +232,14 @@ struct SumoMatchConfig {
   double end_skip_m = 8.0;           ///< samples this close to an end node are skipped [m]
   double stray_radius_m = 25.0;      ///< end edge arriving at u / leaving v this close: stray [m]
   double stray_min_length_m = 20.0;  ///< shorter end edges (junction complexes) are kept [m]
-  bool turns_from_net = true;        ///< turn permissions of the graph from the net's connections
-  double turn_max_detour_m = 60.0;   ///< SUMO edges allowed between two graph edges at a turn [m]
+  /// End edges shorter than this are connectors between two junctions a fraction of a metre
+  /// apart (OSM nets: Bologna's 203[1]b, 0.2 m) and are dropped from chain ends [m].
+  double connector_max_m = 1.0;
+  /// Chain end edges matched by at most this many samples that SUMO joins to the chain only
+  /// through other edges are lanes of another arm beside the node, and are dropped.
+  int bridged_end_max_samples = 2;
+  bool turns_from_net = true;       ///< turn permissions of the graph from the net's connections
+  double turn_max_detour_m = 60.0;  ///< SUMO edges allowed between two graph edges at a turn [m]
   /// Place-level validation: intersections joined by a street whose ends lie this close are one
   /// place, the net's junctions and the graph's nodes alike [m]. 38 m: the junctions that SUMO
   /// joins by an edge of at most 25 m between their shapes lie 10-37 m apart (centre to centre)
@@ -249,6 +255,11 @@ void visitFields(V& v, SumoMatchConfig& c) {
   v.field("stray_radius_m", c.stray_radius_m,
           "chain end edge arriving at the start / leaving the end node this close is dropped [m]");
   v.field("stray_min_length_m", c.stray_min_length_m, "shorter chain end edges are kept [m]");
+  v.field("connector_max_m", c.connector_max_m,
+          "chain end edges shorter than this (connectors between junctions) are dropped [m]");
+  v.field("bridged_end_max_samples", c.bridged_end_max_samples,
+          "chain end edges with at most this many samples, joined to the chain only through "
+          "other edges, are dropped");
   v.field("turns_from_net", c.turns_from_net,
           "turn permissions of the graph from the net (no U-turn where SUMO has none)");
   v.field("turn_max_detour_m", c.turn_max_detour_m,
