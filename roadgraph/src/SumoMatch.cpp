@@ -591,20 +591,19 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
     ge.sumo_edges = bridgedIds(chain, lanes, gaps);
     if (ge.sumo_edges.empty()) ++unmapped;
   }
-  if (dropped > 0)
-    logInfo("build-graph: " + std::to_string(dropped) +
-            " SUMO edge match(es) dropped that no drivable chain along their graph edge passes");
-  if (strays > 0)
-    logInfo("build-graph: " + std::to_string(strays) +
-            " SUMO edge(s) dropped from chain ends that arrive at the start node or leave the end "
-            "node");
-  if (connectors > 0)
-    logInfo("build-graph: " + std::to_string(connectors) +
-            " connector edge(s) (shorter than sumo.connector_max_m) dropped from chain ends");
-  if (bridged > 0)
-    logInfo("build-graph: " + std::to_string(bridged) +
-            " weakly matched SUMO edge(s) joined to their chain only by a bridge dropped from "
-            "chain ends");
+  const auto report = [](std::size_t n, const std::string& what) {
+    if (n > 0) logInfo("build-graph: " + std::to_string(n) + " " + what);
+  };
+  report(dropped,
+         "SUMO edge match(es) dropped that no drivable chain along their graph edge passes");
+  report(
+      strays,
+      "SUMO edge(s) dropped from chain ends that arrive at the start node or leave the end node");
+  report(connectors,
+         "connector edge(s) (shorter than sumo.connector_max_m) dropped from chain ends");
+  report(bridged,
+         "weakly matched SUMO edge(s) joined to their chain only by a bridge dropped from chain "
+         "ends");
   if (gaps > 0)
     logWarn("build-graph: " + std::to_string(gaps) +
             " gap(s) between consecutive SUMO edges could not be bridged");
