@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <set>
 
@@ -72,15 +73,14 @@ Contacts nodeContacts(const StreetContext& ctx, const std::vector<int>& mem,
   return c;
 }
 
-/// The branch point: the member with the least sum of geodesic distances to the first `placing`
-/// contacts.
+/// The branch point: the member with the least sum of geodesic distances to the contacts `use`.
 int branchPoint(const std::vector<int>& mem, const std::vector<std::vector<double>>& d,
-                std::size_t placing) {
+                const std::vector<std::size_t>& use) {
   int centre = -1;
   double best_sum = std::numeric_limits<double>::infinity();
   for (int i : mem) {
     double sum = 0.0;
-    for (std::size_t e = 0; e < placing; ++e) sum += d[e][static_cast<std::size_t>(i)];
+    for (std::size_t e : use) sum += d[e][static_cast<std::size_t>(i)];
     if (sum < best_sum) {
       best_sum = sum;
       centre = i;
@@ -213,14 +213,10 @@ std::optional<BesideHub> hubBesideBranchPoint(const StreetContext& ctx, const st
   double best_dist = ctx.ec.attach_max_m;
   for (std::size_t h = 0; h < contacts.ends.size(); ++h) {
     if (contacts.ends[h] < 0) continue;
-    std::vector<std::vector<double>> others;
     std::vector<std::size_t> index;
     for (std::size_t e = 0; e < d.size(); ++e)
-      if (e != h) {
-        others.push_back(d[e]);
-        index.push_back(e);
-      }
-    const int centre = branchPoint(mem, others, others.size());
+      if (e != h) index.push_back(e);
+    const int centre = branchPoint(mem, d, index);
     if (centre < 0) continue;
     const auto C = static_cast<std::size_t>(centre);
     const Point3& node = ctx.nodes[static_cast<std::size_t>(contacts.ends[h])];
@@ -255,7 +251,9 @@ bool splitAtPassedNode(const StreetContext& ctx, int c, const Street& s, int na,
     geodesic(ctx.spts.pts, ctx.sp_grid, ctx.spts.label, c, ec.cluster_tolerance_m,
              contacts.member[e], d[e]);
   }
-  const int centre = branchPoint(mem, d, contacts.placing);
+  std::vector<std::size_t> placing(contacts.placing);
+  std::iota(placing.begin(), placing.end(), std::size_t{0});
+  const int centre = branchPoint(mem, d, placing);
   if (centre < 0) return false;
   auto C = static_cast<std::size_t>(centre);
   std::vector<std::size_t> branch;  // contacts at the end of a real branch
