@@ -18,7 +18,8 @@ PARAMS = [
     ("odometry", "imu_tilt_weight"), ("odometry", "wheel_translation_slack_m"),
     ("odometry", "wheel_rotation_slack_deg"), ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"),
     ("loop", "graph_odom_sigma_m"), ("loop", "graph_odom_sigma_rad"), ("loop", "graph_loop_sigma_m"),
-    ("loop", "graph_loop_sigma_rad"), ("loop", "fitness_m2"),
+    ("loop", "graph_loop_sigma_rad"), ("loop", "fitness_m2"), ("loop", "graph_imu_pitch_sigma_deg"),
+    ("loop", "graph_pitch_bias_sigma_deg"),
 ]
 # Those that act without wheel odometry (the odometry prior and slacks do not), plus the motion
 # model's turn figures that only act then.

@@ -137,6 +137,8 @@ void LoopConfig::validate() const {
   requirePositive("graph_odom_sigma_rad", graph_odom_sigma_rad);
   requirePositive("graph_loop_sigma_m", graph_loop_sigma_m);
   requirePositive("graph_loop_sigma_rad", graph_loop_sigma_rad);
+  requireRange("graph_imu_pitch_sigma_deg", graph_imu_pitch_sigma_deg, 0.0, 10.0);
+  requireRange("graph_pitch_bias_sigma_deg", graph_pitch_bias_sigma_deg, 0.0, 10.0);
   requireNonNegative("place_gate_per_m", place_gate_per_m);
   if (!(place_gate_max_m >= radius_m && std::isfinite(place_gate_max_m)))
     rejectValue("place_gate_max_m", place_gate_max_m, ">= radius_m");

@@ -3,6 +3,8 @@
 
 #include <ceres/ceres.h>
 
+#include <array>
+#include <cmath>
 #include <stdexcept>
 
 namespace slamroute::evaluate {
@@ -32,21 +34,54 @@ struct RelativePoseError {
   double wt, wr;
 };
 
-}  // namespace
+/// pitch(q) - (imu - b), in sigmas; with R = Rz(yaw) Ry(pitch) Rx(roll), R(2,0) = -sin(pitch).
+struct PitchError {
+  PitchError(double imu_pitch_rad, double sigma_rad) : imu(imu_pitch_rad), w(1.0 / sigma_rad) {}
 
-PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
-                                  const std::vector<PoseGraphEdge>& edges, int fixed) {
-  PoseGraphResult out;
-  if (poses.empty()) return out;
-  const int n = static_cast<int>(poses.size());
-  std::vector<std::array<double, 3>> p(poses.size());
-  std::vector<std::array<double, 4>> q(poses.size());
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    const Eigen::Quaterniond qq(poses[i].rotation());
-    p[i] = {poses[i].translation().x(), poses[i].translation().y(), poses[i].translation().z()};
-    q[i] = {qq.x(), qq.y(), qq.z(), qq.w()};
+  template <class T>
+  bool operator()(const T* q, const T* b, T* res) const {
+    const T r20 = T(2.0) * (q[0] * q[2] - q[3] * q[1]);  // q = (x, y, z, w)
+    const T pitch = asin(-r20);
+    res[0] = T(w) * (pitch - (T(imu) - b[0]));
+    return true;
   }
-  ceres::Problem problem;
+  double imu, w;
+};
+
+struct BiasPrior {
+  BiasPrior(double prior_rad, double sigma_rad) : prior(prior_rad), w(1.0 / sigma_rad) {}
+  template <class T>
+  bool operator()(const T* b, T* res) const {
+    res[0] = T(w) * (b[0] - T(prior));
+    return true;
+  }
+  double prior, w;
+};
+
+/// The graph's unknowns in Ceres' layout: positions, quaternions (x, y, z, w), the pitch bias.
+struct Unknowns {
+  explicit Unknowns(const std::vector<Pose3>& poses) : p(poses.size()), q(poses.size()) {
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+      const Eigen::Quaterniond qq(poses[i].rotation());
+      const Vec3 t = poses[i].translation();
+      p[i] = {t.x(), t.y(), t.z()};
+      q[i] = {qq.x(), qq.y(), qq.z(), qq.w()};
+    }
+  }
+  Pose3 pose(std::size_t i) const {
+    Pose3 T = Pose3::Identity();
+    T.linear() =
+        Eigen::Quaterniond(q[i][3], q[i][0], q[i][1], q[i][2]).normalized().toRotationMatrix();
+    T.translation() = Vec3(p[i][0], p[i][1], p[i][2]);
+    return T;
+  }
+  std::vector<std::array<double, 3>> p;
+  std::vector<std::array<double, 4>> q;
+  double bias = 0.0;
+};
+
+void addEdges(ceres::Problem& problem, Unknowns& x, const std::vector<PoseGraphEdge>& edges) {
+  const auto n = static_cast<int>(x.p.size());
   for (const auto& e : edges) {
     if (e.from < 0 || e.to < 0 || e.from >= n || e.to >= n)
       throw std::invalid_argument("optimizePoseGraph: edge refers to a missing node");
@@ -55,16 +90,49 @@ PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
     const auto a = static_cast<std::size_t>(e.from), b = static_cast<std::size_t>(e.to);
     ceres::LossFunction* loss =
         e.cauchy_sigmas > 0.0 ? new ceres::CauchyLoss(e.cauchy_sigmas) : nullptr;
-    problem.AddResidualBlock(cost, loss, p[a].data(), q[a].data(), p[b].data(), q[b].data());
+    problem.AddResidualBlock(cost, loss, x.p[a].data(), x.q[a].data(), x.p[b].data(),
+                             x.q[b].data());
   }
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    if (!problem.HasParameterBlock(q[i].data())) continue;
-    problem.SetManifold(q[i].data(), new ceres::EigenQuaternionManifold);
+}
+
+void addPitchFactors(ceres::Problem& problem, Unknowns& x, const PitchFactors& f) {
+  x.bias = f.bias_prior_rad;
+  if (!(f.sigma_rad > 0)) return;
+  if (f.imu_pitch_rad.size() != x.q.size())
+    throw std::invalid_argument("optimizePoseGraph: one IMU pitch per node expected");
+  for (std::size_t i = 0; i < x.q.size(); ++i) {
+    if (!std::isfinite(f.imu_pitch_rad[i]) || !problem.HasParameterBlock(x.q[i].data())) continue;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PitchError, 1, 4, 1>(
+                                 new PitchError(f.imu_pitch_rad[i], f.sigma_rad)),
+                             nullptr, x.q[i].data(), &x.bias);
   }
+  if (!problem.HasParameterBlock(&x.bias)) return;
+  if (f.bias_sigma_rad > 0)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<BiasPrior, 1, 1>(
+                                 new BiasPrior(f.bias_prior_rad, f.bias_sigma_rad)),
+                             nullptr, &x.bias);
+  else
+    problem.SetParameterBlockConstant(&x.bias);
+}
+
+}  // namespace
+
+PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
+                                  const std::vector<PoseGraphEdge>& edges, int fixed,
+                                  const PitchFactors& pitch) {
+  PoseGraphResult out;
+  if (poses.empty()) return out;
+  Unknowns x(poses);
+  ceres::Problem problem;
+  addEdges(problem, x, edges);
+  addPitchFactors(problem, x, pitch);
+  for (auto& q : x.q)
+    if (problem.HasParameterBlock(q.data()))
+      problem.SetManifold(q.data(), new ceres::EigenQuaternionManifold);
   const auto f = static_cast<std::size_t>(fixed);
-  if (problem.HasParameterBlock(p[f].data())) {
-    problem.SetParameterBlockConstant(p[f].data());
-    problem.SetParameterBlockConstant(q[f].data());
+  if (problem.HasParameterBlock(x.p[f].data())) {
+    problem.SetParameterBlockConstant(x.p[f].data());
+    problem.SetParameterBlockConstant(x.q[f].data());
   }
   ceres::Solver::Options opt;
   opt.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
@@ -76,13 +144,8 @@ PoseGraphResult optimizePoseGraph(std::vector<Pose3>& poses,
   out.final_cost = summary.final_cost;
   out.iterations = static_cast<int>(summary.iterations.size());
   out.converged = summary.termination_type == ceres::CONVERGENCE;
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    Pose3 T = Pose3::Identity();
-    T.linear() =
-        Eigen::Quaterniond(q[i][3], q[i][0], q[i][1], q[i][2]).normalized().toRotationMatrix();
-    T.translation() = Vec3(p[i][0], p[i][1], p[i][2]);
-    poses[i] = T;
-  }
+  out.pitch_bias_rad = x.bias;
+  for (std::size_t i = 0; i < poses.size(); ++i) poses[i] = x.pose(i);
   return out;
 }
 

@@ -263,7 +263,7 @@ struct LidarSlam::Impl {
 
   void addKeyframe(double t, const Pose3& T_world, const slam::PreparedScan& p) {
     graph.add(t, static_cast<int>(frames.size()), T_world, p.kf_edges, p.kf_planes,
-              p.features.segmented);
+              p.features.segmented, motion.imuPitchRad(t));
     loop_closer.addPlace(graph, p.features.segmented);
     motion.keyframeAt(T_world.translation());
     bool closed = false;
@@ -272,7 +272,9 @@ struct LidarSlam::Impl {
       closed = loop_closer.tryClose(graph, times);
       times.loop_closure += cpuSince(t0);
     }
-    if (closed) {
+    if (closed && graph.estimatesPitchBias()) {
+      motion.assumePitchBias(graph.pitchBiasRad());
+    } else if (closed) {
       const LoopClosure& l = loop_closer.stats().loops.back();
       motion.measureTilt(l.from_keyframe, l.correction_z_m);
     }
@@ -316,6 +318,8 @@ struct LidarSlam::Impl {
 
 SlamResult LidarSlam::Impl::finish() {
   SlamResult out;
+  // The path after the last closure is levelled by the IMU pitch factors too.
+  if (graph.estimatesPitchBias() && graph.size() > 1) graph.optimize();
   for (const auto& r : frames) {
     StampedPose sp;
     sp.t = r.t;

@@ -1,6 +1,8 @@
 // The keyframe graph and the loop closer of the SLAM (evaluate/src/slam/) on known geometry.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "SyntheticScene.hpp"
@@ -63,6 +65,30 @@ TEST(KeyframeGraph, OdometryEdgesChainTheKeyframesAndALoopPullsThemBack) {
   EXPECT_NEAR(g.at(3).T_world.translation().x(), 27.0, 0.05);
   EXPECT_NEAR(g.at(0).T_world.translation().x(), 0.0, 1e-9);  // the first keyframe is held
   EXPECT_EQ(g.drivenSinceLoop(), 0.0);
+}
+
+/// Keyframes 10 m apart along x, level, the IMU reading `imu_deg` nose down at each; optimised.
+std::vector<double> pitchesDegAfterOptimising(double imu_sigma_deg, double imu_deg) {
+  constexpr double deg = std::numbers::pi / 180.0;
+  Config cfg;
+  cfg.loop.graph_imu_pitch_sigma_deg = imu_sigma_deg;
+  cfg.loop.graph_pitch_bias_sigma_deg = 0.0;  // the bias held at 0: the IMU is taken as read
+  slam::KeyframeGraph g(cfg);
+  const Cloud some = {{1, 0, 0}, {0, 1, 0}};
+  for (int k = 0; k < 5; ++k)
+    g.add(10.0 * k, k, at(10.0 * k, 0.0), some, some, some, imu_deg * deg);
+  g.optimize();
+  std::vector<double> out;
+  for (std::size_t k = 0; k < g.size(); ++k)
+    out.push_back(std::asin(-g.at(k).T_world.linear()(2, 0)) / deg);
+  return out;
+}
+
+TEST(KeyframeGraph, TheIMUPitchFactorsTiltTheKeyframesOnlyWhenAsked) {
+  for (double p : pitchesDegAfterOptimising(0.0, 0.3)) EXPECT_NEAR(p, 0.0, 1e-9);
+  const std::vector<double> tied = pitchesDegAfterOptimising(0.1, 0.3);
+  EXPECT_NEAR(tied[0], 0.0, 1e-9);  // the first keyframe is held
+  for (std::size_t k = 1; k < tied.size(); ++k) EXPECT_NEAR(tied[k], 0.3, 0.1) << k;
 }
 
 TEST(LoopCloser, ARevisitWithDriftClosesAndCorrectsIt) {

@@ -1,6 +1,7 @@
 #include "KeyframeGraph.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <stdexcept>
 
 namespace slamroute::evaluate::slam {
@@ -12,8 +13,9 @@ void KeyframeGraph::keepCloudsOnDisk(const std::filesystem::path& dir) {
 }
 
 void KeyframeGraph::add(double t, int frame, const Pose3& T_world, const Cloud& edges,
-                        const Cloud& planes, const Cloud& segmented) {
+                        const Cloud& planes, const Cloud& segmented, double imu_pitch_rad) {
   Keyframe kf;
+  kf.imu_pitch_rad = imu_pitch_rad;
   kf.t = t;
   kf.frame = frame;
   kf.T_world = T_world;
@@ -43,12 +45,23 @@ void KeyframeGraph::add(double t, int frame, const Pose3& T_world, const Cloud& 
 void KeyframeGraph::closeLoop(const PoseGraphEdge& edge) {
   loop_edges_.push_back(edge);
   driven_since_loop_ = 0.0;
+  optimize();
+}
+
+void KeyframeGraph::optimize() {
   std::vector<Pose3> poses;
   poses.reserve(kfs_.size());
   for (const auto& kf : kfs_) poses.push_back(kf.T_world);
   std::vector<PoseGraphEdge> edges = odom_edges_;
   edges.insert(edges.end(), loop_edges_.begin(), loop_edges_.end());
-  optimizePoseGraph(poses, edges, 0);
+  PitchFactors pitch;
+  if (estimatesPitchBias()) {
+    constexpr double deg = std::numbers::pi / 180.0;
+    pitch.sigma_rad = cfg_.loop.graph_imu_pitch_sigma_deg * deg;
+    pitch.bias_sigma_rad = cfg_.loop.graph_pitch_bias_sigma_deg * deg;
+    for (const auto& kf : kfs_) pitch.imu_pitch_rad.push_back(kf.imu_pitch_rad);
+  }
+  pitch_bias_rad_ = optimizePoseGraph(poses, edges, 0, pitch).pitch_bias_rad;
   for (std::size_t k = 0; k < kfs_.size(); ++k) kfs_[k].T_world = poses[k];
 }
 

@@ -3,6 +3,7 @@
 // clouds (all, for loop closure and the map), odometry edges between consecutive keyframes and
 // loop edges, optimised with Ceres when a loop closes (paper §3.3, LeGO-LOAM "mapOptimization").
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct Keyframe {
   Pose3 T_world = Pose3::Identity();
   Cloud edges, planes;  ///< body frame, voxel-filtered; freed once out of the local map's reach
   int cloud = -1;       ///< in the CloudStore: body frame, segmented points at output.map_voxel_m
+  double imu_pitch_rad = std::numeric_limits<double>::quiet_NaN();  ///< at t; NaN: no IMU
 };
 
 class KeyframeGraph {
@@ -29,9 +31,15 @@ class KeyframeGraph {
 
   /// Appends a keyframe and its odometry edge from the previous one.
   void add(double t, int frame, const Pose3& T_world, const Cloud& edges, const Cloud& planes,
-           const Cloud& segmented);
+           const Cloud& segmented, double imu_pitch_rad = std::numeric_limits<double>::quiet_NaN());
   /// Adds a loop edge and re-optimises every keyframe pose.
   void closeLoop(const PoseGraphEdge& edge);
+  /// Re-optimises every keyframe pose (with the IMU pitch factors when
+  /// loop.graph_imu_pitch_sigma_deg > 0) and re-estimates the IMU pitch bias.
+  void optimize();
+  bool estimatesPitchBias() const { return cfg_.loop.graph_imu_pitch_sigma_deg > 0; }
+  /// The IMU pitch bias of the last optimisation (0 before it or when not estimated) [rad].
+  double pitchBiasRad() const { return pitch_bias_rad_; }
 
   std::size_t size() const { return kfs_.size(); }
   bool empty() const { return kfs_.empty(); }
@@ -48,6 +56,7 @@ class KeyframeGraph {
   std::unique_ptr<CloudStore> clouds_;
   std::vector<PoseGraphEdge> odom_edges_, loop_edges_;
   double driven_since_loop_ = 0.0;
+  double pitch_bias_rad_ = 0.0;
 };
 
 }  // namespace slamroute::evaluate::slam

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -130,6 +131,11 @@ Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {
   if (!a) return T_world;
   return evaluate::levelled(T_world, a->roll_rad, a->pitch_rad - tilt_bias_.pitchBias(),
                             cfg_.odometry.imu_tilt_weight);
+}
+
+double MotionModel::imuPitchRad(double t) const {
+  const auto a = odometry_.attitude(t);
+  return a ? a->pitch_rad : std::numeric_limits<double>::quiet_NaN();
 }
 
 void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,

@@ -68,7 +68,11 @@ class MotionModel {
   void measureTilt(int old_kf, double correction_z_m) {
     tilt_bias_.addClosure(old_kf, correction_z_m);
   }
+  /// The pose graph's estimate (LoopConfig::graph_imu_pitch_sigma_deg) in place of measureTilt's.
+  void assumePitchBias(double bias_rad) { tilt_bias_.assume(bias_rad); }
   double pitchBiasRad() const { return tilt_bias_.pitchBias(); }
+  /// The IMU's pitch at t as read, bias included [rad]; NaN without an IMU.
+  double imuPitchRad(double t) const;
   /// Records the pose the frame at t ended with (the next prediction starts there).
   void recordFrame(double t, const Pose3& T_world);
 

@@ -27,6 +27,8 @@ class TiltBias {
   void addClosure(int old_kf, double correction_z_m);
   /// The pitch bias to take off the IMU's readings [rad]; 0 until enough closures.
   double pitchBias() const { return bias_rad_; }
+  /// Takes a bias estimated elsewhere (the pose graph's) from now on [rad].
+  void assume(double bias_rad) { bias_rad_ = bias_rad; }
 
  private:
   const OdometryConfig& cfg_;

@@ -237,6 +237,13 @@ struct LoopConfig {
   double graph_odom_sigma_rad = 0.005;  ///< pose-graph odometry edge sigma (rotation) [rad]
   double graph_loop_sigma_m = 0.1;      ///< loop edge sigma (translation) [m]
   double graph_loop_sigma_rad = 0.01;   ///< loop edge sigma (rotation) [rad]
+  /// > 0: every keyframe's pitch is tied to the IMU's less its bias b, an unknown of the graph
+  /// with a prior of 0 +- graph_pitch_bias_sigma_deg (PitchFactors): a closure's height mismatch
+  /// then estimates b instead of bending the chain; the front end levels with b after each
+  /// closure (in place of odometry.tilt_bias_*) and the graph is optimised once more at the end.
+  /// The default is the simulated IMU's white noise (drive.odometry.tilt_noise_deg) [deg]; 0 = off.
+  double graph_imu_pitch_sigma_deg = 0.1;
+  double graph_pitch_bias_sigma_deg = 0.2;  ///< [deg]
   /// LiDAR-only runs (no wheel odometry): when no old keyframe lies within radius_m of the
   /// estimate (the drift since the last closure may be larger), a keyframe whose place
   /// descriptor matches is a candidate too, within a gate
@@ -476,6 +483,10 @@ void visitFields(V& v, LoopConfig& c) {
   v.field("graph_odom_sigma_rad", c.graph_odom_sigma_rad, "odometry edge sigma [rad]");
   v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");
   v.field("graph_loop_sigma_rad", c.graph_loop_sigma_rad, "loop edge sigma [rad]");
+  v.field("graph_imu_pitch_sigma_deg", c.graph_imu_pitch_sigma_deg,
+          "keyframe pitch tied to the IMU's less an estimated bias, sigma (0 = off) [deg]");
+  v.field("graph_pitch_bias_sigma_deg", c.graph_pitch_bias_sigma_deg,
+          "prior sigma of that IMU pitch bias [deg]");
   v.field("place_recognition", c.place_recognition,
           "LiDAR-only: candidates by place descriptor when none is near the estimate");
   v.field("place_gate_per_m", c.place_gate_per_m,
