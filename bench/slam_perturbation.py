@@ -8,8 +8,8 @@
 # there is no wheel odometry)
 # (--set evaluate settings every run starts from, e.g. --set odometry.use_wheel_odometry=false)
 # Evaluations go to OUT_DIR/<drive>/<param>_<sign>/ (kept, so a rerun resumes); --report-only prints
-# the table from the evaluations finished so far (how many of the 25 per drive it says). Standard
-# library only.
+# the table from the evaluations finished so far (how many of the 2 x len(PARAMS) + 1 per drive it
+# says). Standard library only.
 import argparse, concurrent.futures, json, os, subprocess, sys
 
 # (section, key): the weights and noise figures of the SLAM (sigmas, robust kernel, blending).
