@@ -124,6 +124,8 @@ void LoopConfig::validate() const {
   requireNonNegative("ambiguity_separation_m", ambiguity_separation_m);
   requirePositive("ambiguity_rival_share", ambiguity_rival_share);
   requireRange("min_horizontal_conditioning", min_horizontal_conditioning, 0.0, 1.0);
+  if (!std::isfinite(submap_agreement_m))
+    rejectValue("submap_agreement_m", submap_agreement_m, "finite");
   if (!std::isfinite(max_correction_m)) rejectValue("max_correction_m", max_correction_m, "finite");
   requireNonNegative("correction_per_m", correction_per_m);
   requireNonNegative("window_per_m", window_per_m);

@@ -29,6 +29,15 @@ IcpAmbiguity loopAmbiguity(const LoopConfig& c) {
   a.accept = IcpAcceptance{c.fitness_m2, c.min_inlier_ratio};
   return a;
 }
+
+SubmapAgreementOptions loopSubmapAgreement(const LoopConfig& c) {
+  SubmapAgreementOptions o;
+  o.icp_iterations = c.icp_iterations;
+  o.icp_max_corr_m = c.icp_max_corr_m;
+  o.accept = IcpAcceptance{c.fitness_m2, c.min_inlier_ratio};
+  return o;
+}
+
 namespace {
 
 /// |a - b| wrapped into [0, pi].

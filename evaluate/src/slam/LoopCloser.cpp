@@ -10,6 +10,7 @@
 #include "slamroute/evaluate/CorrelativeSearch.hpp"
 #include "slamroute/evaluate/LoopVerification.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
+#include "slamroute/evaluate/SubmapAgreement.hpp"
 
 namespace slamroute::evaluate::slam {
 
@@ -81,19 +82,23 @@ double LoopCloser::searchWindow(const KeyframeGraph& graph) const {
 }
 
 Cloud LoopCloser::submap(const KeyframeGraph& graph, int old_kf, bool structure_only) const {
-  const LoopConfig& c = cfg_.loop;
+  const int each_side = cfg_.loop.submap_keyframes;
+  return keyframeClouds(graph, old_kf - each_side, old_kf + each_side, structure_only);
+}
+
+Cloud LoopCloser::keyframeClouds(const KeyframeGraph& graph, int first, int last,
+                                 bool structure_only) const {
   const Keyframe& cur = graph.back();
   const int n = static_cast<int>(graph.size());
-  Cloud target;
-  for (int k = std::max(0, old_kf - c.submap_keyframes);
-       k <= std::min(n - 2, old_kf + c.submap_keyframes); ++k) {
+  Cloud out;
+  for (int k = std::max(0, first); k <= std::min(n - 2, last); ++k) {
     const Keyframe& kf = graph.at(static_cast<std::size_t>(k));
-    if (cur.t - kf.t < c.min_time_gap_s) continue;
+    if (cur.t - kf.t < cfg_.loop.min_time_gap_s) continue;
     const Cloud& body = graph.clouds().get(kf.cloud);
     const Cloud moved = transformed(structure_only ? structureOf(body) : body, kf.T_world);
-    target.insert(target.end(), moved.begin(), moved.end());
+    out.insert(out.end(), moved.begin(), moved.end());
   }
-  return target;
+  return out;
 }
 
 Cloud LoopCloser::within(const Cloud& cloud, const Vec3& centre, double range_m) {
@@ -160,19 +165,8 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
            ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
            std::to_string(icp.inlier_ratio) + (cand.place ? " (place descriptor)" : ""));
   if (!vo.accept(icp)) return std::nullopt;
-  const IcpAmbiguity amb = loopAmbiguity(c);
-  const IcpRival rival = strongestRival(icp_target, source, icp, amb);
-  logDebug("loop candidate: strongest rival " + std::to_string(rival.apart_m) + " m away, share " +
-           std::to_string(rival.share) + (rival.better ? ", fits better" : ""));
-  if (ambiguousMatch(rival, amb)) {
+  if (!pinnedDown(graph, old_kf, icp_target, source, icp)) {
     ++stats_.ambiguous;
-    return std::nullopt;
-  }
-  const double conditioning = horizontalConditioning(
-      icp_target.translationInformation(source, icp.T_target_source, c.icp_max_corr_m / 3));
-  if (conditioning < c.min_horizontal_conditioning) {
-    ++stats_.ambiguous;
-    logDebug("loop candidate refused: horizontal conditioning " + std::to_string(conditioning));
     return std::nullopt;
   }
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
@@ -184,6 +178,31 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
     return std::nullopt;
   }
   return icp;
+}
+
+bool LoopCloser::pinnedDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
+                            const Cloud& source, const IcpResult& icp) const {
+  const LoopConfig& c = cfg_.loop;
+  const IcpAmbiguity amb = loopAmbiguity(c);
+  const IcpRival rival = strongestRival(target, source, icp, amb);
+  logDebug("loop candidate: strongest rival " + std::to_string(rival.apart_m) + " m away, share " +
+           std::to_string(rival.share) + (rival.better ? ", fits better" : ""));
+  if (ambiguousMatch(rival, amb)) return false;
+  const double conditioning = horizontalConditioning(
+      target.translationInformation(source, icp.T_target_source, c.icp_max_corr_m / 3));
+  if (conditioning < c.min_horizontal_conditioning) {
+    logDebug("loop candidate refused: horizontal conditioning " + std::to_string(conditioning));
+    return false;
+  }
+  if (c.submap_agreement_m < 0) return true;
+  const int each_side = c.submap_keyframes;
+  const std::vector<Cloud> sides{
+      voxelFilter(keyframeClouds(graph, old_kf - each_side, old_kf - 1, false), c.voxel_m),
+      voxelFilter(keyframeClouds(graph, old_kf + 1, old_kf + each_side, false), c.voxel_m)};
+  const SubmapAgreement agreement = submapAgreement(sides, source, icp, loopSubmapAgreement(c));
+  logDebug("loop candidate: the submap's sides put it " + std::to_string(agreement.apart_m) +
+           " m apart (" + std::to_string(agreement.sides_matched) + " matched)");
+  return agreement.apart_m <= c.submap_agreement_m;
 }
 
 void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp,

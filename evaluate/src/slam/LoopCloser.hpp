@@ -19,7 +19,9 @@ struct LoopStats {
   std::vector<LoopClosure> loops;  ///< accepted
   int candidates = 0;              ///< ICP attempts
   int rejected = 0;                ///< refused for too large a correction
-  int ambiguous = 0;  ///< refused: ICP from nearby starts fits as well elsewhere, or a corridor
+  /// refused: ICP from nearby starts fits as well elsewhere, a corridor, or a submap whose sides
+  /// put the new keyframe apart
+  int ambiguous = 0;
 };
 
 /// An old keyframe the newest one may revisit, and where its ICP starts.
@@ -54,12 +56,18 @@ class LoopCloser {
   /// ICP of the newest keyframe's cloud against the candidate's submap, with the checks; the
   /// match when it passes them.
   std::optional<IcpResult> verify(const KeyframeGraph& graph, const LoopCandidate& c);
+  /// The match pins the new keyframe down: no rival fits as well, the matched planes hold it
+  /// along the street, and each side of the candidate's submap puts it where the whole does.
+  bool pinnedDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
+                  const Cloud& source, const IcpResult& icp) const;
   /// Half-width of the square searched around the estimate: grows with the path since the last
   /// closure (the drift it may have brought) [m].
   double searchWindow(const KeyframeGraph& graph) const;
   /// The clouds of the candidate's keyframes each side, in the world frame; `structure_only`:
   /// without the ground.
   Cloud submap(const KeyframeGraph& graph, int old_kf, bool structure_only) const;
+  /// The clouds of keyframes first..last old enough to be candidates, in the world frame.
+  Cloud keyframeClouds(const KeyframeGraph& graph, int first, int last, bool structure_only) const;
   Cloud structureOf(const Cloud& body) const;
   /// The points within range_m of centre in x / y.
   static Cloud within(const Cloud& cloud, const Vec3& centre, double range_m);

@@ -210,6 +210,14 @@ struct LoopConfig {
   /// a metre or more off, without a rival standing out. Half the fleet merge's 0.1, which
   /// judges closures between cars with no odometry between them. 0 = off
   double min_horizontal_conditioning = 0.05;
+  /// ... and refused when its submap is not one rigid map: the new keyframe matched against the
+  /// candidate's keyframes before it alone, and against those after it alone (from the whole
+  /// submap's match; a side counts when its match passes the fitness test), ends more than this
+  /// from the whole submap's match (SubmapAgreement.hpp). The relative pose to the candidate is
+  /// then a blend of keyframe poses that disagree (a U-turn dead-reckoned inside the submap).
+  /// Three loop-edge sigmas (graph_loop_sigma_m): beyond that the edge claims an accuracy its
+  /// submap does not have. Negative = off [m]
+  double submap_agreement_m = 0.3;
   /// A closure may move the new keyframe at most max_correction_m plus correction_per_m times
   /// the distance driven since the last accepted closure; a larger jump is taken for a look-alike
   /// place. Off by default: refusing true closures leaves the drift in place. Negative = no
@@ -464,6 +472,9 @@ void visitFields(V& v, LoopConfig& c) {
           "... or fitting as well: this share of the inliers and fitness (>= 1: only better)");
   v.field("min_horizontal_conditioning", c.min_horizontal_conditioning,
           "... or whose weakest over strongest horizontal information is below this (0 = off)");
+  v.field("submap_agreement_m", c.submap_agreement_m,
+          "... or when the submap's keyframes before and after the candidate, matched alone, put "
+          "it farther than this apart (negative = off) [m]");
   v.field("correlative", c.correlative,
           "refuse a candidate that a pose elsewhere in the window fits nearly as well");
   v.field("window_per_m", c.window_per_m,

@@ -7,6 +7,7 @@
 #include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/PlaceDatabase.hpp"
 #include "slamroute/evaluate/Registration.hpp"
+#include "slamroute/evaluate/SubmapAgreement.hpp"
 
 namespace slamroute::evaluate {
 
@@ -26,9 +27,10 @@ struct LoopVerification {
 };
 
 /// The loop closure's ICP checks as configured (LoopConfig): verification of a descriptor's
-/// candidate, and where to look for a better match elsewhere.
+/// candidate, where to look for a better match elsewhere, and the submap's sides matched alone.
 LoopVerifyOptions loopVerifyOptions(const LoopConfig& c);
 IcpAmbiguity loopAmbiguity(const LoopConfig& c);
+SubmapAgreementOptions loopSubmapAgreement(const LoopConfig& c);
 
 /// `target`: the candidate's cloud (or submap) in frame F; `T_F_candidate`: the candidate
 /// keyframe's pose in F; `query_body`: the query keyframe's cloud in its body frame; `c`: the
