@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace slamroute::evaluate {
 namespace {
@@ -375,33 +376,68 @@ double horizontalConditioning(const Mat3& info) {
   return ev(1) > 0.0 ? std::max(0.0, ev(0)) / ev(1) : 0.0;
 }
 
-IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
-                        const IcpAmbiguity& amb) {
-  IcpRival strongest;
-  const Pose3& T = match.T_target_source;
+namespace {
+
+/// The starts of the rival search around `T`: along its heading and across it, both signs.
+std::vector<Pose3> rivalStarts(const Pose3& T, const IcpAmbiguity& amb) {
   Vec3 along = T.rotation().col(0);
   along.z() = 0.0;
-  if (along.norm() < 1e-6) return strongest;
+  if (along.norm() < 1e-6) return {};
   along.normalize();
   const Vec3 across(-along.y(), along.x(), 0.0);
   std::vector<Vec3> shifts;
   for (const double d : amb.along_m) shifts.insert(shifts.end(), {d * along, -d * along});
   for (const double d : amb.across_m) shifts.insert(shifts.end(), {d * across, -d * across});
+  std::vector<Pose3> starts;
   for (const Vec3& shift : shifts) {
     Pose3 init = T;
     init.translation() += shift;
+    starts.push_back(init);
+  }
+  return starts;
+}
+
+/// `r` fits better than `than`: more of the points (by the margin) and a lower fitness.
+bool fitsBetter(const IcpResult& r, const IcpResult& than, const IcpAmbiguity& amb) {
+  return r.inlier_ratio >= than.inlier_ratio + amb.inlier_margin && r.fitness_m2 < than.fitness_m2;
+}
+
+}  // namespace
+
+IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
+                        const IcpAmbiguity& amb) {
+  IcpRival strongest;
+  const Pose3& T = match.T_target_source;
+  for (const Pose3& init : rivalStarts(T, amb)) {
     const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
     IcpRival rival;
     rival.apart_m = (r.T_target_source.translation() - T.translation()).norm();
     if (rival.apart_m <= amb.separation_m || !amb.accept(r)) continue;
     rival.share = std::min(r.inlier_ratio / std::max(match.inlier_ratio, 1e-12),
                            match.fitness_m2 / std::max(r.fitness_m2, 1e-12));
-    rival.better =
-        r.inlier_ratio >= match.inlier_ratio + amb.inlier_margin && r.fitness_m2 < match.fitness_m2;
+    rival.better = fitsBetter(r, match, amb);
     if (rival.better) return rival;
     if (rival.share > strongest.share) strongest = rival;
   }
   return strongest;
+}
+
+std::optional<IcpResult> uniqueMatch(const IcpTarget& target, const Cloud& source,
+                                     const IcpResult& match, const IcpAmbiguity& amb) {
+  const IcpRival rival = strongestRival(target, source, match, amb);
+  if (!rival.better) {
+    if (ambiguousMatch(rival, amb)) return std::nullopt;
+    return match;
+  }
+  // ICP from a drifted start stopped on the wrong features. The first better rival may be
+  // another wrong place: the best fit of every start is the one to test.
+  IcpResult best = match;
+  for (const Pose3& init : rivalStarts(match.T_target_source, amb)) {
+    const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
+    if (amb.accept(r) && fitsBetter(r, best, amb)) best = r;
+  }
+  if (ambiguousMatch(strongestRival(target, source, best, amb), amb)) return std::nullopt;
+  return best;
 }
 
 }  // namespace slamroute::evaluate

@@ -230,6 +230,10 @@ TEST(IcpAmbiguity, AMatchStuckOnTheWrongPillarsHasABetterOneWhereItBelongs) {
   EXPECT_TRUE(rival.better);
   EXPECT_NEAR(rival.apart_m, wrong.T_target_source.translation().norm(), 0.1);
   EXPECT_TRUE(ambiguousMatch(rival, amb));
+  // That rival has none of its own that fits as well: it is where the keyframe is.
+  const std::optional<IcpResult> unique = uniqueMatch(target, source, wrong, amb);
+  ASSERT_TRUE(unique.has_value());
+  EXPECT_LT(unique->T_target_source.translation().norm(), 0.05);
 }
 
 /// ICP from the true pose of what a keyframe at the origin sees of a street, and the strongest
@@ -278,6 +282,25 @@ TEST(IcpAmbiguity, ABareCorridorHasARivalAlongIt) {
   const IcpRival rival = strongestRival(target, source, r, amb);
   EXPECT_GT(rival.apart_m, amb.separation_m);
   EXPECT_TRUE(ambiguousMatch(rival, amb)) << "share " << rival.share;
+}
+
+TEST(IcpAmbiguity, AUniqueTrueMatchIsKeptAndABareCorridorHasNone) {
+  const std::vector<double> irregular{-47, -31, -26, -12, -4, 5, 9, 21, 32, 35, 50};
+  const Cloud world = streetWithPillars(irregular);
+  const IcpTarget target(world);
+  const Cloud source = near(world);
+  const IcpAmbiguity amb = alongTheStreet();
+  const IcpResult match = target.align(source, Pose3::Identity(), amb.iterations, amb.max_corr_m);
+  const std::optional<IcpResult> unique = uniqueMatch(target, source, match, amb);
+  ASSERT_TRUE(unique.has_value());
+  EXPECT_TRUE(unique->T_target_source.isApprox(match.T_target_source));
+
+  const Cloud bare = streetWithPillars({});
+  const IcpTarget corridor(bare);
+  const Cloud seen = jittered(near(bare), 0.05f);
+  const IcpResult r = corridor.align(seen, Pose3::Identity(), amb.iterations, amb.max_corr_m);
+  ASSERT_TRUE(amb.accept(r));
+  EXPECT_FALSE(uniqueMatch(corridor, seen, r, amb).has_value());
 }
 
 TEST(IcpAmbiguity, ARivalThatFitsAsWellButNoBetterCountsFromTheShareOn) {

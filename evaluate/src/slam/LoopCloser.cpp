@@ -165,10 +165,12 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
            ": fitness " + std::to_string(icp.fitness_m2) + " inliers " +
            std::to_string(icp.inlier_ratio) + (cand.place ? " (place descriptor)" : ""));
   if (!vo.accept(icp)) return std::nullopt;
-  if (!pinnedDown(graph, old_kf, icp_target, source, icp)) {
+  const std::optional<IcpResult> pinned = pinDown(graph, old_kf, icp_target, source, icp);
+  if (!pinned) {
     ++stats_.ambiguous;
     return std::nullopt;
   }
+  icp = *pinned;
   const double correction = (icp.T_target_source.translation() - cur.T_world.translation()).norm();
   const bool outside_gate = cand.place && correction > cand.gate_m;
   if (outside_gate || !plausibleLoopCorrection(correction, graph.drivenSinceLoop(), cfg_)) {
@@ -180,29 +182,37 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
   return icp;
 }
 
-bool LoopCloser::pinnedDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
-                            const Cloud& source, const IcpResult& icp) const {
+std::optional<IcpResult> LoopCloser::pinDown(const KeyframeGraph& graph, int old_kf,
+                                             const IcpTarget& target, const Cloud& source,
+                                             const IcpResult& icp) const {
   const LoopConfig& c = cfg_.loop;
-  const IcpAmbiguity amb = loopAmbiguity(c);
-  const IcpRival rival = strongestRival(target, source, icp, amb);
-  logDebug("loop candidate: strongest rival " + std::to_string(rival.apart_m) + " m away, share " +
-           std::to_string(rival.share) + (rival.better ? ", fits better" : ""));
-  if (ambiguousMatch(rival, amb)) return false;
+  const std::optional<IcpResult> unique = uniqueMatch(target, source, icp, loopAmbiguity(c));
+  if (!unique) {
+    logDebug("loop candidate refused: a rival fits as well");
+    return std::nullopt;
+  }
+  if (!unique->T_target_source.isApprox(icp.T_target_source))
+    logDebug(
+        "loop candidate: the better-fitting rival taken, " +
+        std::to_string(
+            (unique->T_target_source.translation() - icp.T_target_source.translation()).norm()) +
+        " m away");
   const double conditioning = horizontalConditioning(
-      target.translationInformation(source, icp.T_target_source, c.icp_max_corr_m / 3));
+      target.translationInformation(source, unique->T_target_source, c.icp_max_corr_m / 3));
   if (conditioning < c.min_horizontal_conditioning) {
     logDebug("loop candidate refused: horizontal conditioning " + std::to_string(conditioning));
-    return false;
+    return std::nullopt;
   }
-  if (c.submap_agreement_m < 0) return true;
+  if (c.submap_agreement_m < 0) return unique;
   const int each_side = c.submap_keyframes;
   const std::vector<Cloud> sides{
       voxelFilter(keyframeClouds(graph, old_kf - each_side, old_kf - 1, false), c.voxel_m),
       voxelFilter(keyframeClouds(graph, old_kf + 1, old_kf + each_side, false), c.voxel_m)};
-  const SubmapAgreement agreement = submapAgreement(sides, source, icp, loopSubmapAgreement(c));
+  const SubmapAgreement agreement = submapAgreement(sides, source, *unique, loopSubmapAgreement(c));
   logDebug("loop candidate: the submap's sides put it " + std::to_string(agreement.apart_m) +
            " m apart (" + std::to_string(agreement.sides_matched) + " matched)");
-  return agreement.apart_m <= c.submap_agreement_m;
+  if (agreement.apart_m > c.submap_agreement_m) return std::nullopt;
+  return unique;
 }
 
 void LoopCloser::accept(KeyframeGraph& graph, const LoopCandidate& c, const IcpResult& icp,

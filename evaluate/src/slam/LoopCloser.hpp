@@ -56,10 +56,11 @@ class LoopCloser {
   /// ICP of the newest keyframe's cloud against the candidate's submap, with the checks; the
   /// match when it passes them.
   std::optional<IcpResult> verify(const KeyframeGraph& graph, const LoopCandidate& c);
-  /// The match pins the new keyframe down: no rival fits as well, the matched planes hold it
-  /// along the street, and each side of the candidate's submap puts it where the whole does.
-  bool pinnedDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
-                  const Cloud& source, const IcpResult& icp) const;
+  /// The match, or the rival that fits better than it, when that pins the new keyframe down: no
+  /// other start fits as well, the matched planes hold it along the street, and each side of the
+  /// candidate's submap puts it where the whole does.
+  std::optional<IcpResult> pinDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
+                                   const Cloud& source, const IcpResult& icp) const;
   /// Half-width of the square searched around the estimate: grows with the path since the last
   /// closure (the drift it may have brought) [m].
   double searchWindow(const KeyframeGraph& graph) const;

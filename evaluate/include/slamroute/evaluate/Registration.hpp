@@ -135,4 +135,10 @@ inline bool ambiguousMatch(const IcpRival& r, const IcpAmbiguity& amb) {
   return r.better || r.share >= amb.rival_share;
 }
 
+/// The one place `source` fits around `match`: the match when no rival fits as well; when a
+/// rival fits better (ICP from a drifted start stopped on the wrong features), the best fit of
+/// all the rival starts, when no rival of its own fits as well; none when ambiguous.
+std::optional<IcpResult> uniqueMatch(const IcpTarget& target, const Cloud& source,
+                                     const IcpResult& match, const IcpAmbiguity& amb);
+
 }  // namespace slamroute::evaluate
