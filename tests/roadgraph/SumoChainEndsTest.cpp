@@ -1,4 +1,4 @@
-// The ends of a graph edge's SUMO chain (SumoMatch.cpp).
+// The ends of a graph edge's SUMO chain (SumoEdgeMapping.cpp).
 //
 // Connectors (dropConnectorEnds), on the stub net: its east arm C -> M ends at the T junction M,
 // whose dead-end stub to A has 0.2 m edges M_A / A_M. With the U-turn at A cut, A_M is entered from
