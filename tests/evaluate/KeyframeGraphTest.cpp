@@ -135,6 +135,7 @@ int corridorClosures(double min_conditioning) {
 }
 
 TEST(LoopCloser, ARevisitThatICPCannotPlaceAlongTheStreetIsRefused) {
+  EXPECT_EQ(corridorClosures(LoopConfig{}.min_horizontal_conditioning), 0);
   EXPECT_EQ(corridorClosures(0.05), 0);
   EXPECT_EQ(corridorClosures(0.0), 1);  // the check off: ICP stays where it started, 0.6 m off
 }

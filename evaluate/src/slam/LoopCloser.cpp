@@ -209,8 +209,9 @@ std::optional<IcpResult> LoopCloser::pinDown(const KeyframeGraph& graph, int old
       voxelFilter(keyframeClouds(graph, old_kf - each_side, old_kf - 1, false), c.voxel_m),
       voxelFilter(keyframeClouds(graph, old_kf + 1, old_kf + each_side, false), c.voxel_m)};
   const SubmapAgreement agreement = submapAgreement(sides, source, *unique, loopSubmapAgreement(c));
-  logDebug("loop candidate: the submap's sides put it " + std::to_string(agreement.apart_m) +
-           " m apart (" + std::to_string(agreement.sides_matched) + " matched)");
+  logDebug("loop candidate: horizontal conditioning " + std::to_string(conditioning) +
+           ", the submap's sides put it " + std::to_string(agreement.apart_m) + " m apart (" +
+           std::to_string(agreement.sides_matched) + " matched)");
   if (agreement.apart_m > c.submap_agreement_m) return std::nullopt;
   return unique;
 }

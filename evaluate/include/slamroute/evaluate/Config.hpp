@@ -207,9 +207,10 @@ struct LoopConfig {
   /// ... and refused when the match's horizontal conditioning (weakest over strongest direction
   /// of what the matched planes tell, horizontalConditioning) is below this: between two long
   /// plain walls (a bridge deck's parapets) ICP stays near where it started along the street,
-  /// a metre or more off, without a rival standing out. Half the fleet merge's 0.1, which
-  /// judges closures between cars with no odometry between them. 0 = off
-  double min_horizontal_conditioning = 0.05;
+  /// a metre or more off, without a rival standing out; on a feature-poor street at speed it
+  /// slipped 3.9 m along the street at 0.095 (docs/NOTES.md, "A closure that slipped along an
+  /// open street"). The fleet merge's value too. 0 = off
+  double min_horizontal_conditioning = 0.1;
   /// ... and refused when its submap is not one rigid map: the new keyframe matched against the
   /// candidate's keyframes before it alone, and against those after it alone (from the whole
   /// submap's match; a side counts when its match passes the fitness test), ends more than this
