@@ -24,45 +24,9 @@ from collections import defaultdict
 sys.path.insert(0, os.path.join(os.environ.get("SUMO_HOME", "/usr/share/sumo"), "tools"))
 import sumolib  # noqa: E402
 
-
-def largest_scc(nodes, succ):
-    """Largest strongly connected set of `nodes` under succ (iterative Tarjan)."""
-    index, low, on, stack, best, counter = {}, {}, set(), [], set(), [0]
-    for root in nodes:
-        if root in index:
-            continue
-        work = [(root, iter(succ[root]))]
-        index[root] = low[root] = counter[0]
-        counter[0] += 1
-        stack.append(root)
-        on.add(root)
-        while work:
-            v, it = work[-1]
-            w = next(it, None)
-            if w is not None:
-                if w not in index:
-                    index[w] = low[w] = counter[0]
-                    counter[0] += 1
-                    stack.append(w)
-                    on.add(w)
-                    work.append((w, iter(succ[w])))
-                elif w in on:
-                    low[v] = min(low[v], index[w])
-                continue
-            work.pop()
-            if work:
-                low[work[-1][0]] = min(low[work[-1][0]], low[v])
-            if low[v] == index[v]:
-                comp = set()
-                while True:
-                    w = stack.pop()
-                    on.discard(w)
-                    comp.add(w)
-                    if w == v:
-                        break
-                if len(comp) > len(best):
-                    best = comp
-    return best
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "networks"))
+sys.dont_write_bytecode = True  # keep networks/ free of __pycache__
+from check import largest_scc  # noqa: E402  (iterative Tarjan, shared with the net checks)
 
 
 def net_parts(path):
@@ -72,7 +36,7 @@ def net_parts(path):
     jsucc = defaultdict(set)
     for e in edges:
         jsucc[e.getFromNode().getID()].add(e.getToNode().getID())
-    jscc = largest_scc(sorted(jsucc), jsucc)
+    jscc = set(largest_scc(sorted(jsucc), jsucc))
     in_j = {e.getID() for e in edges
             if e.getFromNode().getID() in jscc and e.getToNode().getID() in jscc}
     esucc = defaultdict(set)
@@ -82,7 +46,7 @@ def net_parts(path):
                     c.getFromLane().allows("passenger") and c.getToLane().allows("passenger")
                     for c in conns):
                 esucc[e.getID()].add(to.getID())
-    in_t = largest_scc(sorted(e.getID() for e in edges), esucc)
+    in_t = set(largest_scc(sorted(e.getID() for e in edges), esucc))
     return in_j, in_t, {e.getID(): e.getLength() for e in edges}
 
 
@@ -91,7 +55,7 @@ def planning_edges(g):
     succ = defaultdict(set)
     for i, after in enumerate(g["turns"]):
         succ[i].update(after)
-    return largest_scc(range(len(g["edges"])), succ)
+    return set(largest_scc(range(len(g["edges"])), succ))
 
 
 def main():

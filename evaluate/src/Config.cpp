@@ -128,6 +128,8 @@ void LoopConfig::validate() const {
     rejectValue("submap_agreement_m", submap_agreement_m, "finite");
   if (!std::isfinite(max_correction_m)) rejectValue("max_correction_m", max_correction_m, "finite");
   requireNonNegative("correction_per_m", correction_per_m);
+  if (!std::isfinite(consistency_m)) rejectValue("consistency_m", consistency_m, "finite");
+  requireNonNegative("consistency_per_m", consistency_per_m);
   requireNonNegative("window_per_m", window_per_m);
   if (!(window_max_m >= radius_m && window_max_m <= 200))
     rejectValue("window_max_m", window_max_m, "in [radius_m, 200]");

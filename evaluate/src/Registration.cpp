@@ -404,12 +404,23 @@ bool fitsBetter(const IcpResult& r, const IcpResult& than, const IcpAmbiguity& a
 
 }  // namespace
 
-IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
-                        const IcpAmbiguity& amb) {
+namespace {
+
+/// ICP from every rival start around `T` (rivalStarts), in their order.
+std::vector<IcpResult> rivalFits(const IcpTarget& target, const Cloud& source, const Pose3& T,
+                                 const IcpAmbiguity& amb) {
+  std::vector<IcpResult> fits;
+  for (const Pose3& init : rivalStarts(T, amb))
+    fits.push_back(target.align(source, init, amb.iterations, amb.max_corr_m));
+  return fits;
+}
+
+/// The first fit that fits better than `match`, else the one closest to fitting as well.
+IcpRival strongestOf(const std::vector<IcpResult>& fits, const IcpResult& match,
+                     const IcpAmbiguity& amb) {
   IcpRival strongest;
   const Pose3& T = match.T_target_source;
-  for (const Pose3& init : rivalStarts(T, amb)) {
-    const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
+  for (const IcpResult& r : fits) {
     IcpRival rival;
     rival.apart_m = (r.T_target_source.translation() - T.translation()).norm();
     if (rival.apart_m <= amb.separation_m || !amb.accept(r)) continue;
@@ -422,9 +433,17 @@ IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpR
   return strongest;
 }
 
+}  // namespace
+
+IcpRival strongestRival(const IcpTarget& target, const Cloud& source, const IcpResult& match,
+                        const IcpAmbiguity& amb) {
+  return strongestOf(rivalFits(target, source, match.T_target_source, amb), match, amb);
+}
+
 std::optional<IcpResult> uniqueMatch(const IcpTarget& target, const Cloud& source,
                                      const IcpResult& match, const IcpAmbiguity& amb) {
-  const IcpRival rival = strongestRival(target, source, match, amb);
+  const std::vector<IcpResult> fits = rivalFits(target, source, match.T_target_source, amb);
+  const IcpRival rival = strongestOf(fits, match, amb);
   if (!rival.better) {
     if (ambiguousMatch(rival, amb)) return std::nullopt;
     return match;
@@ -432,10 +451,8 @@ std::optional<IcpResult> uniqueMatch(const IcpTarget& target, const Cloud& sourc
   // ICP from a drifted start stopped on the wrong features. The first better rival may be
   // another wrong place: the best fit of every start is the one to test.
   IcpResult best = match;
-  for (const Pose3& init : rivalStarts(match.T_target_source, amb)) {
-    const IcpResult r = target.align(source, init, amb.iterations, amb.max_corr_m);
+  for (const IcpResult& r : fits)
     if (amb.accept(r) && fitsBetter(r, best, amb)) best = r;
-  }
   if (ambiguousMatch(strongestRival(target, source, best, amb), amb)) return std::nullopt;
   return best;
 }

@@ -423,7 +423,7 @@ SlamResult runSlam(const ScanSource& source, const Config& cfg, const Pose3& T_w
     }
     if (progress) progress(i + 1, n);
     // Every scan while turning fast or just after a failure, else every stride-th.
-    i += slam.wantsEveryScan() ? 1 : stride;
+    i = nextScanIndex(i, stride, slam.wantsEveryScan());
   }
   if (missing > 5) logWarn(std::to_string(missing) + " scans could not be read in total");
   return slam.finish();

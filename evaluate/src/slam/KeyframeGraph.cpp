@@ -42,6 +42,15 @@ void KeyframeGraph::add(double t, int frame, const Pose3& T_world, const Cloud& 
   }
 }
 
+double KeyframeGraph::pathLength(int a, int b) const {
+  double d = 0.0;
+  for (int k = std::min(a, b); k < std::max(a, b); ++k)
+    d += (kfs_[static_cast<std::size_t>(k + 1)].T_world.translation() -
+          kfs_[static_cast<std::size_t>(k)].T_world.translation())
+             .norm();
+  return d;
+}
+
 void KeyframeGraph::closeLoop(const PoseGraphEdge& edge) {
   loop_edges_.push_back(edge);
   driven_since_loop_ = 0.0;

@@ -47,6 +47,8 @@ class KeyframeGraph {
   const Keyframe& back() const { return kfs_.back(); }
   const CloudStore& clouds() const { return *clouds_; }
   CloudStore& clouds() { return *clouds_; }
+  /// Keyframe path between keyframes a and b, either order [m].
+  double pathLength(int a, int b) const;
   /// Keyframe path since the last loop closure [m].
   double drivenSinceLoop() const { return driven_since_loop_; }
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "ClosureCycle.hpp"
 #include "SlamClock.hpp"
 #include "slamroute/core/Log.hpp"
 #include "slamroute/evaluate/CorrelativeSearch.hpp"
@@ -178,6 +179,21 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
     logDebug("loop candidate rejected: correction " + std::to_string(correction) + " m after " +
              std::to_string(graph.drivenSinceLoop()) + " m");
     return std::nullopt;
+  }
+  if (!stats_.loops.empty()) {
+    const ClosureCycle cycle =
+        closureCycle(graph, stats_.loops.back(), old_kf, icp.T_target_source);
+    if (!consistentCycle(cycle, c)) {
+      ++stats_.rejected;
+      const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
+      const Vec3 rel = (old.T_world.inverse() * icp.T_target_source).translation();
+      logDebug("loop candidate rejected: the cycle with the closure before misses by " +
+               std::to_string(cycle.error_m) + " m over " + std::to_string(cycle.chain_m) +
+               " m of chains (t " + std::to_string(old.t) + " -> " + std::to_string(cur.t) +
+               " s, relative position " + std::to_string(rel.x()) + " " + std::to_string(rel.y()) +
+               " " + std::to_string(rel.z()) + " m)");
+      return std::nullopt;
+    }
   }
   return icp;
 }

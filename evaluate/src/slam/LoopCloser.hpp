@@ -2,8 +2,8 @@
 // Loop closure (paper §3.3 / LeGO-LOAM): a new keyframe near an old one in the estimate, or, when
 // none is, one whose place descriptor matches within a drift gate, is matched by ICP against the
 // old keyframe's submap; the match must fit, must not be a local minimum along a row of
-// look-alikes, and must be a correction the odometry can have drifted; then a loop edge joins the
-// pose graph.
+// look-alikes, and must be a correction the odometry can have drifted, consistent with the closure
+// before it; then a loop edge joins the pose graph.
 #include <optional>
 #include <vector>
 
@@ -18,7 +18,9 @@ namespace slamroute::evaluate::slam {
 struct LoopStats {
   std::vector<LoopClosure> loops;  ///< accepted
   int candidates = 0;              ///< ICP attempts
-  int rejected = 0;                ///< refused for too large a correction
+  /// refused for a correction the odometry cannot have drifted: beyond a place candidate's gate,
+  /// loop.max_correction_m, or breaking the cycle with the closure before (ClosureCycle.hpp)
+  int rejected = 0;
   /// refused: ICP from nearby starts fits as well elsewhere, a corridor, or a submap whose sides
   /// put the new keyframe apart
   int ambiguous = 0;

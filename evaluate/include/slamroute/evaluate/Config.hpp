@@ -225,6 +225,13 @@ struct LoopConfig {
   /// bound [m], [m/m]
   double max_correction_m = -1.0;
   double correction_per_m = 0.002;
+  /// ... and refused when it and the closure accepted before it, joined by the keyframe chains
+  /// between their old and between their new keyframes, do not close: the cycle may miss by
+  /// consistency_m plus consistency_per_m times those chains' path (slam/ClosureCycle.hpp). A
+  /// match 12 m along a street 7 s after a closure to the same street broke it by 12.7 m; true
+  /// closures miss by the drift of short chains, well under 1 m. Negative = off [m], [m/m]
+  double consistency_m = 1.0;
+  double consistency_per_m = 0.02;
   /// Uniqueness check of a candidate before its ICP (CorrelativeSearch.hpp): the structure above
   /// the road of the new keyframe is scored at every x / y offset within the search window and
   /// every yaw within +-correlative_yaw_deg of the estimate against the candidate's submap. ICP
@@ -491,6 +498,10 @@ void visitFields(V& v, LoopConfig& c) {
           "max jump of a loop closure right after another one (negative = no bound) [m]");
   v.field("correction_per_m", c.correction_per_m,
           "... plus this per metre driven since the last closure [m/m]");
+  v.field("consistency_m", c.consistency_m,
+          "max miss of the cycle with the closure before (negative = off) [m]");
+  v.field("consistency_per_m", c.consistency_per_m,
+          "... plus this per metre of the keyframe chains between the two closures [m/m]");
   v.field("graph_odom_sigma_m", c.graph_odom_sigma_m, "odometry edge sigma [m]");
   v.field("graph_odom_sigma_rad", c.graph_odom_sigma_rad, "odometry edge sigma [rad]");
   v.field("graph_loop_sigma_m", c.graph_loop_sigma_m, "loop edge sigma [m]");

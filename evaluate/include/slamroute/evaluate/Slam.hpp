@@ -3,6 +3,7 @@
 // features -> scan-to-scan odometry -> scan-to-map refinement; keyframes, ICP loop closure and a
 // Ceres pose graph. The estimate starts at a given pose (the first ground-truth pose), so it is
 // expressed in the world frame.
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -45,7 +46,7 @@ struct SlamResult {
   std::vector<double> min_eig;      ///< per scan: degeneracy measure of scan-to-map
   std::vector<LoopClosure> loops;   ///< accepted loop closures
   int loop_candidates = 0;          ///< ICP attempts
-  int loops_rejected = 0;           ///< ICP matches refused for too large a correction
+  int loops_rejected = 0;   ///< ICP matches refused as corrections the odometry cannot have drifted
   int loops_ambiguous = 0;  ///< ICP matches refused: ICP from nearby starts fits better elsewhere
   int keyframes = 0;
   double wheel_scale = 1.0;         ///< the wheels' scale measured by the LiDAR (1: not measured)
@@ -96,6 +97,15 @@ class LidarSlam {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The scan after `i`: the next one while `every_scan`, else the next multiple of `stride`. The
+/// strided scans stay on one grid (0, stride, 2 stride, ...) whatever dense stretches came before,
+/// so two runs whose dense stretches differ (a failure in one, not the other) feed the same scans
+/// again right after them, and their keyframes and loop-closure attempts stay in step.
+inline std::size_t nextScanIndex(std::size_t i, std::size_t stride, bool every_scan) {
+  if (every_scan || stride <= 1) return i + 1;
+  return (i / stride + 1) * stride;
+}
 
 /// Runs the pipeline over a scan source: every cfg.input.scan_stride-th scan, and every scan while
 /// the vehicle turns fast or after a failure (LidarSlam::wantsEveryScan). `T_first_second`: the
