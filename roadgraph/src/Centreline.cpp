@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <queue>
 
 #include "Streets.hpp"
@@ -81,6 +82,20 @@ Polyline binnedCentre(const std::vector<Point3>& sp, const std::vector<int>& mem
   for (std::size_t k = 0; k < bsum.size(); ++k)
     if (bcnt[k] > 0) centre.push_back(bsum[k] / bcnt[k]);
   return centre;
+}
+
+void dropSpikes(Polyline& pl, double min_leg_m) {
+  const double cos_back = std::cos(150.0 * std::numbers::pi / 180.0);
+  for (std::size_t i = 1; i + 1 < pl.size();) {
+    const Eigen::Vector2d in = (pl[i] - pl[i - 1]).head<2>(), out = (pl[i + 1] - pl[i]).head<2>();
+    const bool long_legs = in.norm() >= min_leg_m && out.norm() >= min_leg_m;
+    if (long_legs && in.dot(out) < cos_back * in.norm() * out.norm()) {
+      pl.erase(pl.begin() + static_cast<std::ptrdiff_t>(i));
+      i = std::max<std::size_t>(1, i - 1);  // the vertex before may now be the tip of a spike
+    } else {
+      ++i;
+    }
+  }
 }
 
 std::pair<Point3, Eigen::Vector2d> tipAndHeading(const Polyline& c, bool at_u, double reach) {

@@ -134,10 +134,10 @@ std::vector<Point3> junctionNodes(const Traces& traces, const PreparedTraces& p,
   return std::move(ir.nodes);
 }
 
-/// Full polylines node u -> node v: intersections, and dead ends moved by a merge, are not on
-/// the centreline yet.
+/// Full polylines node u -> node v (intersections, and dead ends moved by a merge, are not on
+/// the centreline yet), without spikes (dropSpikes, legs of two centreline steps or more).
 std::vector<Polyline> streetPolylines(const std::vector<Street>& streets,
-                                      const std::vector<Point3>& nodes) {
+                                      const std::vector<Point3>& nodes, double step_m) {
   std::vector<Polyline> polys;
   for (const auto& s : streets) {
     Polyline pl;
@@ -146,6 +146,7 @@ std::vector<Polyline> streetPolylines(const std::vector<Street>& streets,
     if ((nu - s.centre.front()).norm() > 0.5) pl.push_back(nu);
     pl.insert(pl.end(), s.centre.begin(), s.centre.end());
     if ((nv - s.centre.back()).norm() > 0.5) pl.push_back(nv);
+    detail::dropSpikes(pl, 2.0 * step_m);
     if (pl.size() < 2) pl.push_back(pl.back());
     polys.push_back(std::move(pl));
   }
@@ -207,7 +208,7 @@ GraphBuildResult graphFromTraces(const Traces& traces, const Config& cfg) {
   detail::splitAtTurningPlaces(gn, streets, spts, traces, p.order,
                                streetOfTracePoints(streets, spts, p.ds), ec, st);
   st.streets = streets.size();
-  std::vector<Polyline> polys = streetPolylines(streets, gn.pos);
+  std::vector<Polyline> polys = streetPolylines(streets, gn.pos, ec.polyline_step_m);
   // Step 3: drives from junction to junction (ShortLinks.cpp): links between junctions whose
   // street the clearing removed, and directions of travel on streets too short for runs.
   const std::vector<int> street_of_point = streetOfTracePoints(streets, spts, p.ds);

@@ -154,5 +154,10 @@ void geodesic(const std::vector<Point3>& pts, const PointGrid& grid, const std::
 /// step_m bins.
 Polyline binnedCentre(const std::vector<Point3>& sp, const std::vector<int>& members,
                       const std::vector<double>& d, double step_m);
+/// Removes spikes from a street's polyline: a vertex where it turns back by more than 150 deg
+/// between two legs of at least min_leg_m each. A bin of points the geodesic order reached the
+/// long way round (past the far end and back through other streets) has its centroid near the
+/// other end of the street, so the line runs there and back.
+void dropSpikes(Polyline& pl, double min_leg_m);
 
 }  // namespace slamroute::roadgraph::detail
