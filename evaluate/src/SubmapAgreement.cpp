@@ -22,4 +22,9 @@ SubmapAgreement submapAgreement(const std::vector<Cloud>& sides, const Cloud& qu
   return a;
 }
 
+bool submapBacks(const SubmapAgreement& a, double agreement_m, bool rival_taken) {
+  if (a.apart_m > agreement_m) return false;
+  return !rival_taken || a.sides_matched > 0;
+}
+
 }  // namespace slamroute::evaluate

@@ -94,5 +94,17 @@ TEST(SubmapAgreement, EmptySidesAreSkipped) {
   EXPECT_EQ(a.apart_m, 0.0);
 }
 
+// A better-fitting rival taken 7.7 m along an open street, where neither side of the submap
+// matched alone (experiment paper random_s4), is not backed; ICP's own match with the same empty
+// check is, and a rival with a side that agrees is too.
+TEST(SubmapAgreement, ARivalTakenNeedsASideMatchedAlone) {
+  const double within = LoopConfig{}.submap_agreement_m;
+  EXPECT_TRUE(submapBacks(SubmapAgreement{0.0, 0}, within, false));
+  EXPECT_FALSE(submapBacks(SubmapAgreement{0.0, 0}, within, true));
+  EXPECT_TRUE(submapBacks(SubmapAgreement{0.02, 1}, within, true));
+  EXPECT_TRUE(submapBacks(SubmapAgreement{0.02, 2}, within, false));
+  EXPECT_FALSE(submapBacks(SubmapAgreement{1.3, 2}, within, false));  // the sides disagree
+}
+
 }  // namespace
 }  // namespace slamroute::evaluate

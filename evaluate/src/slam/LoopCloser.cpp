@@ -207,7 +207,8 @@ std::optional<IcpResult> LoopCloser::pinDown(const KeyframeGraph& graph, int old
     logDebug("loop candidate refused: a rival fits as well");
     return std::nullopt;
   }
-  if (!unique->T_target_source.isApprox(icp.T_target_source))
+  const bool rival_taken = !unique->T_target_source.isApprox(icp.T_target_source);
+  if (rival_taken)
     logDebug(
         "loop candidate: the better-fitting rival taken, " +
         std::to_string(
@@ -228,7 +229,7 @@ std::optional<IcpResult> LoopCloser::pinDown(const KeyframeGraph& graph, int old
   logDebug("loop candidate: horizontal conditioning " + std::to_string(conditioning) +
            ", the submap's sides put it " + std::to_string(agreement.apart_m) + " m apart (" +
            std::to_string(agreement.sides_matched) + " matched)");
-  if (agreement.apart_m > c.submap_agreement_m) return std::nullopt;
+  if (!submapBacks(agreement, c.submap_agreement_m, rival_taken)) return std::nullopt;
   return unique;
 }
 

@@ -60,7 +60,8 @@ class LoopCloser {
   std::optional<IcpResult> verify(const KeyframeGraph& graph, const LoopCandidate& c);
   /// The match, or the rival that fits better than it, when that pins the new keyframe down: no
   /// other start fits as well, the matched planes hold it along the street, and each side of the
-  /// candidate's submap puts it where the whole does.
+  /// candidate's submap puts it where the whole does (a rival taken needs one side matched alone:
+  /// submapBacks).
   std::optional<IcpResult> pinDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
                                    const Cloud& source, const IcpResult& icp) const;
   /// Half-width of the square searched around the estimate: grows with the path since the last

@@ -217,7 +217,10 @@ struct LoopConfig {
   /// from the whole submap's match (SubmapAgreement.hpp). The relative pose to the candidate is
   /// then a blend of keyframe poses that disagree (a U-turn dead-reckoned inside the submap).
   /// Three loop-edge sigmas (graph_loop_sigma_m): beyond that the edge claims an accuracy its
-  /// submap does not have. Negative = off [m]
+  /// submap does not have. A match that is a better-fitting rival taken (ambiguity_* below) needs
+  /// one side matched alone: with none, the check is empty, and such jumps of metres along an
+  /// open street were look-alikes (docs/NOTES.md, "Rivals taken with nothing to back them").
+  /// Negative = off [m]
   double submap_agreement_m = 0.3;
   /// A closure may move the new keyframe at most max_correction_m plus correction_per_m times
   /// the distance driven since the last accepted closure; a larger jump is taken for a look-alike

@@ -29,4 +29,10 @@ struct SubmapAgreement {
 SubmapAgreement submapAgreement(const std::vector<Cloud>& sides, const Cloud& query_body,
                                 const IcpResult& whole, const SubmapAgreementOptions& opt);
 
+/// The submap backs a loop-closure match: the sides that matched alone end within agreement_m of
+/// it, and a match that is a better-fitting rival taken in place of ICP's first (a jump of metres
+/// along the street) has at least one such side. With no side matched the check is empty, which
+/// is enough for a match where ICP ended from the estimate, not for a jump to a look-alike.
+bool submapBacks(const SubmapAgreement& a, double agreement_m, bool rival_taken);
+
 }  // namespace slamroute::evaluate
