@@ -11,8 +11,7 @@
 namespace slamroute::evaluate::slam {
 
 struct ClosureCycle {
-  double error_m =
-      0.0;  ///< where the cycle puts the newest keyframe, from where the match does [m]
+  double error_m = 0.0;  ///< from where the cycle puts the newest keyframe to the match [m]
   double chain_m = 0.0;  ///< keyframe path of the two chains [m]
 };
 

@@ -180,22 +180,26 @@ std::optional<IcpResult> LoopCloser::verify(const KeyframeGraph& graph, const Lo
              std::to_string(graph.drivenSinceLoop()) + " m");
     return std::nullopt;
   }
-  if (!stats_.loops.empty()) {
-    const ClosureCycle cycle =
-        closureCycle(graph, stats_.loops.back(), old_kf, icp.T_target_source);
-    if (!consistentCycle(cycle, c)) {
-      ++stats_.rejected;
-      const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
-      const Vec3 rel = (old.T_world.inverse() * icp.T_target_source).translation();
-      logDebug("loop candidate rejected: the cycle with the closure before misses by " +
-               std::to_string(cycle.error_m) + " m over " + std::to_string(cycle.chain_m) +
-               " m of chains (t " + std::to_string(old.t) + " -> " + std::to_string(cur.t) +
-               " s, relative position " + std::to_string(rel.x()) + " " + std::to_string(rel.y()) +
-               " " + std::to_string(rel.z()) + " m)");
-      return std::nullopt;
-    }
+  if (!consistentWithLastClosure(graph, old_kf, icp)) {
+    ++stats_.rejected;
+    return std::nullopt;
   }
   return icp;
+}
+
+bool LoopCloser::consistentWithLastClosure(const KeyframeGraph& graph, int old_kf,
+                                           const IcpResult& icp) const {
+  if (stats_.loops.empty()) return true;
+  const ClosureCycle cycle = closureCycle(graph, stats_.loops.back(), old_kf, icp.T_target_source);
+  if (consistentCycle(cycle, cfg_.loop)) return true;
+  const Keyframe& old = graph.at(static_cast<std::size_t>(old_kf));
+  const Vec3 rel = (old.T_world.inverse() * icp.T_target_source).translation();
+  logDebug("loop candidate rejected: the cycle with the closure before misses by " +
+           std::to_string(cycle.error_m) + " m over " + std::to_string(cycle.chain_m) +
+           " m of chains (t " + std::to_string(old.t) + " -> " + std::to_string(graph.back().t) +
+           " s, relative position " + std::to_string(rel.x()) + " " + std::to_string(rel.y()) +
+           " " + std::to_string(rel.z()) + " m)");
+  return false;
 }
 
 std::optional<IcpResult> LoopCloser::pinDown(const KeyframeGraph& graph, int old_kf,

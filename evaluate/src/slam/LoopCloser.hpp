@@ -64,6 +64,10 @@ class LoopCloser {
   /// submapBacks).
   std::optional<IcpResult> pinDown(const KeyframeGraph& graph, int old_kf, const IcpTarget& target,
                                    const Cloud& source, const IcpResult& icp) const;
+  /// The match closes the cycle with the last accepted closure (ClosureCycle.hpp); no closure
+  /// yet counts as consistent.
+  bool consistentWithLastClosure(const KeyframeGraph& graph, int old_kf,
+                                 const IcpResult& icp) const;
   /// Half-width of the square searched around the estimate: grows with the path since the last
   /// closure (the drift it may have brought) [m].
   double searchWindow(const KeyframeGraph& graph) const;
