@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 # How stable a drive's SLAM result is: re-evaluates each drive with one weight or noise parameter
 # of the evaluate config changed by -1 % and +1 % and prints, per drive, the baseline ATE RMSE, the
-# largest relative change and the parameter that caused it (bench/RESULTS.md "Stability").
+# range, how many evaluations stay within 20 % of the baseline, the largest relative change and the
+# parameter that caused it, and the ranges of accepted and refused loop closures (bench/RESULTS.md
+# "Stability").
 # Usage: bench/slam_perturbation.py [--bin build/cli/slamroute] [--jobs 2] [--params lidar-only|S.K,..]
 #        [--set SECTION.KEY=VALUE ...] [--seed 42] OUT_DIR DRIVE_DIR [DRIVE_DIR ...]
 # (--params: the parameters to change, default all of PARAMS; "lidar-only" those that act when
@@ -59,9 +61,10 @@ def to_yaml(cfg):
 
 
 def evaluate(binary, seed, drive, out, yaml_text, report_only=False):
+    """metrics.json of one evaluation (run unless it exists); None when --report-only lacks it."""
     metrics = os.path.join(out, "metrics.json")
     if report_only:
-        return json.load(open(metrics))["ate_rmse_m"] if os.path.exists(metrics) else None
+        return json.load(open(metrics)) if os.path.exists(metrics) else None
     if not os.path.exists(metrics):
         os.makedirs(os.path.dirname(out), exist_ok=True)
         cfg = out + ".yaml"
@@ -71,7 +74,13 @@ def evaluate(binary, seed, drive, out, yaml_text, report_only=False):
                             "--drive", drive, "--out", out], capture_output=True, text=True)
         if r.returncode != 0:
             sys.exit(f"{drive}: evaluate failed: {r.stderr.strip().splitlines()[-1:]}")
-    return json.load(open(metrics))["ate_rmse_m"]
+    return json.load(open(metrics))
+
+
+def spread(runs, key):
+    """'lo-hi' of one metrics.json count over a drive's evaluations."""
+    vals = [int(m.get(key, 0)) for m in runs]
+    return f"{min(vals)}-{max(vals)}" if min(vals) != max(vals) else str(vals[0])
 
 
 def main():
@@ -115,21 +124,25 @@ def main():
         futs = {ex.submit(evaluate, a.bin, a.seed, d, os.path.join(a.out, n, tag), y, a.report_only): (n, tag)
                 for d, n, tag, y in jobs}
         ate = {futs[f]: f.result() for f in concurrent.futures.as_completed(futs)}
-    ate = {k: v for k, v in ate.items() if v is not None}
-    print("| drive | evaluations | ATE RMSE [m] | ATE range over +-1 % [m] | largest change [%] | caused by |")
-    print("|---|---|---|---|---|---|")
+    found = {k: v for k, v in ate.items() if v is not None}
+    print("| drive | evaluations | ATE RMSE [m] | ATE range over +-1 % [m] | within +-20 % | "
+          "largest change [%] | caused by | closures | refused as ambiguous | refused by correction or cycle |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for d in a.drives:
         n = os.path.basename(os.path.normpath(d))
-        runs = {t: v for (dn, t), v in ate.items() if dn == n and t != "base"}
-        if (n, "base") not in ate or not runs:
-            print(f"| {n} | {len(runs)} of {2 * len(params)} | - | - | - | - |")
+        runs = {t: m["ate_rmse_m"] for (dn, t), m in found.items() if dn == n and t != "base"}
+        if (n, "base") not in found or not runs:
+            print(f"| {n} | {len(runs)} of {2 * len(params)} | - | - | - | - | - | - | - | - |")
             continue
-        base = ate[(n, "base")]
+        base = found[(n, "base")]["ate_rmse_m"]
         worst = max(runs, key=lambda t: abs(runs[t] - base))
         lo, hi = min(runs.values()), max(runs.values())
+        within = sum(abs(v - base) <= 0.2 * base for v in runs.values())
+        every = [m for (dn, _), m in found.items() if dn == n]
         print(f"| {n} | {len(runs)} of {2 * len(params)} | {base:.3f} | {lo:.3f} - {hi:.3f} | "
-              f"{100 * abs(runs[worst] - base) / base:.1f} | {worst} |")
-
+              f"{within} of {len(runs)} | {100 * abs(runs[worst] - base) / base:.1f} | {worst} | "
+              f"{spread(every, 'loop_closures')} | {spread(every, 'loops_rejected_ambiguous')} | "
+              f"{spread(every, 'loops_rejected_correction')} |")
 
 if __name__ == "__main__":
     main()

@@ -28,6 +28,7 @@ void InputConfig::validate() const {
 
 void FeaturesConfig::validate() const {
   requireNonNegative("min_range_m", min_range_m);
+  requireRange("deskew_increments", deskew_increments, 1, 10);
   requireRange("min_valid_points", min_valid_points, 1, kMaxCount);
   if (!(ground_angle_deg > 0 && ground_angle_deg < 90))
     rejectValue("ground_angle_deg", ground_angle_deg, "in (0, 90)");

@@ -94,6 +94,39 @@ TEST(MotionModel, WithoutOdometryTheTurnRateFollowsOnlyATurnTwoRegistrationsAgre
   }
 }
 
+// Without odometry a sweep is deskewed with the mean of the last deskew_increments registered
+// velocities: steps of 0.6 m turning 1 deg and 0.7 m turning 2 deg per 0.1 s give a sweep motion
+// of the mean chord and 1.5 deg (the last step alone with 1); a failed scan empties the history,
+// so the next sweep takes the (faded) velocity again.
+class MotionModelDeskew : public ::testing::TestWithParam<int> {};
+
+TEST_P(MotionModelDeskew, TheSweepMovesByTheMeanOfTheLastRegisteredSteps) {
+  Config cfg;
+  cfg.odometry.max_yaw_accel_deg_s2 = 0;  // every registered turn rate taken at once
+  cfg.features.deskew_increments = GetParam();
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.recordFrame(0.0, Pose3::Identity());
+  using Outcome = slam::MotionModel::Outcome;
+  m.update(Outcome::Registered, true, Pose3::Identity(), forward(0.6, 1.0), 0.1);
+  m.update(Outcome::Registered, true, Pose3::Identity(), forward(0.7, 2.0), 0.1);
+  const auto chord = [](double d, double yaw_deg) {
+    const double half = yaw_deg * std::numbers::pi / 360.0;
+    return Vec3(d * std::cos(half), d * std::sin(half), 0.0);
+  };
+  const bool mean = GetParam() == 2;
+  const Vec3 want = mean ? 0.5 * (chord(0.6, 1.0) + chord(0.7, 2.0)) : chord(0.7, 2.0);
+  const Pose3 sweep = m.motionOver(0.1, 0.1);
+  EXPECT_TRUE(sweep.translation().isApprox(want, 1e-9)) << sweep.translation().transpose();
+  EXPECT_NEAR(rotationAngle(sweep) * 180.0 / std::numbers::pi, mean ? 1.5 : 2.0, 1e-9);
+  // Half a sweep: half the motion.
+  EXPECT_NEAR(m.motionOver(0.1, 0.05).translation().x(), 0.5 * want.x(), 1e-9);
+  m.update(Outcome::Failed, false, Pose3::Identity(), forward(9.0, 90.0), 0.1);
+  EXPECT_NEAR(rotationAngle(m.motionOver(0.2, 0.1)) * 180.0 / std::numbers::pi,
+              2.0 * cfg.odometry.failed_turn_decay, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(LastStepOrMeanOfTwo, MotionModelDeskew, ::testing::Values(1, 2));
+
 TEST(MotionModel, BeforeTheFirstFrameItStandsAtTheStartPose) {
   const Config cfg;
   const Pose3 start = forward(7.0, 30.0);

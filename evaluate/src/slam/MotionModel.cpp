@@ -101,7 +101,20 @@ Pose3 MotionModel::motionOver(double t, double duration) const {
     return m;
   }
   if (!have_velocity_) return Pose3::Identity();
-  return scaledMotion(velocity_, duration / velocity_dt_);
+  if (recent_rates_.size() < 2) return scaledMotion(velocity_, duration / velocity_dt_);
+  // The mean of the last increments: deskewing with the last one alone feeds a registration's
+  // error into the next sweep's deskew with the opposite sign, a swing from scan to scan.
+  Rate mean;
+  for (const Rate& r : recent_rates_) {
+    mean.v_mps += r.v_mps / static_cast<double>(recent_rates_.size());
+    mean.w_rad_s += r.w_rad_s / static_cast<double>(recent_rates_.size());
+  }
+  Pose3 m = Pose3::Identity();
+  const double angle = mean.w_rad_s.norm() * duration;
+  if (angle > 0)
+    m.linear() = Eigen::AngleAxisd(angle, mean.w_rad_s.normalized()).toRotationMatrix();
+  m.translation() = mean.v_mps * duration;
+  return m;
 }
 
 bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result,
@@ -141,6 +154,7 @@ double MotionModel::imuPitchRad(double t) const {
 void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
                          const Pose3& T_world, double dt) {
   if (outcome != Outcome::Registered || !consecutive) last_rate_.reset();
+  if (outcome != Outcome::Registered) recent_rates_.clear();
   if (outcome == Outcome::Failed && have_velocity_) {
     velocity_.linear() = scaledMotion(velocity_, cfg_.odometry.failed_turn_decay).linear();
   } else if (outcome == Outcome::Relocalised && have_velocity_) {
@@ -160,6 +174,11 @@ void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
     const double max_angle =
         maxTurnRate(cfg_, velocity_.translation().norm() / velocity_dt_) * velocity_dt_;
     if (angle > max_angle) velocity_.linear() = scaledMotion(velocity_, max_angle / angle).linear();
+    const Eigen::AngleAxisd aa(velocity_.rotation());
+    recent_rates_.push_back(
+        {velocity_.translation() / velocity_dt_, aa.axis() * aa.angle() / velocity_dt_});
+    while (recent_rates_.size() > static_cast<std::size_t>(cfg_.features.deskew_increments))
+      recent_rates_.pop_front();
   }
 }
 

@@ -2,6 +2,7 @@
 // The SLAM's motion model: where the vehicle is expected at the next scan (wheel odometry + gyro
 // when the drive has them, else constant velocity), what motion a registration may claim, and
 // the IMU's roll / pitch. It owns the last pose and the velocity estimate.
+#include <deque>
 #include <optional>
 
 #include "TiltBias.hpp"
@@ -95,6 +96,13 @@ class MotionModel {
   bool have_velocity_ = false;          ///< measured (or given), not the initial guess
   /// The turn rate the last registration measured, when it directly followed another [rad/s].
   std::optional<double> last_rate_;
+  /// The velocity after each of the last FeaturesConfig::deskew_increments registrations that
+  /// followed the frame before, as rates: the sweep's motion without odometry.
+  struct Rate {
+    Vec3 v_mps = Vec3::Zero();
+    Vec3 w_rad_s = Vec3::Zero();
+  };
+  std::deque<Rate> recent_rates_;
 
   /// A car's motion `v` over dt with its turn rate at most max_accel * dt from the velocity's,
   /// unless the registration before measured the same turn rate (within that bound).

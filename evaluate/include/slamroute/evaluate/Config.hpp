@@ -31,6 +31,9 @@ struct FeaturesConfig {
   /// Move every point to the sweep's start with the predicted motion over the sweep, when the
   /// scan carries point times (a spinning LiDAR fires its columns over 0.1 s while driving).
   bool deskew = true;
+  /// Without wheel odometry the sweep's motion is the mean velocity of this many registrations
+  /// (1: the last one's).
+  int deskew_increments = 2;
   bool use_ring_field = true;       ///< use ScanPoint.ring when >= 0, else ring from elevation
   bool ring_zero_is_bottom = true;  ///< ring 0 is the lowest beam (KITTI/Velodyne order)
   double min_range_m = 1.0;         ///< points closer than this are dropped [m]
@@ -332,6 +335,8 @@ template <class V>
 void visitFields(V& v, FeaturesConfig& c) {
   v.field("deskew", c.deskew,
           "move each point to the sweep start with the predicted motion (scans with point times)");
+  v.field("deskew_increments", c.deskew_increments,
+          "without wheel odometry: the sweep's motion is the mean of this many registered steps");
   v.field("use_ring_field", c.use_ring_field, "use ScanPoint.ring when >= 0");
   v.field("ring_zero_is_bottom", c.ring_zero_is_bottom, "ring 0 is the lowest beam");
   v.field("min_range_m", c.min_range_m, "points closer are dropped [m]");
