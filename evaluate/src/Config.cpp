@@ -82,6 +82,7 @@ void OdometryConfig::validate() const {
 
 void MappingConfig::validate() const {
   requireRange("iterations", iterations, 1, kMaxCount);
+  requireRange("iterations_without_odometry", iterations_without_odometry, 1, kMaxCount);
   requireRange("reassociate_every", reassociate_every, 1, kMaxCount);
   requirePositive("max_nn_m", max_nn_m);
   requireNonNegative("coarse_nn_m", coarse_nn_m);

@@ -61,7 +61,7 @@ void ScanToMap::put(const KeyframeGraph& graph, const std::vector<int>& want) {
 AlignOptions ScanToMap::options(const MotionModel& motion, const Prediction& step) const {
   const MappingConfig& c = cfg_.mapping;
   AlignOptions o;
-  o.iterations = c.iterations;
+  o.iterations = motion.hasOdometry() ? c.iterations : c.iterations_without_odometry;
   o.reassociate_every = c.reassociate_every;
   o.max_nn_m = c.max_nn_m;
   o.huber_m = c.huber_m;

@@ -23,7 +23,8 @@ class ScanToMap {
   void rebuild(const KeyframeGraph& graph, bool force);
   const FeatureMap& localMap() const { return map_; }
 
-  /// Registration options of the fine stage, with the odometry prior when there is odometry.
+  /// Registration options of the fine stage: with odometry its prior and mapping.iterations,
+  /// without it mapping.iterations_without_odometry.
   AlignOptions options(const MotionModel& motion, const Prediction& step) const;
   /// Where the fine registration starts: `init`, or a coarse registration with a wide radius
   /// from it when scans are far apart and the speed is known (a stride-2 turn can leave the

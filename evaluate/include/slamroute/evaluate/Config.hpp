@@ -139,8 +139,11 @@ struct OdometryConfig {
 
 /// Scan-to-map registration against the local map of recent keyframes, and keyframe selection.
 struct MappingConfig {
-  void validate() const;      ///< values that cannot work: std::invalid_argument (Config.cpp)
-  int iterations = 10;        ///< scan-to-map Gauss-Newton iterations
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
+  int iterations = 10;    ///< scan-to-map Gauss-Newton iterations
+  /// ... without wheel odometry: the constant-velocity start is further off, and a heading left
+  /// short of convergence becomes the next prediction's turn rate (a slow drift on a straight).
+  int iterations_without_odometry = 20;
   int reassociate_every = 2;  ///< new neighbours / line and plane fits every n-th iteration
   double max_nn_m = 1.0;      ///< scan-to-map correspondence radius [m]
   /// > 0: a coarse stage with this radius first when scans are more than 0.15 s apart (stride-2
@@ -432,6 +435,8 @@ void visitFields(V& v, OdometryConfig& c) {
 template <class V>
 void visitFields(V& v, MappingConfig& c) {
   v.field("iterations", c.iterations, "scan-to-map iterations");
+  v.field("iterations_without_odometry", c.iterations_without_odometry,
+          "scan-to-map iterations when the drive has no wheel odometry");
   v.field("reassociate_every", c.reassociate_every, "new correspondences every n-th iteration");
   v.field("max_nn_m", c.max_nn_m, "scan-to-map correspondence radius [m]");
   v.field("coarse_nn_m", c.coarse_nn_m, "coarse scan-to-map radius, 0 = off [m]");

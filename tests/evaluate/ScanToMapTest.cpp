@@ -1,0 +1,29 @@
+// The scan-to-map's registration options (evaluate/src/slam/ScanToMap): with wheel odometry the
+// prior towards its prediction and mapping.iterations; without it no prior and
+// mapping.iterations_without_odometry.
+#include <gtest/gtest.h>
+
+#include "slam/ScanToMap.hpp"
+
+namespace slamroute::evaluate {
+namespace {
+
+TEST(ScanToMap, WithoutOdometryTheRegistrationHasNoPriorAndItsOwnIterations) {
+  Config cfg;
+  cfg.mapping.iterations = 7;
+  cfg.mapping.iterations_without_odometry = 23;
+  const slam::ScanToMap s2m(cfg);
+  slam::MotionModel lidar_only(cfg, Pose3::Identity());
+  slam::MotionModel wheels(cfg, Pose3::Identity());
+  wheels.setOdometry(WheelOdometry({{0.0, 5.0, 0.0}, {10.0, 5.0, 0.0}}));
+  const slam::Prediction step;
+  const AlignOptions a = s2m.options(lidar_only, step);
+  EXPECT_EQ(a.iterations, 23);
+  EXPECT_FALSE((a.prior_weight.array() > 0).any());
+  const AlignOptions b = s2m.options(wheels, step);
+  EXPECT_EQ(b.iterations, 7);
+  EXPECT_TRUE((b.prior_weight.array() > 0).any());
+}
+
+}  // namespace
+}  // namespace slamroute::evaluate
