@@ -123,8 +123,8 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as ex:
         futs = {ex.submit(evaluate, a.bin, a.seed, d, os.path.join(a.out, n, tag), y, a.report_only): (n, tag)
                 for d, n, tag, y in jobs}
-        ate = {futs[f]: f.result() for f in concurrent.futures.as_completed(futs)}
-    found = {k: v for k, v in ate.items() if v is not None}
+        done = {futs[f]: f.result() for f in concurrent.futures.as_completed(futs)}
+    found = {k: m for k, m in done.items() if m is not None}
     print("| drive | evaluations | ATE RMSE [m] | ATE range over +-1 % [m] | within +-20 % | "
           "largest change [%] | caused by | closures | refused as ambiguous | refused by correction or cycle |")
     print("|---|---|---|---|---|---|---|---|---|---|")
@@ -143,6 +143,7 @@ def main():
               f"{within} of {len(runs)} | {100 * abs(runs[worst] - base) / base:.1f} | {worst} | "
               f"{spread(every, 'loop_closures')} | {spread(every, 'loops_rejected_ambiguous')} | "
               f"{spread(every, 'loops_rejected_correction')} |")
+
 
 if __name__ == "__main__":
     main()

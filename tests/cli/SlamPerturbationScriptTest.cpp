@@ -17,14 +17,18 @@ void writeMetrics(const fs::path& dir, double ate, int closures, int ambiguous) 
       << R"(, "loops_rejected_ambiguous": )" << ambiguous << R"(, "loops_rejected_correction": 0})";
 }
 
+slamroute::test::CliResult runScript(const std::string& args) {
+  return slamroute::test::runCommand("python3 " + std::string(SLAMROUTE_SOURCE_DIR) +
+                                     "/bench/slam_perturbation.py --bin " + SLAMROUTE_BINARY +
+                                     " --report-only " + args);
+}
+
 TEST(SlamPerturbationScript, ReportsTheSpreadAndHowManyStayWithinTwentyPercent) {
   const fs::path out = slamroute::test::cliTempDir("slam_perturbation") / "pert";
   writeMetrics(out / "d1/base", 0.2, 10, 3);
   writeMetrics(out / "d1/loop.fitness_m2_minus", 0.23, 11, 3);
   writeMetrics(out / "d1/loop.fitness_m2_plus", 0.26, 12, 5);
-  const auto r = slamroute::test::runCommand(
-      "python3 " + std::string(SLAMROUTE_SOURCE_DIR) + "/bench/slam_perturbation.py --bin " +
-      SLAMROUTE_BINARY + " --report-only --params loop.fitness_m2 " + out.string() + " drives/d1");
+  const auto r = runScript("--params loop.fitness_m2 " + out.string() + " drives/d1");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("| d1 | 2 of 2 | 0.200 | 0.230 - 0.260 | 1 of 2 | 30.0 | "
                        "loop.fitness_m2_plus | 10-12 | 3-5 | 0 |"),
@@ -34,9 +38,7 @@ TEST(SlamPerturbationScript, ReportsTheSpreadAndHowManyStayWithinTwentyPercent) 
 
 TEST(SlamPerturbationScript, RefusesAParameterTheConfigDoesNotHave) {
   const fs::path out = slamroute::test::cliTempDir("slam_perturbation_bad") / "pert";
-  const auto r = slamroute::test::runCommand(
-      "python3 " + std::string(SLAMROUTE_SOURCE_DIR) + "/bench/slam_perturbation.py --bin " +
-      SLAMROUTE_BINARY + " --report-only --params loop.no_such_key " + out.string() + " d1");
+  const auto r = runScript("--params loop.no_such_key " + out.string() + " d1");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("lacks"), std::string::npos) << r.out;
 }
