@@ -43,6 +43,7 @@ void EdgeConfig::validate() const {
   requireNonNegative("attach_max_m", attach_max_m, 1000.0);
   requireNonNegative("end_merge_m", end_merge_m, 1000.0);
   requirePositive("polyline_step_m", polyline_step_m, 1000.0);
+  requireNonNegative("centreline_branch_max_m", centreline_branch_max_m, 1e5);
   requireNonNegative("min_run_m", min_run_m, 1e5);
   requirePositive("max_gap_s", max_gap_s, 1e5);
   requireRange("min_direction_runs", min_direction_runs, 1, 1000000);

@@ -141,6 +141,29 @@ bool attachBothEndsAtOneNode(const StreetContext& ctx, int c, Street& s, int& na
   return true;
 }
 
+/// The members on the way between the street's ends a and b, `from_a` holding the geodesic
+/// distances from a. A member whose way a -> it -> b is more than centreline_branch_max_m longer
+/// than the street lies on a side branch: one direction's lane of an arm, a few metres from the
+/// other and joined to the cluster only at the far junction, which the distances from a reach
+/// the long way round. Binned with the rest, its points would share bins with the next stretch
+/// of the street and pull the centreline diagonally across the block.
+std::vector<int> membersAlongStreet(const StreetContext& ctx, int c, const Street& s,
+                                    const std::vector<double>& from_a,
+                                    std::vector<double>& from_b) {
+  const auto at = [](const std::vector<double>& d, int i) {
+    return d[static_cast<std::size_t>(i)];
+  };
+  for (int i : s.members)
+    from_b[static_cast<std::size_t>(i)] = std::numeric_limits<double>::infinity();
+  geodesic(ctx.spts.pts, ctx.sp_grid, ctx.spts.label, c, ctx.ec.cluster_tolerance_m, s.b, from_b);
+  const double street = at(from_a, s.b) + ctx.ec.centreline_branch_max_m;
+  std::vector<int> along;
+  along.reserve(s.members.size());
+  for (int i : s.members)
+    if (at(from_a, i) + at(from_b, i) <= street) along.push_back(i);
+  return along;
+}
+
 /// Dead ends get an end node at the last centreline point.
 int endNode(GraphNodes& gn, const Point3& p, GraphBuildStats& st) {
   gn.pos.push_back(p);
@@ -161,6 +184,7 @@ std::vector<Street> attachStreets(const StreetPoints& spts, const Traces& traces
   const PointGrid node_grid(gn.pos, std::max(ec.clear_radius_m, 1.0));
   const PointGrid sp_grid(sp, std::max(ec.cluster_tolerance_m, 0.1));
   std::vector<double> dist(sp.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> from_b(sp.size(), std::numeric_limits<double>::infinity());
   std::vector<Street> streets;
   const StreetContext ctx{spts,   sp_grid,   traces,     order, voxel_of,
                           gn.pos, node_grid, gn.n_inter, ec,    half_h};
@@ -180,9 +204,12 @@ std::vector<Street> attachStreets(const StreetPoints& spts, const Traces& traces
         if (streets[k].u < 0) streets[k].u = endNode(gn, streets[k].centre.front(), st);
       continue;
     }
-    if (na >= 0 && na == nb && !attachBothEndsAtOneNode(ctx, c, s, na, nb, dist, st)) continue;
-    // Centreline from a to b: centroids of geodesic-distance bins.
-    s.centre = binnedCentre(sp, mem, dist, ec.polyline_step_m);
+    // Centreline from a to b: centroids of geodesic-distance bins. A U-shaped cluster (both
+    // ends at one node) keeps both legs: each leg's points lie at their distance from the bend.
+    const bool u_shaped = na >= 0 && na == nb;
+    if (u_shaped && !attachBothEndsAtOneNode(ctx, c, s, na, nb, dist, st)) continue;
+    const std::vector<int> binned = u_shaped ? mem : membersAlongStreet(ctx, c, s, dist, from_b);
+    s.centre = binnedCentre(sp, binned, dist, ec.polyline_step_m);
     if (s.centre.empty()) continue;
     s.u = na >= 0 ? na : endNode(gn, s.centre.front(), st);
     s.v = nb >= 0 ? nb : endNode(gn, s.centre.back(), st);

@@ -77,6 +77,16 @@ class SumoLanes {
     }
     return {};
   }
+  /// Length of the bridge a -> b [m]: 0 when b follows a directly, infinity when none joins them.
+  double bridgeLengthM(int a, int b) const {
+    if (turnAllowed(a, b)) return 0.0;
+    const auto path = bridge(a, b);
+    if (path.empty()) return std::numeric_limits<double>::infinity();
+    double len = 0.0;
+    for (const auto& id : path)
+      if (const SumoEdge* e = id == "." ? nullptr : net_.findEdge(id)) len += e->length();
+    return len;
+  }
 
  private:
   void sampleLane(const SumoLane& lane, int edge_id) {
@@ -102,9 +112,11 @@ class SumoLanes {
   std::optional<detail::PointGrid> grid_;
 };
 
-/// SUMO edges along a polyline in order, each with the number of samples that matched it.
+/// SUMO edges along a polyline in order, each with the number of samples that matched it and
+/// where along the polyline its first and last sample lie [m].
 struct EdgeRun {
   std::vector<int> edge, samples;
+  std::vector<double> first_m, last_m;
 };
 
 /// Samples the polyline every sample_step_m (skipping end_skip_m at both ends, except the
@@ -128,8 +140,11 @@ EdgeRun sumoEdgesAlong(const Polyline& pl, const SumoLanes& lanes, const SumoMat
       if (run.edge.empty() || run.edge.back() != best) {
         run.edge.push_back(best);
         run.samples.push_back(0);
+        run.first_m.push_back(pos);
+        run.last_m.push_back(pos);
       }
       ++run.samples.back();
+      run.last_m.back() = pos;
     }
     s += len;
   }
@@ -143,8 +158,11 @@ void dropFlickers(EdgeRun& run) {
   for (std::size_t k = 1; k + 1 < seq.size();) {
     if (seq[k - 1] == seq[k + 1]) {
       cnt[k - 1] += cnt[k + 1];
-      seq.erase(seq.begin() + static_cast<long>(k), seq.begin() + static_cast<long>(k) + 2);
-      cnt.erase(cnt.begin() + static_cast<long>(k), cnt.begin() + static_cast<long>(k) + 2);
+      run.last_m[k - 1] = run.last_m[k + 1];
+      for (auto* v : {&seq, &cnt})
+        v->erase(v->begin() + static_cast<long>(k), v->begin() + static_cast<long>(k) + 2);
+      for (auto* v : {&run.first_m, &run.last_m})
+        v->erase(v->begin() + static_cast<long>(k), v->begin() + static_cast<long>(k) + 2);
       k = std::max<std::size_t>(1, k - 1);
     } else {
       ++k;
@@ -154,26 +172,38 @@ void dropFlickers(EdgeRun& run) {
 
 /// Keeps the drivable chain with the most samples (longest path in the DAG of the sequence
 /// whose links are allowed turns or bridgeable within 4 edges): samples snapping to the other
-/// carriageway or a crossing street for a few steps cannot be driven and are dropped. Returns
-/// the SUMO edges of the chain; adds the matches dropped to `dropped`.
-std::vector<int> drivableChain(const EdgeRun& run, const SumoLanes& lanes, std::size_t& dropped) {
+/// carriageway or a crossing street for a few steps cannot be driven and are dropped. A bridge
+/// longer than the stretch of polyline between the two matches costs the samples its excess
+/// length would hold: a sample or two on the opposite lane at a corner would otherwise keep a
+/// chain that drives to the next junction and back to reach it. Returns the SUMO edges of the
+/// chain; adds the matches dropped to `dropped`.
+std::vector<int> drivableChain(const EdgeRun& run, const SumoLanes& lanes,
+                               const SumoMatchConfig& cfg, std::size_t& dropped) {
   const std::vector<int>& seq = run.edge;
   if (seq.size() <= 1) return seq;
   const std::size_t m = seq.size();
-  std::map<std::pair<int, int>, bool> linkable;
-  auto link = [&](int a, int b) {
-    if (a == b) return true;
-    const auto [it, fresh] = linkable.try_emplace({a, b}, false);
-    if (fresh) it->second = lanes.turnAllowed(a, b) || !lanes.bridge(a, b).empty();
+  std::map<std::pair<int, int>, double> bridges;
+  auto bridgeLength = [&](int a, int b) {
+    if (a == b) return 0.0;
+    const auto [it, fresh] = bridges.try_emplace({a, b}, 0.0);
+    if (fresh) it->second = lanes.bridgeLengthM(a, b);
     return it->second;
   };
-  std::vector<int> score(m, 0), parent(m, -1);
+  const auto cost = [&](std::size_t j, std::size_t k) {
+    const double gap = run.first_m[k] - run.last_m[j];
+    return std::max(0.0, bridgeLength(seq[j], seq[k]) - gap) / cfg.sample_step_m;
+  };
+  std::vector<double> score(m, 0.0);
+  std::vector<int> parent(m, -1);
   for (std::size_t k = 0; k < m; ++k) {
     score[k] = run.samples[k];
     for (std::size_t j = 0; j < k; ++j)
-      if (score[j] + run.samples[k] > score[k] && link(seq[j], seq[k])) {
-        score[k] = score[j] + run.samples[k];
-        parent[k] = static_cast<int>(j);
+      if (score[j] + run.samples[k] > score[k]) {
+        const double with_j = score[j] + run.samples[k] - cost(j, k);
+        if (with_j > score[k]) {
+          score[k] = with_j;
+          parent[k] = static_cast<int>(j);
+        }
       }
   }
   int k = static_cast<int>(std::max_element(score.begin(), score.end()) - score.begin());
@@ -274,7 +304,7 @@ std::size_t mapSumoEdges(RoadGraph& graph, const SumoNet& net, const SumoMatchCo
   for (auto& ge : graph.edges) {
     EdgeRun run = sumoEdgesAlong(ge.polyline, lanes, cfg);
     dropFlickers(run);
-    std::vector<int> chain = drivableChain(run, lanes, dropped);
+    std::vector<int> chain = drivableChain(run, lanes, cfg, dropped);
     connectors += dropConnectorEnds(chain, lanes, cfg);
     bridged += dropBridgedEnds(chain, run, lanes, cfg);
     strays += dropStrayEnds(chain, graph, ge, lanes, cfg);

@@ -1,8 +1,12 @@
 // Street polylines (roadgraph/src/Centreline.cpp): spikes left by bins of points reached the long
-// way round are dropped; real bends and the ends stay.
+// way round are dropped; real bends and the ends stay. A street's centreline follows the way
+// between its ends when one arm's lanes join the rest only at a corner (StreetClusters.cpp).
 #include <gtest/gtest.h>
 
-#include "Streets.hpp"
+#include <algorithm>
+#include <cmath>
+
+#include "StreetsOf.hpp"
 
 namespace slamroute::roadgraph::detail {
 namespace {
@@ -47,6 +51,43 @@ TEST(Centreline, BendsHairpinsAndShortJitterStay) {
     dropSpikes(pl, 10.0);
     EXPECT_EQ(pl, before);
   }
+}
+
+/// The default city's street R1C2 - R0C2 - T2 on survey seeds 2 and 4: an L whose north-south
+/// arm has its two one-way lanes 13 m apart, joined to the east-west arm (3.2 m between its lanes,
+/// one cluster) only at the corner K (0, 0). Nodes A (0, 212) at the top and B (312, 0) at the
+/// east end. The southbound lane reaches 20 m closer to A, so the street runs from its top to
+/// the east end; the northbound lane is reached from there through the corner, and its points lie
+/// 200-400 m along the geodesic order, the same as the east arm's first 200 m. (The traces of
+/// the road from the east end come first: the geodesic ends are searched from their first point.)
+std::vector<testing::Road> cornerWithSplitLanes() {
+  return {{{Point3(300, 0, 0), Point3(5, 0, 0), Point3(5, 190, 0)}, false},     // west, north
+          {{Point3(-5, 210, 0), Point3(-5, 0, 0), Point3(300, 0, 0)}, false}};  // south, east
+}
+
+/// How far the centreline strays from the L (x = 0 north of the corner, y = 0 east of it).
+double offTheL(const Polyline& centre) {
+  double far = 0.0;
+  for (const auto& p : centre)
+    far = std::max(far, std::min(std::hypot(p.x(), std::max(0.0, -p.y())),
+                                 std::hypot(std::max(0.0, -p.x()), p.y())));
+  return far;
+}
+
+TEST(Centreline, ArmWhoseLanesJoinOnlyAtTheCornerLeavesTheOtherLaneOut) {
+  const auto b = testing::streetsOf(cornerWithSplitLanes(), {Point3(0, 212, 0), Point3(312, 0, 0)});
+  const Street* s = testing::streetBetween(b, 0, 1);
+  ASSERT_NE(s, nullptr);
+  EXPECT_NEAR(polylineLength(s->centre), 500.0, 15.0);  // about 200 m south, 300 m east
+  EXPECT_LT(offTheL(s->centre), 8.0);
+  // Binned with the rest, the other lane's points pulled the centreline across the block.
+  EdgeConfig all;
+  all.centreline_branch_max_m = 1e5;
+  const auto mixed =
+      testing::streetsOf(cornerWithSplitLanes(), {Point3(0, 212, 0), Point3(312, 0, 0)}, all);
+  const Street* m = testing::streetBetween(mixed, 0, 1);
+  ASSERT_NE(m, nullptr);
+  EXPECT_GT(offTheL(m->centre), 30.0);
 }
 
 }  // namespace

@@ -9,10 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numeric>
 
-#include "Streets.hpp"
-#include "SyntheticTraces.hpp"
+#include "StreetsOf.hpp"
 
 namespace slamroute::roadgraph {
 namespace {
@@ -21,40 +19,11 @@ using testing::line;
 using testing::makeTraces;
 using testing::Road;
 
-struct Built {
-  detail::GraphNodes nodes;
-  std::vector<detail::Street> streets;
-};
+using Built = testing::BuiltStreets;
+using testing::streetBetween;
+using testing::streetsOf;
 
 const std::vector<Point3> kABH = {Point3(-162, 0, 0), Point3(162, 0, 0), Point3(0, 14, 0)};
-
-/// Streets of the traces of `roads` with the intersection nodes `nodes`.
-Built streetsOf(const std::vector<Road>& roads, const std::vector<Point3>& nodes) {
-  const Traces tr = makeTraces(roads, 0.0, 7, 1.0, /*passes=*/2);
-  const EdgeConfig ec;
-  const double half_h = 5.0;
-  Built b;
-  b.nodes.pos = nodes;
-  b.nodes.is_end.assign(b.nodes.pos.size(), 0);
-  b.nodes.n_inter = b.nodes.pos.size();
-  std::vector<Point3> voxels;
-  for (const auto& p : tr.points) voxels.push_back(p.pos);
-  std::vector<int> voxel_of(voxels.size());
-  std::iota(voxel_of.begin(), voxel_of.end(), 0);
-  const detail::StreetPoints spts =
-      detail::clearNodeNeighbourhoods(voxels, b.nodes.pos, ec, half_h);
-  GraphBuildStats st;
-  b.streets =
-      detail::attachStreets(spts, tr, byVehicleThenTime(tr), voxel_of, b.nodes, ec, half_h, st);
-  return b;
-}
-
-/// The street from node u to node v (either way), or nullptr.
-const detail::Street* streetBetween(const Built& b, int u, int v) {
-  for (const auto& s : b.streets)
-    if ((s.u == u && s.v == v) || (s.u == v && s.v == u)) return &s;
-  return nullptr;
-}
 
 /// A street with a dead end within 10 m of p, or nullptr.
 const detail::Street* streetFromDeadEndNear(const Built& b, const Point3& p) {

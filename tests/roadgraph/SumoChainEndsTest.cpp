@@ -12,6 +12,8 @@
 // (350, 512), as where a junction's node lies off the point where its arms meet. One sample
 // falls on the north arm's C_N, which SUMO joins to C_W only by turning round at N. The known
 // answer: the chain is C_W.
+//
+// Bridges (drivableChain), on the default city: a sample on the opposite lane at a corner.
 #include <gtest/gtest.h>
 #include "TestTmp.hpp"
 
@@ -110,15 +112,34 @@ TEST(SumoChainEnds, WeakEndJoinedOnlyByABridgeIsDropped) {
   RoadGraph g = graphAcrossTheBox();
   EXPECT_EQ(mapSumoEdges(g, net, SumoMatchConfig{}), 0u);
   EXPECT_EQ(g.edges[0].sumo_edges, std::vector<std::string>{"C_W"});
-  // Without the rule the chain starts up the north arm and is bridged round to C_W.
+  // Without the rule the bridge's cost drops it too: the drive from C_N round to C_W is far
+  // longer than the polyline between their samples.
   RoadGraph kept = graphAcrossTheBox();
   SumoMatchConfig cfg;
   cfg.bridged_end_max_samples = 0;
   mapSumoEdges(kept, net, cfg);
-  const auto& chain = kept.edges[0].sumo_edges;
-  ASSERT_GE(chain.size(), 3u);
-  EXPECT_EQ(chain.front(), "C_N");
-  EXPECT_EQ(chain.back(), "C_W");
+  EXPECT_EQ(kept.edges[0].sumo_edges, std::vector<std::string>{"C_W"});
+}
+
+TEST(SumoChainEnds, ASampleOnTheOppositeLaneAtACornerIsNotDrivenRoundTo) {
+  // The default city's street R1C2 -> R0C2 -> T2 (survey seed 2): its centreline comes down the
+  // north-south arm and bends east at R0C2 with a wiggle whose samples fall on the northbound
+  // lane R0C2_R1C2 for a step. Reaching that lane and leaving it for R0C2_T2 takes a drive to T2
+  // and back and one to R1C2 and back; the chain is the two streets of the corner.
+  const SumoNet net =
+      SumoNet::read(fs::path(SLAMROUTE_SOURCE_DIR) / "networks/default_city/default_city.net.xml");
+  RoadGraph g;
+  g.nodes = {{0, Point3(414.5, 219.2, 0), ""}, {1, Point3(734.6, 45.0, 0), ""}};
+  RoadEdge e;
+  e.u = 0;
+  e.v = 1;
+  e.polyline = {Point3(414.5, 219.2, 0), Point3(397.6, 52.9, 0), Point3(401.6, 38.7, 0),
+                Point3(405.9, 39.9, 0),  Point3(408.5, 41.8, 0), Point3(411.8, 43.3, 0),
+                Point3(421.1, 39.1, 0),  Point3(734.6, 45.0, 0)};
+  e.length_m = polylineLength(e.polyline);
+  g.edges.push_back(e);
+  EXPECT_EQ(mapSumoEdges(g, net, SumoMatchConfig{}), 0u);
+  EXPECT_EQ(g.edges[0].sumo_edges, (std::vector<std::string>{"R1C2_R0C2", "R0C2_T2"}));
 }
 
 }  // namespace

@@ -108,9 +108,13 @@ struct EdgeConfig {
   double attach_max_m = 22.0;        ///< a street end farther than this from a node dead-ends [m]
   double end_merge_m = 20.0;         ///< dead ends this close are one node (an undriven corner) [m]
   double polyline_step_m = 5.0;      ///< centreline vertex spacing [m]
-  double min_run_m = 8.0;            ///< travel along a street counted as a direction [m]
-  double max_gap_s = 3.0;            ///< a vehicle's trace breaks at larger time gaps [s]
-  int min_direction_runs = 1;        ///< runs needed to accept a direction of travel
+  /// Street points whose way from one end of the street to the other through them is longer
+  /// than the street by more than this lie on a side branch and are left out of its centreline
+  /// (StreetClusters.cpp, membersAlongStreet) [m].
+  double centreline_branch_max_m = 20.0;
+  double min_run_m = 8.0;             ///< travel along a street counted as a direction [m]
+  double max_gap_s = 3.0;             ///< a vehicle's trace breaks at larger time gaps [s]
+  int min_direction_runs = 1;         ///< runs needed to accept a direction of travel
   bool split_at_passed_nodes = true;  ///< split a street cluster at a junction it runs through
   /// A dead end whose street, continued this far, crosses another street is a T junction there
   /// (its vehicles' routes ended at the stop line, 5-8 m short of the street) [m]; 0 = off.
@@ -135,6 +139,9 @@ void visitFields(V& v, EdgeConfig& c) {
           "dead ends this close together are one node: streets whose ends meet at a corner no "
           "survey vehicle drove round stay connected (0 = off) [m]");
   v.field("polyline_step_m", c.polyline_step_m, "centreline vertex spacing [m]");
+  v.field("centreline_branch_max_m", c.centreline_branch_max_m,
+          "street points whose way from one end to the other through them is longer than the "
+          "street by more than this (a side branch) are left out of the centreline [m]");
   v.field("min_run_m", c.min_run_m, "travel along a street counted as a direction [m]");
   v.field("max_gap_s", c.max_gap_s, "a vehicle's trace breaks at larger time gaps [s]");
   v.field("min_direction_runs", c.min_direction_runs, "runs needed to accept a direction");
