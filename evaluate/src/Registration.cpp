@@ -23,12 +23,13 @@ struct Normal {
   Vec6 g = Vec6::Zero();
   double rows = 0;  ///< number of constrained directions, for normalising H
   /// One scalar residual r along unit direction n (world/target frame) for body point p.
-  void add(const Mat3& R, const Vec3& p, const Vec3& n, double r, double huber) {
+  void add(const Mat3& R, const Vec3& p, const Vec3& n, double r, double huber,
+           double weight = 1.0) {
     const Vec3 nb = R.transpose() * n;  // direction in the body frame
     Row6 J;
     J.head<3>() = p.cross(nb).transpose();  // d r / d(rotation): n^T R (-[p]x)
     J.tail<3>() = nb.transpose();
-    const double w = std::abs(r) <= huber ? 1.0 : huber / std::abs(r);
+    const double w = weight * (std::abs(r) <= huber ? 1.0 : huber / std::abs(r));
     H += w * J.transpose() * J;
     g += w * J.transpose() * r;
     rows += 1;
@@ -244,8 +245,8 @@ AlignResult alignFeatures(const FeatureMap& target, const Cloud& src_edges, cons
       // Point-to-line distance (LOAM eq. 2) as two orthogonal scalar residuals.
       const Vec3 u = c.axis.unitOrthogonal();
       const Vec3 v = c.axis.cross(u);
-      ne.add(R, c.p, u, u.dot(perp), opt.huber_m);
-      ne.add(R, c.p, v, v.dot(perp), opt.huber_m);
+      ne.add(R, c.p, u, u.dot(perp), opt.huber_m, opt.edge_weight);
+      ne.add(R, c.p, v, v.dot(perp), opt.huber_m, opt.edge_weight);
       if (perp.norm() < opt.inlier_m) ++inliers;
     }
     for (const Corr& c : planes) {

@@ -57,6 +57,10 @@ TEST(EvaluateConfig, ValuesThatCannotWorkAreRefusedByName) {
   EXPECT_NE(loadError("metrics: {map_accuracy_max_m: 0}\n").find("map_accuracy_max_m"),
             std::string::npos);
   EXPECT_NE(loadError("mapping: {huber_m: .nan}\n").find("mapping.huber_m"), std::string::npos);
+  EXPECT_NE(loadError("mapping: {edge_weight: 0}\n").find("mapping.edge_weight"),
+            std::string::npos);
+  EXPECT_NE(loadError("mapping: {edge_weight: 2}\n").find("mapping.edge_weight"),
+            std::string::npos);
   EXPECT_NE(loadError("loop: {ambiguity_along_m: [3, -1]}\n").find("ambiguity_along_m"),
             std::string::npos);
 }

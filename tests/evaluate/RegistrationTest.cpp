@@ -177,6 +177,62 @@ TEST(AlignFeaturesPrior, AFadedPriorActsWhereTheFeaturesAreWeakOnly) {
   EXPECT_GT(pulled.T_target_source.translation().x() - T_true.translation().x(), 0.05);
 }
 
+/// The corridor with vertical lines (poles) every 7 m on both sides, 1 m in front of the walls.
+FeatureMap corridorWithPoles(Cloud& edges, Cloud& planes) {
+  for (double x = -28; x <= 28; x += 7)
+    for (double z = 0.2; z < 4.0; z += 0.2)
+      for (const double y : {-7.0, 7.0})
+        edges.emplace_back(static_cast<float>(x + (y > 0 ? 3.0 : 0.0)), static_cast<float>(y),
+                           static_cast<float>(z));
+  corridor(planes);  // the walls and the ground
+  FeatureMap map;
+  map.build(edges, planes);
+  return map;
+}
+
+class EdgeWeight : public ::testing::TestWithParam<double> {};
+
+TEST_P(EdgeWeight, EdgesAloneHoldWhatThePlanesLeaveOpen) {
+  // Along the corridor only the poles say where the scan is (and, weakly, the planes' sampling
+  // pattern: at a hundredth of their weight the edges lose to it).
+  Cloud edges, planes;
+  const FeatureMap map = corridorWithPoles(edges, planes);
+  Pose3 T_true = Pose3::Identity();
+  T_true.translation() = Vec3(0.4, 0.3, 0.0);
+  AlignOptions opt;
+  opt.iterations = 30;
+  opt.edge_weight = GetParam();
+  const AlignResult r = alignFeatures(map, moved(edges, T_true.inverse()),
+                                      moved(planes, T_true.inverse()), Pose3::Identity(), opt);
+  EXPECT_LT((r.T_target_source.translation() - T_true.translation()).norm(), 0.01)
+      << r.T_target_source.translation().transpose();
+}
+
+INSTANTIATE_TEST_SUITE_P(Weights, EdgeWeight, ::testing::Values(1.0, 0.3, 0.1));
+
+TEST(EdgeWeight, ALowWeightLetsThePlanesOverruleEdgesThatLag) {
+  // The corner, with the scan's edges 10 cm further along x than the map's (silhouettes of
+  // round things seen from further on): the planes, x held by the facade at x = 21, say 0.4.
+  Cloud edges, planes;
+  const FeatureMap map = corner(edges, planes);
+  Pose3 T_true = Pose3::Identity();
+  T_true.translation() = Vec3(0.4, -0.25, 0.05);
+  Pose3 lag = Pose3::Identity();
+  lag.translation() = Vec3(0.1, 0.0, 0.0);
+  const Cloud src_edges = moved(edges, T_true.inverse() * lag);
+  const Cloud src_planes = moved(planes, T_true.inverse());
+  const auto xError = [&](double weight) {
+    AlignOptions opt;
+    opt.iterations = 30;
+    opt.edge_weight = weight;
+    const AlignResult r = alignFeatures(map, src_edges, src_planes, Pose3::Identity(), opt);
+    return std::abs(r.T_target_source.translation().x() - T_true.translation().x());
+  };
+  const double full = xError(1.0), low = xError(0.1);
+  EXPECT_GT(full, 0.01);
+  EXPECT_LT(low, 0.3 * full) << full << " " << low;
+}
+
 /// A street 16 m wide between two facades along x (-60..60 m), with the ground, and 2 m wide
 /// pillars standing 1 m out of each facade at the given x positions; 0.4 m point spacing.
 Cloud streetWithPillars(const std::vector<double>& pillars_x) {

@@ -163,7 +163,13 @@ struct MappingConfig {
   /// Robust (Huber) kernel width for residuals, scan-to-scan and scan-to-map [m]. Not in
   /// LeGO-LOAM (it uses 1-0.9|d|): with 2 cm the registration ignores the noisy tail.
   double huber_m = 0.02;
-  double plane_max_dev_m = 0.2;      ///< plane fit: all 5 neighbours within this [m] (LOAM 0.2)
+  double plane_max_dev_m = 0.2;  ///< plane fit: all 5 neighbours within this [m] (LOAM 0.2)
+  /// Weight of the point-to-line residuals against the point-to-plane ones in scan-to-map. The
+  /// edges of round things (poles, trunks) are silhouettes that move round them with the
+  /// viewpoint, so the map's lines lag behind the new scan's and pull it back along the street.
+  /// Where the planes leave a direction free (an open street: along it) the edges alone still
+  /// hold it at a tenth of the planes' weight.
+  double edge_weight = 0.1;
   int min_edge_features = 10;        ///< fewer edge matches: unreliable
   int min_plane_features = 50;       ///< fewer plane matches: unreliable
   double degeneracy_min_eig = 0.02;  ///< min normalised eigenvalue of the translation block
@@ -453,6 +459,9 @@ void visitFields(V& v, MappingConfig& c) {
           "keyframe distance of failed scans [m]");
   v.field("huber_m", c.huber_m, "robust kernel width [m]");
   v.field("plane_max_dev_m", c.plane_max_dev_m, "plane fit max neighbour deviation [m]");
+  v.field("edge_weight", c.edge_weight,
+          "weight of the point-to-line (edge) residuals against the point-to-plane ones in "
+          "scan-to-map (0, 1]");
   v.field("min_edge_features", c.min_edge_features, "min edge matches");
   v.field("min_plane_features", c.min_plane_features, "min plane matches");
   v.field("degeneracy_min_eig", c.degeneracy_min_eig, "min normalised translation eigenvalue");

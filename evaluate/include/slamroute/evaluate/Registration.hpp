@@ -27,6 +27,7 @@ struct AlignOptions {
   double max_nn_m = 1.0;  ///< all 5 neighbours of a correspondence within this [m]
   double huber_m = 0.1;
   double plane_max_dev_m = 0.2;  ///< all neighbours within this of their fitted plane [m]
+  double edge_weight = 1.0;      ///< weight of the point-to-line residuals (planes: 1)
   unsigned dof_mask = kAllDof;
   double degenerate_eig = 0.0;  ///< > 0: freeze directions with lambda/rows below this
   double inlier_m = 0.1;        ///< residuals below this count as inliers (hypothesis score) [m]
