@@ -99,6 +99,7 @@ void MappingConfig::validate() const {
   requirePositive("huber_m", huber_m);
   requirePositive("plane_max_dev_m", plane_max_dev_m);
   requireRange("edge_weight", edge_weight, 1e-6, 1.0);
+  requireRange("edge_weight_without_odometry", edge_weight_without_odometry, 1e-6, 1.0);
   requireRange("min_edge_features", min_edge_features, 0, kMaxCount);
   requireRange("min_plane_features", min_plane_features, 0, kMaxCount);
   requireNonNegative("degeneracy_min_eig", degeneracy_min_eig);

@@ -1,6 +1,6 @@
 // The scan-to-map's registration options (evaluate/src/slam/ScanToMap): with wheel odometry the
-// prior towards its prediction and mapping.iterations; without it no prior and
-// mapping.iterations_without_odometry.
+// prior towards its prediction, mapping.iterations and mapping.edge_weight; without it no prior,
+// mapping.iterations_without_odometry and mapping.edge_weight_without_odometry.
 #include <gtest/gtest.h>
 
 #include "slam/ScanToMap.hpp"
@@ -8,10 +8,12 @@
 namespace slamroute::evaluate {
 namespace {
 
-TEST(ScanToMap, WithoutOdometryTheRegistrationHasNoPriorAndItsOwnIterations) {
+TEST(ScanToMap, WithoutOdometryTheRegistrationHasNoPriorAndItsOwnIterationsAndEdgeWeight) {
   Config cfg;
   cfg.mapping.iterations = 7;
   cfg.mapping.iterations_without_odometry = 23;
+  cfg.mapping.edge_weight = 0.2;
+  cfg.mapping.edge_weight_without_odometry = 0.7;
   const slam::ScanToMap s2m(cfg);
   slam::MotionModel lidar_only(cfg, Pose3::Identity());
   slam::MotionModel wheels(cfg, Pose3::Identity());
@@ -19,9 +21,11 @@ TEST(ScanToMap, WithoutOdometryTheRegistrationHasNoPriorAndItsOwnIterations) {
   const slam::Prediction step;
   const AlignOptions a = s2m.options(lidar_only, step);
   EXPECT_EQ(a.iterations, 23);
+  EXPECT_DOUBLE_EQ(a.edge_weight, 0.7);
   EXPECT_FALSE((a.prior_weight.array() > 0).any());
   const AlignOptions b = s2m.options(wheels, step);
   EXPECT_EQ(b.iterations, 7);
+  EXPECT_DOUBLE_EQ(b.edge_weight, 0.2);
   EXPECT_TRUE((b.prior_weight.array() > 0).any());
 }
 

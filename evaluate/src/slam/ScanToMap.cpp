@@ -66,7 +66,7 @@ AlignOptions ScanToMap::options(const MotionModel& motion, const Prediction& ste
   o.max_nn_m = c.max_nn_m;
   o.huber_m = c.huber_m;
   o.plane_max_dev_m = c.plane_max_dev_m;
-  o.edge_weight = c.edge_weight;
+  o.edge_weight = motion.hasOdometry() ? c.edge_weight : c.edge_weight_without_odometry;
   if (c.degeneracy_remap) o.degenerate_eig = c.degeneracy_min_eig;
   motion.addOdometryPrior(o, step);
   return o;
