@@ -159,10 +159,13 @@ void dropFlickers(EdgeRun& run) {
     if (seq[k - 1] == seq[k + 1]) {
       cnt[k - 1] += cnt[k + 1];
       run.last_m[k - 1] = run.last_m[k + 1];
-      for (auto* v : {&seq, &cnt})
-        v->erase(v->begin() + static_cast<long>(k), v->begin() + static_cast<long>(k) + 2);
-      for (auto* v : {&run.first_m, &run.last_m})
-        v->erase(v->begin() + static_cast<long>(k), v->begin() + static_cast<long>(k) + 2);
+      const auto dropTwo = [k](auto& v) {
+        v.erase(v.begin() + static_cast<long>(k), v.begin() + static_cast<long>(k) + 2);
+      };
+      dropTwo(seq);
+      dropTwo(cnt);
+      dropTwo(run.first_m);
+      dropTwo(run.last_m);
       k = std::max<std::size_t>(1, k - 1);
     } else {
       ++k;

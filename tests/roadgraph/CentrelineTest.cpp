@@ -80,7 +80,8 @@ TEST(Centreline, ArmWhoseLanesJoinOnlyAtTheCornerLeavesTheOtherLaneOut) {
   ASSERT_NE(s, nullptr);
   EXPECT_NEAR(polylineLength(s->centre), 500.0, 15.0);  // about 200 m south, 300 m east
   EXPECT_LT(offTheL(s->centre), 8.0);
-  // Binned with the rest, the other lane's points pulled the centreline across the block.
+  // With the rule off, the other lane's points share bins with the east arm's and pull the
+  // centreline across the block.
   EdgeConfig all;
   all.centreline_branch_max_m = 1e5;
   const auto mixed =
