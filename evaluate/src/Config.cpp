@@ -56,6 +56,7 @@ void OdometryConfig::validate() const {
   requireNonNegative("rotation_slack_deg", rotation_slack_deg);
   requirePositive("wheel_translation_slack_m", wheel_translation_slack_m);
   requirePositive("wheel_rotation_slack_deg", wheel_rotation_slack_deg);
+  requireNonNegative("slack_since_fix_max_s", slack_since_fix_max_s);
   requireNonNegative("prior_sigma_m", prior_sigma_m);
   requireNonNegative("prior_along_sigma_m", prior_along_sigma_m);
   requireNonNegative("prior_along_fade_info", prior_along_fade_info);

@@ -61,6 +61,9 @@ TEST(EvaluateConfig, ValuesThatCannotWorkAreRefusedByName) {
             std::string::npos);
   EXPECT_NE(loadError("mapping: {edge_weight: 2}\n").find("mapping.edge_weight"),
             std::string::npos);
+  EXPECT_NE(
+      loadError("odometry: {slack_since_fix_max_s: -1}\n").find("odometry.slack_since_fix_max_s"),
+      std::string::npos);
   EXPECT_NE(loadError("loop: {ambiguity_along_m: [3, -1]}\n").find("ambiguity_along_m"),
             std::string::npos);
 }

@@ -172,6 +172,48 @@ TEST(MotionModel, AJumpOfMetresInOneScanIsNotPlausible) {
   EXPECT_FALSE(m.plausibleStep(p.T_world, p.T_world * forward(5.0), p));
 }
 
+// With wheel odometry a registration may move the prediction 0.25 m per 0.1 s. After scans that
+// failed to register, the prediction has gone on from an uncorrected pose, so the slack counts the
+// time since the last registered scan (0.4 s after three failures at 10 Hz: 1 m), at most
+// slack_since_fix_max_s (here 0.5 s) beyond the step (after 30 failures: 0.6 s, 1.5 m); with 0, the
+// step's 0.25 m alone. A registered scan brings it back to the step.
+class MotionModelSlack : public ::testing::TestWithParam<double> {};
+
+TEST_P(MotionModelSlack, TheSlackCountsTheTimeSinceTheLastRegisteredScan) {
+  Config cfg;
+  cfg.odometry.slack_since_fix_max_s = GetParam();
+  const bool grows = GetParam() > 0;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setOdometry(WheelOdometry({{0.0, 10.0, 0.0}, {100.0, 10.0, 0.0}}));
+  m.setInitialMotion(forward(1.0), 0.1);
+  m.recordFrame(0.0, Pose3::Identity());
+  using Outcome = slam::MotionModel::Outcome;
+  const auto step = [&](Outcome o, int k) {
+    m.update(o, o == Outcome::Registered, m.lastPose(), m.predict(0.1 * k), 0.1);
+    m.recordFrame(0.1 * k, m.predict(0.1 * k));
+  };
+  const auto sideways = [&](double t, double y) {
+    const slam::Prediction p = m.predictStep(t);
+    Pose3 off = Pose3::Identity();
+    off.translation().y() = y;
+    return m.plausibleStep(p.T_world, p.T_world * off, p);
+  };
+  step(Outcome::Registered, 1);
+  for (int k = 2; k <= 4; ++k) step(Outcome::Failed, k);
+  EXPECT_NEAR(m.predictStep(0.5).since_fix_s, 0.4, 1e-9);
+  EXPECT_TRUE(sideways(0.5, 0.2));
+  EXPECT_EQ(sideways(0.5, 0.95), grows);
+  EXPECT_FALSE(sideways(0.5, 1.05));
+  for (int k = 5; k <= 31; ++k) step(Outcome::Failed, k);
+  EXPECT_EQ(sideways(3.2, 1.45), grows);
+  EXPECT_FALSE(sideways(3.2, 1.55));
+  step(Outcome::Registered, 32);
+  EXPECT_TRUE(sideways(3.3, 0.2));
+  EXPECT_FALSE(sideways(3.3, 0.3));
+}
+
+INSTANTIATE_TEST_SUITE_P(GrowingOrStepOnly, MotionModelSlack, ::testing::Values(0.5, 0.0));
+
 TEST(MotionModel, TheOdometryPriorWeighsYawAndAFadingAlongPriorByDefault) {
   const Config cfg;
   slam::MotionModel m(cfg, Pose3::Identity());

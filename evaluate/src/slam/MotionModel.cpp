@@ -57,6 +57,7 @@ Pose3 MotionModel::carTurn(const Pose3& v, double dt, double max_accel) {
 }
 
 void MotionModel::recordFrame(double t, const Pose3& T_world) {
+  if (!started_) t_fix_ = t;
   T_world_last_ = T_world;
   t_last_ = t;
   started_ = true;
@@ -90,6 +91,7 @@ Prediction MotionModel::predictStep(double t) const {
   p.dt = t - t_last_;
   p.scale = std::max(1.0, p.dt / 0.1);
   p.speed_mps = have_velocity_ ? velocity_.translation().norm() / velocity_dt_ : 0.0;
+  p.since_fix_s = started_ ? std::max(p.dt, t - t_fix_) : p.dt;
   return p;
 }
 
@@ -119,8 +121,9 @@ Pose3 MotionModel::motionOver(double t, double duration) const {
 
 bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result,
                                 const Prediction& step) const {
+  const double slack_s = std::min(step.since_fix_s, step.dt + cfg_.odometry.slack_since_fix_max_s);
   return plausible(pred, result, cfg_, step.dt, step.speed_mps) &&
-         (odometry_.empty() || plausibleWithOdometry(pred, result, cfg_, step.dt));
+         (odometry_.empty() || plausibleWithOdometry(pred, result, cfg_, slack_s));
 }
 
 void MotionModel::addOdometryPrior(AlignOptions& o, const Prediction& step) const {
@@ -153,6 +156,7 @@ double MotionModel::imuPitchRad(double t) const {
 
 void MotionModel::update(Outcome outcome, bool consecutive, const Pose3& T_good,
                          const Pose3& T_world, double dt) {
+  if (outcome != Outcome::Failed) t_fix_ = t_last_ + dt;
   if (outcome != Outcome::Registered || !consecutive) last_rate_.reset();
   if (outcome != Outcome::Registered) recent_rates_.clear();
   if (outcome == Outcome::Failed && have_velocity_) {

@@ -21,6 +21,7 @@ struct Prediction {
   double dt = 0.1;                    ///< time since the last frame [s]
   double scale = 1.0;                 ///< dt in units of 0.1 s, at least 1 (slacks grow with it)
   double speed_mps = 0.0;             ///< current speed estimate (0 before any motion is known)
+  double since_fix_s = 0.1;           ///< time since the last registered scan, at least dt [s]
 };
 
 class MotionModel {
@@ -44,7 +45,8 @@ class MotionModel {
   Pose3 motionOver(double t, double duration) const;
 
   /// `result` is a motion a car can make from `pred` within the step (and, with odometry, within
-  /// its slack).
+  /// its slack, which counts the time since the last registered scan:
+  /// OdometryConfig::slack_since_fix_max_s).
   bool plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const;
   /// Prior of a scan-to-map towards the odometry's prediction (x, y, yaw); no-op without odometry.
   void addOdometryPrior(AlignOptions& o, const Prediction& step) const;
@@ -90,6 +92,7 @@ class MotionModel {
   TiltBias tilt_bias_;
   Pose3 T_world_last_;
   double t_last_ = 0.0;
+  double t_fix_ = 0.0;  ///< time of the last registered (or relocalised) scan [s]
   bool started_ = false;
   Pose3 velocity_ = Pose3::Identity();  ///< motion over velocity_dt_, body frame
   double velocity_dt_ = 0.1;            ///< [s]

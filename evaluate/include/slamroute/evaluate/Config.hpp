@@ -81,6 +81,11 @@ struct OdometryConfig {
   /// far in x/y and yaw per 0.1 s (the gyro drifts ~0.05 deg/s, the wheels ~1 %) [m], [deg]
   double wheel_translation_slack_m = 0.25;
   double wheel_rotation_slack_deg = 0.5;
+  /// After scans that failed to register the prediction has gone on from an uncorrected pose, so
+  /// the slack counts the time since the last registered scan, up to this much more than the
+  /// step: otherwise one registration just beyond the slack (a car slipping sideways in a U-turn)
+  /// makes every following one fall further outside it. 0 = the step alone [s]
+  double slack_since_fix_max_s = 1.0;
   /// With wheel odometry + gyro the scan-to-map also pulls towards the odometry's prediction
   /// with these sigmas per 0.1 s against LiDAR residuals of prior_registration_sigma_m (a prior
   /// factor, as in LiDAR-inertial smoothers; 0 = off). It decides only the directions the
@@ -399,6 +404,9 @@ void visitFields(V& v, OdometryConfig& c) {
           "with wheel odometry: registration may move its prediction this far per 0.1 s [m]");
   v.field("wheel_rotation_slack_deg", c.wheel_rotation_slack_deg,
           "with wheel odometry: ... and turn it this much in yaw per 0.1 s [deg]");
+  v.field("slack_since_fix_max_s", c.slack_since_fix_max_s,
+          "both slacks count the time since the last registered scan, at most this beyond the "
+          "step; 0 = the step alone [s]");
   v.field("prior_sigma_m", c.prior_sigma_m,
           "scan-to-map prior towards the odometry, x/y sigma per 0.1 s (0 = off) [m]");
   v.field("prior_along_sigma_m", c.prior_along_sigma_m,
