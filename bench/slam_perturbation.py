@@ -18,7 +18,8 @@ import argparse, concurrent.futures, json, os, subprocess, sys
 PARAMS = [
     ("odometry", "prior_sigma_deg"), ("odometry", "prior_registration_sigma_m"),
     ("odometry", "imu_tilt_weight"), ("odometry", "wheel_translation_slack_m"),
-    ("odometry", "wheel_rotation_slack_deg"), ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"),
+    ("odometry", "wheel_rotation_slack_deg"), ("odometry", "slack_since_fix_max_s"),
+    ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"),
     ("loop", "graph_odom_sigma_m"), ("loop", "graph_odom_sigma_rad"), ("loop", "graph_loop_sigma_m"),
     ("loop", "graph_loop_sigma_rad"), ("loop", "fitness_m2"), ("loop", "graph_imu_pitch_sigma_deg"),
     ("loop", "graph_pitch_bias_sigma_deg"),
