@@ -91,7 +91,7 @@ Prediction MotionModel::predictStep(double t) const {
   p.dt = t - t_last_;
   p.scale = std::max(1.0, p.dt / 0.1);
   p.speed_mps = have_velocity_ ? velocity_.translation().norm() / velocity_dt_ : 0.0;
-  p.since_fix_s = started_ ? std::max(p.dt, t - t_fix_) : p.dt;
+  p.since_fix_s = std::max(p.dt, t - t_fix_);  // t_fix_ starts where t_last_ does
   return p;
 }
 
