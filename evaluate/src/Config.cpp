@@ -116,6 +116,7 @@ void RelocaliseConfig::validate() const {
 
 void LoopConfig::validate() const {
   requirePositive("radius_m", radius_m);
+  requirePositive("max_height_gap_m", max_height_gap_m);
   requireNonNegative("min_time_gap_s", min_time_gap_s);
   requireRange("submap_keyframes", submap_keyframes, 0, kMaxCount);
   requirePositive("voxel_m", voxel_m);

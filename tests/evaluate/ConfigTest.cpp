@@ -64,6 +64,8 @@ TEST(EvaluateConfig, ValuesThatCannotWorkAreRefusedByName) {
   EXPECT_NE(
       loadError("odometry: {slack_since_fix_max_s: -1}\n").find("odometry.slack_since_fix_max_s"),
       std::string::npos);
+  EXPECT_NE(loadError("loop: {max_height_gap_m: 0}\n").find("loop.max_height_gap_m"),
+            std::string::npos);
   EXPECT_NE(loadError("loop: {ambiguity_along_m: [3, -1]}\n").find("ambiguity_along_m"),
             std::string::npos);
 }

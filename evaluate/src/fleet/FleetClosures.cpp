@@ -3,6 +3,7 @@
 // yaw, fitness and inlier share, yaw change, no restart elsewhere fitting as well).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 
 #include "FleetInternal.hpp"
 #include "slamroute/evaluate/LoopVerification.hpp"
@@ -61,8 +62,13 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
     q.gate_centre = kb[k].pose.translation();
     q.gate_radius_m = opt.gate_m;
     const auto found = db.query(cb.descriptors[k], q);
-    if (found.empty()) continue;
-    const PlaceCandidate& c = found.front();
+    const double z = kb[k].pose.translation().z();
+    const auto same_level = std::find_if(found.begin(), found.end(), [&](const PlaceCandidate& p) {
+      const double za = ka[static_cast<std::size_t>(p.keyframe)].pose.translation().z();
+      return std::abs(za - z) <= cfg.loop.max_height_gap_m;  // not a deck over the street
+    });
+    if (same_level == found.end()) continue;
+    const PlaceCandidate& c = *same_level;
     ++candidates;
     const IcpTarget target(
         submap(ca, ka, c.keyframe, opt.target_keyframes_each_side, cfg.loop.voxel_m));

@@ -200,9 +200,16 @@ struct RelocaliseConfig {
 
 /// Loop closure (candidates, ICP verification, consistency checks) and the pose graph.
 struct LoopConfig {
-  void validate() const;          ///< values that cannot work: std::invalid_argument (Config.cpp)
-  bool enabled = true;            ///< enable loop closure
-  double radius_m = 7.0;          ///< search radius around the new keyframe's estimate [m]
+  void validate() const;  ///< values that cannot work: std::invalid_argument (Config.cpp)
+  bool enabled = true;    ///< enable loop closure
+  double radius_m = 7.0;  ///< search radius around the new keyframe's estimate [m]
+  /// Old keyframes more than this above or below the new keyframe's estimate are not candidates:
+  /// they are on another level (a bridge deck over the street, the street under it), whose scans
+  /// see the deck from both sides, and ICP put two such keyframes 6.4 m apart at 5.6 m, which
+  /// moved both streets' heights by 0.3 m the other way (docs/NOTES.md, "A closure between a
+  /// bridge and the street under it"). Height drifts centimetres between closures with the IMU's
+  /// pitch in the graph; a deck clears the street by 4 m or more [m]
+  double max_height_gap_m = 2.0;
   double min_time_gap_s = 30.0;   ///< candidate must be older than this [s]
   int submap_keyframes = 10;      ///< keyframes each side of the candidate in its submap
   double voxel_m = 0.4;           ///< voxel for ICP clouds [m]
@@ -496,6 +503,8 @@ template <class V>
 void visitFields(V& v, LoopConfig& c) {
   v.field("enabled", c.enabled, "enable loop closure");
   v.field("radius_m", c.radius_m, "loop search radius [m]");
+  v.field("max_height_gap_m", c.max_height_gap_m,
+          "old keyframes farther above or below the estimate are not candidates [m]");
   v.field("min_time_gap_s", c.min_time_gap_s, "loop min time gap [s]");
   v.field("submap_keyframes", c.submap_keyframes, "submap keyframes each side");
   v.field("voxel_m", c.voxel_m, "ICP voxel [m]");
