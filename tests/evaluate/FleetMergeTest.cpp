@@ -1,6 +1,7 @@
 // The fleet merge on a synthetic city block: two vehicles drive the same loop from opposite
 // corners; closures between them are found by place and ICP, and the pose graph puts the second
-// vehicle's offset estimate back onto the first's frame.
+// vehicle's offset estimate back onto the first's frame; a vehicle on another level (a deck over
+// the street) closes none.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -128,6 +129,19 @@ TEST(FleetMerge, FindsClosuresBetweenVehiclesAndJoinsAnOffsetEstimate) {
   EXPECT_GT(r.common_ate_before_m, 0.8);
   EXPECT_LT(r.common_ate_after_m, 0.15);
   EXPECT_LT(r.vehicles[1].common_ate_after_m, 0.15);
+}
+
+// b's estimate 6 m above a's (a deck over the street a drives): no closures between the two
+// levels with the default loop.max_height_gap_m; with a gap that lets it, the same ones as level.
+TEST(FleetMerge, KeyframesOnAnotherLevelAreNoCandidates) {
+  const test::LoopScanSource a(0.0, 200), b(150.0, 200);
+  const Pose3 up = test::poseXYZYaw(0.0, 0.0, 6.0, 0.0);
+  std::vector<FleetVehicleInput> vs = {{"a", {}, a.groundTruth(), a.groundTruth(), &a},
+                                       {"b", {}, moved(b.groundTruth(), up), b.groundTruth(), &b}};
+  EXPECT_TRUE(mergeFleet(vs, Config{}, FleetMergeOptions{}).closures.empty());
+  Config wide;
+  wide.loop.max_height_gap_m = 10.0;
+  EXPECT_GE(mergeFleet(vs, wide, FleetMergeOptions{}).closures.size(), 5u);
 }
 
 TEST(FleetMerge, CommonAteOfTwoEqualOffsetsIsZeroAndOfOneOffsetIsShared) {
