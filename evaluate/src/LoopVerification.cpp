@@ -30,6 +30,10 @@ IcpAmbiguity loopAmbiguity(const LoopConfig& c) {
   return a;
 }
 
+bool onSameLevel(const Vec3& a, const Vec3& b, const LoopConfig& c) {
+  return std::abs(a.z() - b.z()) <= c.max_height_gap_m;
+}
+
 SubmapAgreementOptions loopSubmapAgreement(const LoopConfig& c) {
   SubmapAgreementOptions o;
   o.icp_iterations = c.icp_iterations;

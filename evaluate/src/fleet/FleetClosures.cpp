@@ -3,7 +3,6 @@
 // yaw, fitness and inlier share, yaw change, no restart elsewhere fitting as well).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <cmath>
 
 #include "FleetInternal.hpp"
 #include "slamroute/evaluate/LoopVerification.hpp"
@@ -62,10 +61,9 @@ void closePair(int a, int b, const std::vector<std::vector<FleetKeyframe>>& kfs,
     q.gate_centre = kb[k].pose.translation();
     q.gate_radius_m = opt.gate_m;
     const auto found = db.query(cb.descriptors[k], q);
-    const double z = kb[k].pose.translation().z();
     const auto same_level = std::find_if(found.begin(), found.end(), [&](const PlaceCandidate& p) {
-      const double za = ka[static_cast<std::size_t>(p.keyframe)].pose.translation().z();
-      return std::abs(za - z) <= cfg.loop.max_height_gap_m;  // not a deck over the street
+      return onSameLevel(ka[static_cast<std::size_t>(p.keyframe)].pose.translation(),
+                         kb[k].pose.translation(), cfg.loop);
     });
     if (same_level == found.end()) continue;
     const PlaceCandidate& c = *same_level;

@@ -44,7 +44,7 @@ std::optional<LoopCandidate> LoopCloser::nearbyCandidate(const KeyframeGraph& gr
   for (std::size_t k = 0; k + 1 < graph.size(); ++k) {
     const Keyframe& kf = graph.at(k);
     if (cur.t - kf.t < cfg_.loop.min_time_gap_s) break;  // keyframes are in time order
-    if (!sameLevel(kf, cur)) continue;
+    if (!onSameLevel(kf.T_world.translation(), cur.T_world.translation(), cfg_.loop)) continue;
     const double d = (kf.T_world.translation() - cur.T_world.translation()).norm();
     if (d < best_d) {
       best_d = d;
@@ -70,7 +70,8 @@ std::optional<LoopCandidate> LoopCloser::placeCandidate(const KeyframeGraph& gra
   q.gate_radius_m = gate;
   const std::vector<PlaceCandidate> found = places_.query(newest_, q);
   const auto best_it = std::find_if(found.begin(), found.end(), [&](const PlaceCandidate& p) {
-    return sameLevel(graph.at(static_cast<std::size_t>(p.keyframe)), cur);
+    return onSameLevel(graph.at(static_cast<std::size_t>(p.keyframe)).T_world.translation(),
+                       cur.T_world.translation(), cfg_.loop);
   });
   if (best_it == found.end()) return std::nullopt;
   const PlaceCandidate& best = *best_it;
@@ -78,11 +79,6 @@ std::optional<LoopCandidate> LoopCloser::placeCandidate(const KeyframeGraph& gra
   turn.linear() = Eigen::AngleAxisd(best.yaw_rad, Vec3::UnitZ()).toRotationMatrix();
   const Pose3 init = graph.at(static_cast<std::size_t>(best.keyframe)).T_world * turn;
   return LoopCandidate{best.keyframe, init, best, gate};
-}
-
-bool LoopCloser::sameLevel(const Keyframe& a, const Keyframe& b) const {
-  return std::abs(a.T_world.translation().z() - b.T_world.translation().z()) <=
-         cfg_.loop.max_height_gap_m;
 }
 
 double LoopCloser::searchWindow(const KeyframeGraph& graph) const {

@@ -51,9 +51,6 @@ class LoopCloser {
   const LoopStats& stats() const { return stats_; }
 
  private:
-  /// Within loop.max_height_gap_m of each other's height: not one on a bridge deck, the other
-  /// on the street under it.
-  bool sameLevel(const Keyframe& a, const Keyframe& b) const;
   /// The old keyframe nearest to the newest one within loop.radius_m of the estimate, on its level.
   std::optional<LoopCandidate> nearbyCandidate(const KeyframeGraph& graph) const;
   /// The best descriptor match among old keyframes within the drift gate, on its level.

@@ -31,6 +31,9 @@ struct LoopVerification {
 LoopVerifyOptions loopVerifyOptions(const LoopConfig& c);
 IcpAmbiguity loopAmbiguity(const LoopConfig& c);
 SubmapAgreementOptions loopSubmapAgreement(const LoopConfig& c);
+/// Two keyframe positions within loop.max_height_gap_m of each other's height: not one on a
+/// bridge deck and the other on the street under it (the only pairs a loop may join).
+bool onSameLevel(const Vec3& a, const Vec3& b, const LoopConfig& c);
 
 /// `target`: the candidate's cloud (or submap) in frame F; `T_F_candidate`: the candidate
 /// keyframe's pose in F; `query_body`: the query keyframe's cloud in its body frame; `c`: the
