@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+# How long the estimate makes the straight stretches of a drive against the ground truth
+# (docs/NOTES.md "What the whole-city ATE is made of"): over windows of up to 2 s on which the
+# true heading turns less than 1 deg and the car moves more than 8 m, the sum of the estimate's
+# chords over the truth's, for north-south and east-west stretches and per street (stretches
+# grouped by their x (north-south) or y (east-west) rounded to 25 m; streets with >= 150 m shown).
+# A ratio below 1 is a shortfall along the streets. Usage: bench/straight_chords.py DRIVE_DIR
+# EVAL_DIR. Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+import sys
+from collections import defaultdict
+
+import numpy as np
+from scipy.spatial.transform import Rotation as R
+
+
+def stretches(drive, ev):
+    """(key, estimate chord, true chord) per straight window."""
+    gt = np.loadtxt(drive + "/groundtruth.tum")
+    es = np.loadtxt(ev + "/estimate.tum")
+    truth = {round(r[0], 1): r for r in gt}
+    rows = [r for r in es if round(r[0], 1) in truth]
+    E = np.array(rows)
+    T = np.array([truth[round(r[0], 1)] for r in rows])
+    yaw = np.unwrap(R.from_quat(T[:, 4:8]).as_euler("zyx")[:, 0])
+    i, n = 0, len(E)
+    while i < n:
+        j = i
+        while j + 1 < n and E[j + 1, 0] - E[i, 0] <= 2.0:
+            j += 1
+        dg, de = T[j, 1:3] - T[i, 1:3], E[j, 1:3] - E[i, 1:3]
+        if j > i and np.linalg.norm(dg) > 8 and np.ptp(yaw[i:j + 1]) < np.radians(1):
+            ns = abs(dg[1]) > abs(dg[0])
+            street = "NS x=%d" % (round(T[i, 1] / 25) * 25) if ns else "EW y=%d" % (round(T[i, 2] / 25) * 25)
+            yield ("NS" if ns else "EW"), street, np.linalg.norm(de), np.linalg.norm(dg)
+        i = j + 1 if j > i else i + 1
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: bench/straight_chords.py DRIVE_DIR EVAL_DIR")
+    by_dir, by_street = defaultdict(lambda: [0.0, 0.0]), defaultdict(lambda: [0.0, 0.0])
+    for d, street, e, g in stretches(sys.argv[1], sys.argv[2]):
+        for acc, k in ((by_dir, d), (by_street, street)):
+            acc[k][0] += e
+            acc[k][1] += g
+    for k, (e, g) in sorted(by_dir.items()):
+        print("%s: estimate / truth %.5f over %.0f m" % (k, e / g, g))
+    for k, (e, g) in sorted(by_street.items()):
+        if g >= 150:
+            print("  %s: %.5f over %.0f m" % (k, e / g, g))
+
+
+if __name__ == "__main__":
+    main()
