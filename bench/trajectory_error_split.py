@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # Where a drive's trajectory error lies (docs/NOTES.md "Corner features at grazing incidence"):
 # ATE RMSE after a rigid (Umeyama, no scale) alignment split into along-street, across-street and
-# height components (in the ground truth's heading), and the per-scan relative-pose error summed
+# height components (in the ground truth's heading), the ATE left after a fit with a scale (Umeyama
+# with scale: what a uniform shrink or stretch of the whole map accounts for), and the per-scan relative-pose error summed
 # separately over turns (|yaw rate| > 5 deg/s) and straight stretches: a negative "along, straight"
 # sum is a shortfall on the straights. Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
 # Needs numpy and scipy (Debian python3-numpy, python3-scipy).
@@ -27,6 +28,12 @@ across = -d[:, 0] * np.sin(yaw) + d[:, 1] * np.cos(yaw)
 rms = lambda x: np.sqrt((x ** 2).mean())
 print('ATE RMSE %.3f m; RMS along %.3f, across %.3f, height %.3f m' %
       (np.sqrt((d ** 2).sum(1).mean()), rms(along), rms(across), rms(d[:, 2])))
+
+# The same fit with a scale: s = trace(Sigma D) / var(P) (Umeyama 1991, eq. 42).
+Sv = np.linalg.svd((P - mp).T @ (Q - mq), compute_uv=False)
+s = (Sv * np.diag(D)).sum() / ((P - mp) ** 2).sum()
+ds = s * ((Vt.T @ D @ U.T) @ (P - mp).T).T + mq - Q
+print('with a scale: ATE RMSE %.3f m, scale %.5f' % (np.sqrt((ds ** 2).sum(1).mean()), s))
 
 
 def poses(a):
