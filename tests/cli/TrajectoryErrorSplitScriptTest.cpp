@@ -1,0 +1,64 @@
+// bench/trajectory_error_split.py on hand-made trajectories: an exact copy of the truth has no
+// error with or without a scale; a copy 0.1 % larger has a rigid ATE but none once the fit may
+// scale it, and the fitted scale is 1 / 1.001.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "CliTestUtil.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+
+// Debian's interpreter: scripts/setup.sh installs numpy and scipy for it.
+slamroute::test::CliResult runScript(const fs::path& drive, const fs::path& eval) {
+  return slamroute::test::runCommand("/usr/bin/python3 " + std::string(SLAMROUTE_SOURCE_DIR) +
+                                     "/bench/trajectory_error_split.py " + drive.string() + " " +
+                                     eval.string());
+}
+
+/// A 120 x 60 m loop driven anticlockwise, one pose per second, heading along the motion, the
+/// positions multiplied by `scale`.
+void writeLoop(const fs::path& file, double scale) {
+  std::ofstream out(file);
+  out << "# t x y z qx qy qz qw\n";
+  const double corners[5][2] = {{0, 0}, {120, 0}, {120, 60}, {0, 60}, {0, 0}};
+  int t = 0;
+  for (int side = 0; side < 4; ++side) {
+    const double dx = corners[side + 1][0] - corners[side][0];
+    const double dy = corners[side + 1][1] - corners[side][1];
+    const int steps = static_cast<int>(std::hypot(dx, dy) / 10);
+    const double yaw = std::atan2(dy, dx);
+    for (int k = 0; k < steps; ++k, ++t) {
+      const double x = corners[side][0] + dx * k / steps, y = corners[side][1] + dy * k / steps;
+      const double z = 0.5 * std::sin(0.3 * t);
+      out << t << ' ' << scale * x << ' ' << scale * y << ' ' << scale * z << " 0 0 "
+          << std::sin(yaw / 2) << ' ' << std::cos(yaw / 2) << '\n';
+    }
+  }
+}
+
+TEST(TrajectoryErrorSplitScript, AFitWithAScaleTakesOutAUniformStretch) {
+  const fs::path root = slamroute::test::cliTempDir("trajectory_error_split");
+  fs::create_directories(root / "drive");
+  fs::create_directories(root / "same");
+  fs::create_directories(root / "larger");
+  writeLoop(root / "drive/groundtruth.tum", 1.0);
+  writeLoop(root / "same/estimate.tum", 1.0);
+  writeLoop(root / "larger/estimate.tum", 1.001);
+
+  const auto same = runScript(root / "drive", root / "same");
+  ASSERT_EQ(same.code, 0) << same.out;
+  EXPECT_NE(same.out.find("ATE RMSE 0.000 m;"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find("with a scale: ATE RMSE 0.000 m, scale 1.00000"), std::string::npos)
+      << same.out;
+
+  const auto larger = runScript(root / "drive", root / "larger");
+  ASSERT_EQ(larger.code, 0) << larger.out;
+  EXPECT_EQ(larger.out.find("ATE RMSE 0.000 m;"), std::string::npos) << larger.out;
+  EXPECT_NE(larger.out.find("with a scale: ATE RMSE 0.000 m, scale 0.99900"), std::string::npos)
+      << larger.out;
+}
+
+}  // namespace
