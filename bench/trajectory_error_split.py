@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 # Where a drive's trajectory error lies (docs/NOTES.md "Corner features at grazing incidence"):
 # ATE RMSE after a rigid (Umeyama, no scale) alignment split into along-street, across-street and
-# height components (in the ground truth's heading), the ATE left after a fit with a scale (Umeyama
-# with scale: what a uniform shrink or stretch of the whole map accounts for), and the per-scan relative-pose error summed
-# separately over turns (|yaw rate| > 5 deg/s) and straight stretches: a negative "along, straight"
-# sum is a shortfall on the straights. Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
+# height components (in the ground truth's heading), the ATE left after a fit with a scale
+# (Umeyama with scale: what a uniform shrink or stretch of the whole map accounts for), and the
+# per-scan relative-pose error summed separately over turns (|yaw rate| > 5 deg/s) and straight
+# stretches: a negative "along, straight" sum is a shortfall on the straights. Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
 # Needs numpy and scipy (Debian python3-numpy, python3-scipy).
 import sys
 
@@ -18,10 +18,11 @@ g = gt[[np.argmin(abs(gt[:, 0] - t)) for t in es[:, 0]]]
 # Rigid alignment of the estimate's positions onto the ground truth's.
 P, Q = es[:, 1:4], g[:, 1:4]
 mp, mq = P.mean(0), Q.mean(0)
-U, _, Vt = np.linalg.svd((P - mp).T @ (Q - mq))
+U, Sv, Vt = np.linalg.svd((P - mp).T @ (Q - mq))
 D = np.eye(3)
 D[2, 2] = np.sign(np.linalg.det(Vt.T @ U.T))
-d = ((Vt.T @ D @ U.T) @ (P - mp).T).T + mq - Q
+rot = Vt.T @ D @ U.T
+d = (rot @ (P - mp).T).T + mq - Q
 yaw = R.from_quat(g[:, 4:8]).as_euler('ZYX')[:, 0]
 along = d[:, 0] * np.cos(yaw) + d[:, 1] * np.sin(yaw)
 across = -d[:, 0] * np.sin(yaw) + d[:, 1] * np.cos(yaw)
@@ -30,9 +31,8 @@ print('ATE RMSE %.3f m; RMS along %.3f, across %.3f, height %.3f m' %
       (np.sqrt((d ** 2).sum(1).mean()), rms(along), rms(across), rms(d[:, 2])))
 
 # The same fit with a scale: s = trace(Sigma D) / var(P) (Umeyama 1991, eq. 42).
-Sv = np.linalg.svd((P - mp).T @ (Q - mq), compute_uv=False)
 s = (Sv * np.diag(D)).sum() / ((P - mp) ** 2).sum()
-ds = s * ((Vt.T @ D @ U.T) @ (P - mp).T).T + mq - Q
+ds = s * (rot @ (P - mp).T).T + mq - Q
 print('with a scale: ATE RMSE %.3f m, scale %.5f' % (np.sqrt((ds ** 2).sum(1).mean()), s))
 
 
