@@ -4,7 +4,8 @@
 # height components (in the ground truth's heading), the ATE left after a fit with a scale
 # (Umeyama with scale: what a uniform shrink or stretch of the whole map accounts for), and the
 # per-scan relative-pose error summed separately over turns (|yaw rate| > 5 deg/s) and straight
-# stretches: a negative "along, straight" sum is a shortfall on the straights. Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
+# stretches: a negative "along, straight" sum is a shortfall on the straights.
+# Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
 # Needs numpy and scipy (Debian python3-numpy, python3-scipy).
 import sys
 
