@@ -6,17 +6,21 @@
 # grouped by their x (north-south) or y (east-west) rounded to 25 m; streets with >= 150 m shown).
 # A ratio below 1 is a shortfall along the streets. Usage: bench/straight_chords.py DRIVE_DIR
 # EVAL_DIR. Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+import os
 import sys
 from collections import defaultdict
 
 import numpy as np
 from scipy.spatial.transform import Rotation as R
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tum import load_tum  # noqa: E402
+
 
 def stretches(drive, ev):
     """(key, estimate chord, true chord) per straight window."""
-    gt = np.loadtxt(drive + "/groundtruth.tum")
-    es = np.loadtxt(ev + "/estimate.tum")
+    gt = load_tum(drive + "/groundtruth.tum", "straight_chords.py")
+    es = load_tum(ev + "/estimate.tum", "straight_chords.py")
     truth = {round(r[0], 1): r for r in gt}
     rows = [r for r in es if round(r[0], 1) in truth]
     E = np.array(rows)

@@ -7,13 +7,19 @@
 # stretches: a negative "along, straight" sum is a shortfall on the straights.
 # Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
 # Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+import os
 import sys
 
 import numpy as np
 from scipy.spatial.transform import Rotation as R
 
-gt = np.loadtxt(sys.argv[1] + '/groundtruth.tum')
-es = np.loadtxt(sys.argv[2] + '/estimate.tum')
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tum import load_tum  # noqa: E402
+
+if len(sys.argv) != 3:
+    sys.exit('usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR')
+gt = load_tum(sys.argv[1] + '/groundtruth.tum', 'trajectory_error_split.py')
+es = load_tum(sys.argv[2] + '/estimate.tum', 'trajectory_error_split.py')
 g = gt[[np.argmin(abs(gt[:, 0] - t)) for t in es[:, 0]]]
 
 # Rigid alignment of the estimate's positions onto the ground truth's.

@@ -1,8 +1,10 @@
 // bench/trajectory_error_split.py on hand-made trajectories: an exact copy of the truth has no
 // error with or without a scale; a copy 0.1 % larger has a rigid ATE but none once the fit may
-// scale it, and the fitted scale is 1 / 1.001.
+// scale it, and the fitted scale is 1 / 1.001. A missing or malformed trajectory ends it with one
+// line naming the file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -59,6 +61,26 @@ TEST(TrajectoryErrorSplitScript, AFitWithAScaleTakesOutAUniformStretch) {
   EXPECT_EQ(larger.out.find("ATE RMSE 0.000 m;"), std::string::npos) << larger.out;
   EXPECT_NE(larger.out.find("with a scale: ATE RMSE 0.000 m, scale 0.99900"), std::string::npos)
       << larger.out;
+}
+
+TEST(TrajectoryErrorSplitScript, AMissingOrMalformedTrajectoryIsOneLineNamingTheFile) {
+  const fs::path root = slamroute::test::cliTempDir("trajectory_error_split_bad");
+  fs::create_directories(root / "drive");
+  fs::create_directories(root / "eval");
+  writeLoop(root / "drive/groundtruth.tum", 1.0);
+
+  const auto missing = runScript(root / "drive", root / "eval");
+  EXPECT_NE(missing.code, 0);
+  EXPECT_EQ(missing.out, "trajectory_error_split.py: " + (root / "eval/estimate.tum").string() +
+                             ": no such file\n");
+
+  std::ofstream(root / "eval/estimate.tum") << "0 1 2\n1 2 3\n";
+  const auto malformed = runScript(root / "drive", root / "eval");
+  EXPECT_NE(malformed.code, 0);
+  EXPECT_NE(malformed.out.find((root / "eval/estimate.tum").string() + ": not a TUM trajectory"),
+            std::string::npos)
+      << malformed.out;
+  EXPECT_EQ(std::count(malformed.out.begin(), malformed.out.end(), '\n'), 1) << malformed.out;
 }
 
 }  // namespace
