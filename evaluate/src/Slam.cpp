@@ -94,9 +94,10 @@ struct LidarSlam::Impl {
 
   FrameStatus addScan(const Scan& raw) {
     const double t_all = cpuNow();
-    const std::optional<Scan> fixed = deskew(raw);  // 0. motion compensation
+    std::optional<Scan> fixed = deskew(raw);  // 0. motion compensation
+    slam::PreparedScan p = slam::prepareScan(fixed ? *fixed : raw, spec, cfg, times);  // 1-2.
+    if (fixed) redeskew(raw, *fixed, p);  // 0-2 again with the sweep's own step (no odometry)
     const Scan& scan = fixed ? *fixed : raw;
-    const slam::PreparedScan p = slam::prepareScan(scan, spec, cfg, times);  // 1-2. image, features
     FrameStatus s = p.status;
     if (s != FrameStatus::Ok)
       s = addUnusable(scan.t, s);
@@ -142,11 +143,31 @@ struct LidarSlam::Impl {
     return m.status;
   }
 
+  static constexpr double kSweepS = 0.1;  ///< one revolution of the LiDAR [s]
+
   /// The deskewed scan, or nothing when the scan is used as it is (no copy on the hot path).
   std::optional<Scan> deskew(const Scan& raw) const {
     if (!cfg.features.deskew || !raw.has_point_times) return std::nullopt;
-    constexpr double kSweepS = 0.1;
     return slam::deskewed(raw, motion.motionOver(raw.t, kSweepS), kSweepS);
+  }
+
+  /// Without wheel odometry: registers the deskewed scan `p` from the prediction and, when that
+  /// is believed, deskews `raw` again with the step from the last registered scan to it and
+  /// prepares it anew (FeaturesConfig::redeskew_without_odometry).
+  void redeskew(const Scan& raw, Scan& fixed, slam::PreparedScan& p) {
+    if (!cfg.features.redeskew_without_odometry || motion.hasOdometry() || !tracking ||
+        !motion.hasVelocity() || p.status != FrameStatus::Ok)
+      return;
+    const slam::Prediction step = motion.predictStep(raw.t);
+    if (!(step.dt > 0)) return;
+    const AlignResult r = scan_to_map.align(p, step.T_world, scan_to_map.options(motion, step));
+    if (r.edge_matches < cfg.mapping.min_edge_features ||
+        r.plane_matches < cfg.mapping.min_plane_features ||
+        !motion.plausibleStep(step.T_world, r.T_target_source, step))
+      return;
+    const Pose3 sweep = slam::sweepMotionOfStep(T_world_good, r.T_target_source, step.dt, kSweepS);
+    fixed = slam::deskewed(raw, sweep, kSweepS);
+    p = slam::prepareScan(fixed, spec, cfg, times);
   }
 
   FrameStatus startTracking(double t, const slam::PreparedScan& p) {

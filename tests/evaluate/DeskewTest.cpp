@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "slam/FrontEnd.hpp"
 
@@ -74,6 +75,24 @@ TEST(Deskew, AScanWithoutPointTimesIsLeftAlone) {
   const Scan same = slam::deskewed(raw, sweepMotion(15.0, 0.0), 0.1);
   ASSERT_EQ(same.points.size(), raw.points.size());
   for (std::size_t i = 0; i < raw.points.size(); ++i) EXPECT_EQ(same.points[i].x, raw.points[i].x);
+}
+
+// Without odometry the sweep is deskewed again with the step that ends at its first registration:
+// a step of 3 m straight ahead over 0.2 s is 1.5 m over the 0.1 s sweep, wherever and however
+// turned the step lies in the world.
+TEST(Deskew, TheStepToTheSweepGivesItsMotion) {
+  Pose3 from = Pose3::Identity();
+  from.linear() = Eigen::AngleAxisd(0.5, Vec3::UnitZ()).toRotationMatrix();
+  from.translation() = Vec3(40.0, -7.0, 1.2);
+  Pose3 ahead = Pose3::Identity();
+  ahead.translation() = Vec3(3.0, 0, 0);
+  const Pose3 sweep = slam::sweepMotionOfStep(from, from * ahead, 0.2, 0.1);
+  EXPECT_NEAR(sweep.translation().x(), 1.5, 1e-9);
+  EXPECT_NEAR(sweep.translation().tail<2>().norm(), 0.0, 1e-9);
+
+  const Scan fixed = slam::deskewed(movingWallScan(15.0, 0.0), sweep, 0.1);
+  EXPECT_LT(worstWallError(fixed), 1e-4);
+  EXPECT_THROW(slam::sweepMotionOfStep(from, from * ahead, 0.0, 0.1), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "FrontEnd.hpp"
 
 #include <limits>
+#include <stdexcept>
 
 #include "SlamClock.hpp"
 #include "slamroute/evaluate/MotionChecks.hpp"
@@ -28,6 +29,11 @@ Scan deskewed(const Scan& scan, const Pose3& sweep_motion, double sweep_s) {
   }
   out.has_point_times = false;
   return out;
+}
+
+Pose3 sweepMotionOfStep(const Pose3& T_from, const Pose3& T_to, double dt_s, double sweep_s) {
+  if (!(dt_s > 0)) throw std::invalid_argument("sweep motion: the step's time must be positive");
+  return scaledMotion(T_from.inverse() * T_to, sweep_s / dt_s);
 }
 
 Cloud capped(Cloud c, int max_n) {

@@ -22,6 +22,10 @@ struct PreparedScan {
 /// returned as they are.
 Scan deskewed(const Scan& scan, const Pose3& sweep_motion, double sweep_s);
 
+/// The motion over a sweep of sweep_s seconds at the constant velocity of the step from
+/// `T_from` to `T_to` (dt_s seconds apart, world poses): the step's share sweep_s / dt_s.
+Pose3 sweepMotionOfStep(const Pose3& T_from, const Pose3& T_to, double dt_s, double sweep_s);
+
 /// Steps 1-2 of the pipeline on one scan; accumulates the stage times.
 PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg,
                          StageTimes& times);
