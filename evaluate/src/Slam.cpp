@@ -95,9 +95,9 @@ struct LidarSlam::Impl {
   FrameStatus addScan(const Scan& raw) {
     const double t_all = cpuNow();
     std::optional<Scan> fixed = deskew(raw);  // 0. motion compensation
-    slam::PreparedScan p = slam::prepareScan(fixed ? *fixed : raw, spec, cfg, times);  // 1-2.
-    if (fixed) redeskew(raw, *fixed, p);  // 0-2 again with the sweep's own step (no odometry)
     const Scan& scan = fixed ? *fixed : raw;
+    slam::PreparedScan p = slam::prepareScan(scan, spec, cfg, times);  // 1-2. image, features
+    if (fixed) redeskew(raw, *fixed, p);  // 0-2 again with the sweep's own step (no odometry)
     FrameStatus s = p.status;
     if (s != FrameStatus::Ok)
       s = addUnusable(scan.t, s);
