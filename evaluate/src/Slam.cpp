@@ -161,8 +161,7 @@ struct LidarSlam::Impl {
     const slam::Prediction step = motion.predictStep(raw.t);
     if (!(step.dt > 0)) return;
     const AlignResult r = scan_to_map.align(p, step.T_world, scan_to_map.options(motion, step));
-    if (r.edge_matches < cfg.mapping.min_edge_features ||
-        r.plane_matches < cfg.mapping.min_plane_features ||
+    if (!slam::enoughMatches(r, cfg.mapping) ||
         !motion.plausibleStep(step.T_world, r.T_target_source, step))
       return;
     const Pose3 sweep = slam::sweepMotionOfStep(T_world_good, r.T_target_source, step.dt, kSweepS);
@@ -224,8 +223,7 @@ struct LidarSlam::Impl {
     m.status = implausible ? FrameStatus::Degenerate : FrameStatus::Ok;
     m.inliers = r.inliers;
     m.min_eig = r.min_eig_translation;
-    const bool few = r.edge_matches < cfg.mapping.min_edge_features ||
-                     r.plane_matches < cfg.mapping.min_plane_features;
+    const bool few = !slam::enoughMatches(r, cfg.mapping);
     const bool jump = !few && check && !motion.plausibleStep(step.T_world, r.T_target_source, step);
     if (few || jump) {
       m.status = few ? FrameStatus::FewFeatures : FrameStatus::Degenerate;

@@ -36,6 +36,10 @@ Pose3 sweepMotionOfStep(const Pose3& T_from, const Pose3& T_to, double dt_s, dou
   return scaledMotion(T_from.inverse() * T_to, sweep_s / dt_s);
 }
 
+bool enoughMatches(const AlignResult& r, const MappingConfig& c) {
+  return r.edge_matches >= c.min_edge_features && r.plane_matches >= c.min_plane_features;
+}
+
 Cloud capped(Cloud c, int max_n) {
   if (max_n <= 0 || c.size() <= static_cast<std::size_t>(max_n)) return c;
   Cloud out;

@@ -5,6 +5,7 @@
 #include "slamroute/core/Scan.hpp"
 #include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/Features.hpp"
+#include "slamroute/evaluate/Registration.hpp"
 #include "slamroute/evaluate/Slam.hpp"
 
 namespace slamroute::evaluate::slam {
@@ -25,6 +26,10 @@ Scan deskewed(const Scan& scan, const Pose3& sweep_motion, double sweep_s);
 /// The motion over a sweep of sweep_s seconds at the constant velocity of the step from
 /// `T_from` to `T_to` (dt_s seconds apart, world poses): the step's share sweep_s / dt_s.
 Pose3 sweepMotionOfStep(const Pose3& T_from, const Pose3& T_to, double dt_s, double sweep_s);
+
+/// Whether a registration matched enough edge and planar features to be believed
+/// (MappingConfig::min_edge_features, min_plane_features).
+bool enoughMatches(const AlignResult& r, const MappingConfig& c);
 
 /// Steps 1-2 of the pipeline on one scan; accumulates the stage times.
 PreparedScan prepareScan(const Scan& scan, const LidarSpec& spec, const Config& cfg,

@@ -59,9 +59,7 @@ std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const Prep
   // (wider basin than the failed registration) must beat that registration's inliers.
   if (best != 0 && best_inl < 1.5 * inl_ref + 20) return std::nullopt;
   const AlignResult m = alignFeatures(local_map, scan.src_edges, scan.src_planes, best_T, fine);
-  if (m.edge_matches < cfg.mapping.min_edge_features ||
-      m.plane_matches < cfg.mapping.min_plane_features)
-    return std::nullopt;
+  if (!enoughMatches(m, cfg.mapping)) return std::nullopt;
   if (best == 0 && m.inliers < 1.5 * failed_inliers + 20) return std::nullopt;
   logDebug("relocalised: inliers " + std::to_string(best_inl) + " vs " + std::to_string(inl_ref));
   return Relocalisation{m.T_target_source, m.inliers};

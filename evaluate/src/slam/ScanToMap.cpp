@@ -85,8 +85,7 @@ Pose3 ScanToMap::coarse(const PreparedScan& scan, const Pose3& init, const Align
   o.degenerate_eig = 0;
   const AlignResult r =
       alignFeatures(map_, capped(scan.src_edges, cap / 4), capped(scan.src_planes, cap), init, o);
-  if (r.edge_matches >= c.min_edge_features && r.plane_matches >= c.min_plane_features &&
-      motion.plausibleStep(step.T_world, r.T_target_source, step))
+  if (enoughMatches(r, c) && motion.plausibleStep(step.T_world, r.T_target_source, step))
     return r.T_target_source;
   return init;
 }
