@@ -92,16 +92,20 @@ EdgeCoverage edgeCoverage(const fs::path& drive, const std::vector<PoseEdge>& po
 /// Length-weighted mean drift per label over edges driven >= 20 m (shorter pieces: noise).
 std::map<std::string, LabelDrift> driftByLabel(const std::vector<EdgeError>& rows,
                                                const std::map<std::string, std::string>& labels) {
-  std::map<std::string, std::pair<double, double>> acc;  // label -> (sum drift*len, sum len)
+  std::map<std::string, LabelDrift> sums;  // label -> length and length-weighted sums
   for (const auto& r : rows) {
     const auto it = labels.find(r.edge);
     if (it == labels.end() || !std::isfinite(r.drift_pct) || r.length_m < 20.0) continue;
-    acc[it->second].first += r.drift_pct * r.length_m;
-    acc[it->second].second += r.length_m;
+    LabelDrift& s = sums[it->second];
+    s.driven_m += r.length_m;
+    s.drift_pct += r.drift_pct * r.length_m;
+    s.window_drift_pct += r.window_drift_pct * r.length_m;
   }
-  std::map<std::string, LabelDrift> out;
-  for (const auto& [label, dl] : acc) out[label] = {dl.second, dl.first / dl.second};
-  return out;
+  for (auto& [label, s] : sums) {
+    s.drift_pct /= s.driven_m;
+    s.window_drift_pct /= s.driven_m;
+  }
+  return sums;
 }
 
 }  // namespace

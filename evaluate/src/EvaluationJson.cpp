@@ -225,7 +225,9 @@ json toJson(const EvaluationResult& r) {
   if (r.drift_by_label) {
     json d = json::object();
     for (const auto& [label, ld] : *r.drift_by_label)
-      d[label] = {{"driven_m", ld.driven_m}, {"drift_pct", ld.drift_pct}};
+      d[label] = {{"driven_m", ld.driven_m},
+                  {"drift_pct", ld.drift_pct},
+                  {"window_drift_pct", ld.window_drift_pct}};
     j["drift_by_label"] = d;
   }
   addCoverageJson(r.coverage, j);
@@ -257,7 +259,10 @@ EvaluationResult evaluationFromJson(const json& j) {
   if (j.contains("drift_by_label")) {
     r.drift_by_label.emplace();
     for (const auto& [label, d] : j["drift_by_label"].items())
-      (*r.drift_by_label)[label] = {figure(d, "driven_m"), figure(d, "drift_pct")};
+      (*r.drift_by_label)[label] = {figure(d, "driven_m"), figure(d, "drift_pct"),
+                                    d.contains("window_drift_pct")
+                                        ? figure(d, "window_drift_pct")
+                                        : std::numeric_limits<double>::quiet_NaN()};
   }
   r.coverage = coverageFromJson(j);
   r.map_points = j.at("map_points").get<long long>();

@@ -95,6 +95,7 @@ std::map<std::string, double> evaluationFigures(const EvaluationResult& r) {
     for (const auto& [label, d] : *r.drift_by_label) {
       put(f, "drift_by_label." + label + ".driven_m", d.driven_m);
       put(f, "drift_by_label." + label + ".drift_pct", d.drift_pct);
+      put(f, "drift_by_label." + label + ".window_drift_pct", d.window_drift_pct);
     }
   addCoverageAndMapFigures(r, f);
   addReliabilityFigures(r.reliability, f);

@@ -171,6 +171,33 @@ std::vector<PoseEdge> readPoseEdges(const std::filesystem::path& path) {
   return out;
 }
 
+namespace {
+
+/// Relative translation error between pairs a and b over the distance driven between them.
+double relativeDrift(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
+  const Pose3 err = (m.pairs[a].gt.inverse() * m.pairs[b].gt).inverse() *
+                    (m.pairs[a].est.inverse() * m.pairs[b].est);
+  return err.translation().norm() / (m.distance_m[b] - m.distance_m[a]);
+}
+
+/// The mean of relativeDrift over the windows of half the visit [a, b] that start at each of its
+/// pairs (the end: the first pair half the visit's length on).
+double windowDrift(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
+  const double half = 0.5 * (m.distance_m[b] - m.distance_m[a]);
+  double sum = 0;
+  int n = 0;
+  std::size_t j = a;
+  for (std::size_t i = a; i < b; ++i) {
+    while (j < b && m.distance_m[j] - m.distance_m[i] < half) ++j;
+    if (m.distance_m[j] - m.distance_m[i] < half) break;
+    sum += relativeDrift(m, i, j);
+    ++n;
+  }
+  return n > 0 ? sum / n : relativeDrift(m, a, b);
+}
+
+}  // namespace
+
 std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vector<PoseEdge>& edges,
                                      double max_dt_s) {
   std::vector<double> times;
@@ -183,7 +210,7 @@ std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vect
   }
   struct Acc {
     EdgeError e;
-    double ate_sum = 0, err_t = 0, err_r = 0, drift_len = 0;
+    double ate_sum = 0, err_t = 0, err_r = 0, drift_len = 0, window_t = 0;
   };
   std::map<std::string, Acc> acc;
   auto closeRun = [&](std::size_t a, std::size_t b) {  // pairs [a, b] on one edge
@@ -197,6 +224,7 @@ std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vect
                       (m.pairs[a].est.inverse() * m.pairs[b].est);
     x.err_t += err.translation().norm();
     x.err_r += angleDeg(err);
+    x.window_t += windowDrift(m, a, b) * len;
     x.drift_len += len;
   };
   std::size_t run_start = 0;
@@ -218,6 +246,7 @@ std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vect
   for (auto& [id, x] : acc) {
     x.e.ate_mean_m = x.e.poses ? x.ate_sum / x.e.poses : kNaN;
     x.e.drift_pct = x.drift_len > 0 ? 100.0 * x.err_t / x.drift_len : kNaN;
+    x.e.window_drift_pct = x.drift_len > 0 ? 100.0 * x.window_t / x.drift_len : kNaN;
     x.e.rot_deg_per_m = x.drift_len > 0 ? x.err_r / x.drift_len : kNaN;
     out.push_back(x.e);
   }
@@ -227,10 +256,12 @@ std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vect
 void writePerEdgeCsv(const std::filesystem::path& path, const std::vector<EdgeError>& rows) {
   std::ostringstream os;
   os.precision(6);
-  os << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,rot_deg_per_m\n";
+  os << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,rot_deg_per_m,"
+        "window_drift_pct\n";
   for (const auto& r : rows)
     os << r.edge << ',' << r.poses << ',' << r.visits << ',' << r.length_m << ',' << r.ate_mean_m
-       << ',' << r.ate_max_m << ',' << r.drift_pct << ',' << r.rot_deg_per_m << '\n';
+       << ',' << r.ate_max_m << ',' << r.drift_pct << ',' << r.rot_deg_per_m << ','
+       << r.window_drift_pct << '\n';
   writeFileAtomic(path, os.str());
 }
 

@@ -123,8 +123,30 @@ TEST(Metrics, PerEdgeDriftSeparatesStreets) {
   EXPECT_NEAR(rows[0].drift_pct, 0.0, 1e-9);
   EXPECT_EQ(rows[1].edge, "b");
   EXPECT_NEAR(rows[1].drift_pct, 2.0, 1e-6);
+  EXPECT_NEAR(rows[0].window_drift_pct, 0.0, 1e-9);
+  EXPECT_NEAR(rows[1].window_drift_pct, 2.0, 1e-6);  // every window of a stretch stretches
   EXPECT_EQ(rows[0].poses + rows[1].poses, 201);
   EXPECT_EQ(rows[1].visits, 1);
+}
+
+TEST(Metrics, AHeadingErrorAtAVisitsFirstPoseIsOneWindowOfFiftyOne) {
+  // 100 m straight, exact but for the first pose, turned by 2 deg where it stands (a heading
+  // still off from the turn onto the street). End to end: the 100 m chord seen turned by 2 deg,
+  // 2 sin(1 deg) of it. Windows of 50 m start at poses 0..50, and only the first is off.
+  const double turn = 2.0 * std::numbers::pi / 180.0;
+  Trajectory gt, est;
+  std::vector<PoseEdge> edges;
+  for (int i = 0; i <= 100; ++i) {
+    gt.push_back({0.1 * i, pose(i, 0, 0, 0)});
+    est.push_back({0.1 * i, pose(i, 0, 0, i == 0 ? turn : 0.0)});
+    edges.push_back({i, 0.1 * i, "a", 0.0});
+  }
+  const TrajectoryMetrics m = compareTrajectories(est, gt, {});
+  const auto rows = perEdgeErrors(m, edges, 0.02);
+  ASSERT_EQ(rows.size(), 1u);
+  const double end_to_end = 100.0 * 2.0 * std::sin(turn / 2);
+  EXPECT_NEAR(rows[0].drift_pct, end_to_end, 1e-9);
+  EXPECT_NEAR(rows[0].window_drift_pct, end_to_end / 51, 1e-9);
 }
 
 }  // namespace

@@ -38,8 +38,9 @@ struct LoopRecord {
   double yaw_old_new_deg = 0;
 };
 
+/// Length-weighted mean drift of the streets with one label (EdgeError's figures).
 struct LabelDrift {
-  double driven_m = 0, drift_pct = 0;
+  double driven_m = 0, drift_pct = 0, window_drift_pct = 0;
 };
 
 /// Distances of the map's points to the world surface, clamped at the evaluation's max.

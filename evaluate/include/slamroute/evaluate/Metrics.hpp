@@ -74,6 +74,12 @@ struct EdgeError {
   double length_m = 0;  ///< driven on this edge (sum over visits)
   double ate_mean_m = 0, ate_max_m = 0;
   double drift_pct = 0;  ///< relative translation error over each visit / its length [%]
+  /// The relative translation error per metre over windows of half a visit, one from every pose
+  /// of its first half, averaged (KITTI's averaging over start poses) [%]. drift_pct is one pair
+  /// of poses, so the heading at a visit's first pose, often still in the turn onto the street,
+  /// swings it by the street's length times that heading error; this figure is the drift along
+  /// the street.
+  double window_drift_pct = 0;
   double rot_deg_per_m = 0;
 };
 std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vector<PoseEdge>& edges,
