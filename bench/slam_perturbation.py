@@ -2,7 +2,8 @@
 # How stable a drive's SLAM result is: re-evaluates each drive with one weight or noise parameter
 # of the evaluate config changed by -1 % and +1 % and prints, per drive, the baseline ATE RMSE, the
 # range, how many evaluations stay within 20 % of the baseline, the largest relative change and the
-# parameter that caused it, and the ranges of accepted and refused loop closures (bench/RESULTS.md
+# parameter that caused it, the ranges of accepted and refused loop closures, and the largest
+# drift of a street kind over the evaluations, along the streets and end to end (bench/RESULTS.md
 # "Stability").
 # Usage: bench/slam_perturbation.py [--bin build/cli/slamroute] [--jobs 2] [--params lidar-only|S.K,..]
 #        [--set SECTION.KEY=VALUE ...] [--seed 42] OUT_DIR DRIVE_DIR [DRIVE_DIR ...]
@@ -84,6 +85,19 @@ def spread(runs, key):
     return f"{min(vals)}-{max(vals)}" if min(vals) != max(vals) else str(vals[0])
 
 
+def largest_drift(runs):
+    """'along (kind) / end to end (kind)': the largest street kind's drift [%] over a drive's
+    evaluations (metrics.json drift_by_label window_drift_pct / drift_pct); '-' where none."""
+    def worst(key):
+        vals = [(d[key], kind) for m in runs for kind, d in m.get("drift_by_label", {}).items()
+                if d.get(key) is not None]
+        if not vals:
+            return "-"
+        v, kind = max(vals)
+        return f"{v:.2f} ({kind})"
+    return f"{worst('window_drift_pct')} / {worst('drift_pct')}"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--bin", default="build/cli/slamroute")
@@ -127,13 +141,14 @@ def main():
         done = {futs[f]: f.result() for f in concurrent.futures.as_completed(futs)}
     found = {k: m for k, m in done.items() if m is not None}
     print("| drive | evaluations | ATE RMSE [m] | ATE range over +-1 % [m] | within +-20 % | "
-          "largest change [%] | caused by | closures | refused as ambiguous | refused by correction or cycle |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "largest change [%] | caused by | closures | refused as ambiguous | refused by correction or cycle | "
+          "largest drift per street kind, along / end to end [%] |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for d in a.drives:
         n = os.path.basename(os.path.normpath(d))
         runs = {t: m["ate_rmse_m"] for (dn, t), m in found.items() if dn == n and t != "base"}
         if (n, "base") not in found or not runs:
-            print(f"| {n} | {len(runs)} of {2 * len(params)} | - | - | - | - | - | - | - | - |")
+            print(f"| {n} | {len(runs)} of {2 * len(params)} | - | - | - | - | - | - | - | - | - |")
             continue
         base = found[(n, "base")]["ate_rmse_m"]
         worst = max(runs, key=lambda t: abs(runs[t] - base))
@@ -143,7 +158,7 @@ def main():
         print(f"| {n} | {len(runs)} of {2 * len(params)} | {base:.3f} | {lo:.3f} - {hi:.3f} | "
               f"{within} of {len(runs)} | {100 * abs(runs[worst] - base) / base:.1f} | {worst} | "
               f"{spread(every, 'loop_closures')} | {spread(every, 'loops_rejected_ambiguous')} | "
-              f"{spread(every, 'loops_rejected_correction')} |")
+              f"{spread(every, 'loops_rejected_correction')} | {largest_drift(every)} |")
 
 
 if __name__ == "__main__":

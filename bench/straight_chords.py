@@ -3,10 +3,13 @@
 # (docs/NOTES.md "What the whole-city ATE is made of"): over windows of up to 2 s on which the
 # true heading turns less than 1 deg and the car moves more than 8 m, the sum of the estimate's
 # chords over the truth's, for north-south and east-west stretches and per street (stretches
-# grouped by their x (north-south) or y (east-west) rounded to 25 m; streets with >= 150 m shown).
-# A ratio below 1 is a shortfall along the streets. Usage: bench/straight_chords.py DRIVE_DIR
-# EVAL_DIR. Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+# grouped by their x (north-south) or y (east-west) rounded to 25 m; streets with >= 150 m shown),
+# and per direction the median of the windows' estimate chord less the true one (one bad
+# registration moves a sum over a few hundred metres; the median stays). A ratio below 1 is a
+# shortfall along the streets. Usage: bench/straight_chords.py DRIVE_DIR EVAL_DIR. Needs numpy and
+# scipy (Debian python3-numpy, python3-scipy).
 import os
+import signal
 import sys
 from collections import defaultdict
 
@@ -40,15 +43,19 @@ def stretches(drive, ev):
 
 
 def main():
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `| head` ends it quietly
     if len(sys.argv) != 3:
         sys.exit("usage: bench/straight_chords.py DRIVE_DIR EVAL_DIR")
     by_dir, by_street = defaultdict(lambda: [0.0, 0.0]), defaultdict(lambda: [0.0, 0.0])
+    windows = defaultdict(list)
     for d, street, e, g in stretches(sys.argv[1], sys.argv[2]):
+        windows[d].append(e - g)
         for acc, k in ((by_dir, d), (by_street, street)):
             acc[k][0] += e
             acc[k][1] += g
     for k, (e, g) in sorted(by_dir.items()):
-        print("%s: estimate / truth %.5f over %.0f m" % (k, e / g, g))
+        print("%s: estimate / truth %.5f over %.0f m; median window %+.1f mm of %d" %
+              (k, e / g, g, 1000 * np.median(windows[k]), len(windows[k])))
     for k, (e, g) in sorted(by_street.items()):
         if g >= 150:
             print("  %s: %.5f over %.0f m" % (k, e / g, g))

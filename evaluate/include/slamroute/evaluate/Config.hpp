@@ -37,8 +37,8 @@ struct FeaturesConfig {
   /// Without wheel odometry, register the sweep once, deskew it again with the step that ends at
   /// it (last registered scan to this one) and register that: the mean of earlier steps lags the
   /// sweep by ~0.25 s, and speed changes in between leave it stretched or squeezed. Off by
-  /// default: on route1k it halves the LiDAR-only ATE but the drift on rich streets ends above
-  /// 1 % from most start scans (bench/RESULTS.md, "The ruler").
+  /// default: on route1k it halves the LiDAR-only ATE, but at 1.6 x the SLAM time, and on a
+  /// test-grid drive it lost the heading in a turn (bench/RESULTS.md, "The ruler").
   bool redeskew_without_odometry = false;
   bool use_ring_field = true;       ///< use ScanPoint.ring when >= 0, else ring from elevation
   bool ring_zero_is_bottom = true;  ///< ring 0 is the lowest beam (KITTI/Velodyne order)
