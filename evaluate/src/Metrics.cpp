@@ -39,6 +39,33 @@ int nearest(const std::vector<double>& times, double t, double max_dt) {
   return best;
 }
 
+/// The estimate's motion from pair a to pair b against the truth's (relative pose error).
+Pose3 relativeError(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
+  return (m.pairs[a].gt.inverse() * m.pairs[b].gt).inverse() *
+         (m.pairs[a].est.inverse() * m.pairs[b].est);
+}
+
+/// Relative translation error between pairs a and b over the distance driven between them.
+double relativeDrift(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
+  return relativeError(m, a, b).translation().norm() / (m.distance_m[b] - m.distance_m[a]);
+}
+
+/// The mean of relativeDrift over the windows of half the visit [a, b] that start at each of its
+/// pairs (the end: the first pair half the visit's length on).
+double windowDrift(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
+  const double half = 0.5 * (m.distance_m[b] - m.distance_m[a]);
+  double sum = 0;
+  int n = 0;
+  std::size_t j = a;
+  for (std::size_t i = a; i < b; ++i) {
+    while (j < b && m.distance_m[j] - m.distance_m[i] < half) ++j;
+    if (m.distance_m[j] - m.distance_m[i] < half) break;
+    sum += relativeDrift(m, i, j);
+    ++n;
+  }
+  return n > 0 ? sum / n : relativeDrift(m, a, b);
+}
+
 }  // namespace
 
 std::vector<PosePair> associate(const Trajectory& est, const Trajectory& gt, double max_dt_s) {
@@ -171,33 +198,6 @@ std::vector<PoseEdge> readPoseEdges(const std::filesystem::path& path) {
   return out;
 }
 
-namespace {
-
-/// Relative translation error between pairs a and b over the distance driven between them.
-double relativeDrift(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
-  const Pose3 err = (m.pairs[a].gt.inverse() * m.pairs[b].gt).inverse() *
-                    (m.pairs[a].est.inverse() * m.pairs[b].est);
-  return err.translation().norm() / (m.distance_m[b] - m.distance_m[a]);
-}
-
-/// The mean of relativeDrift over the windows of half the visit [a, b] that start at each of its
-/// pairs (the end: the first pair half the visit's length on).
-double windowDrift(const TrajectoryMetrics& m, std::size_t a, std::size_t b) {
-  const double half = 0.5 * (m.distance_m[b] - m.distance_m[a]);
-  double sum = 0;
-  int n = 0;
-  std::size_t j = a;
-  for (std::size_t i = a; i < b; ++i) {
-    while (j < b && m.distance_m[j] - m.distance_m[i] < half) ++j;
-    if (m.distance_m[j] - m.distance_m[i] < half) break;
-    sum += relativeDrift(m, i, j);
-    ++n;
-  }
-  return n > 0 ? sum / n : relativeDrift(m, a, b);
-}
-
-}  // namespace
-
 std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vector<PoseEdge>& edges,
                                      double max_dt_s) {
   std::vector<double> times;
@@ -220,8 +220,7 @@ std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vect
     const double len = m.distance_m[b] - m.distance_m[a];
     x.e.length_m += len;
     if (len < 1.0) return;  // too short to measure drift
-    const Pose3 err = (m.pairs[a].gt.inverse() * m.pairs[b].gt).inverse() *
-                      (m.pairs[a].est.inverse() * m.pairs[b].est);
+    const Pose3 err = relativeError(m, a, b);
     x.err_t += err.translation().norm();
     x.err_r += angleDeg(err);
     x.window_t += windowDrift(m, a, b) * len;
