@@ -21,14 +21,18 @@ std::vector<std::string> csvFields(const std::string& line) {
   return fields;
 }
 
-/// Adds one per_edge.csv row (edge, ..., length_m at 3, drift_pct at 6) to `acc`.
+/// Adds one per_edge.csv row (edge, ..., length_m at 3, drift_pct at 6, window_drift_pct at 8)
+/// to `acc`.
 void addDriftRow(const std::vector<std::string>& c, PooledDrift& acc) {
   if (c.size() < 7) return;
   try {
     const double len = std::stod(c[3]), drift = std::stod(c[6]);
+    const double window = c.size() > 8 ? std::stod(c[8]) : std::nan("");
     if (!std::isfinite(drift) || len < 20.0) return;  // short pieces: drift is noise
-    acc[c[0]].first += drift * len;
-    acc[c[0]].second += len;
+    EdgeDrift& e = acc[c[0]];
+    e.length_m += len;
+    e.drift_sum += drift * len;
+    e.window_sum += window * len;
   } catch (const std::exception&) {
   }
 }
@@ -52,9 +56,9 @@ void writeWeightVsDriftSection(std::ostringstream& md, const ReportData& data) {
   for (const auto& e : data.graph.edges)
     for (const auto& se : e.sumo_edges) {
       auto it = data.drift.find(se);
-      if (it == data.drift.end() || it->second.second <= 0) continue;
+      if (it == data.drift.end() || it->second.length_m <= 0) continue;
       w.push_back(e.weight);
-      d.push_back(it->second.first / it->second.second);
+      d.push_back(it->second.drift_sum / it->second.length_m);
     }
   const double rho = pipeline::spearman(w, d);
   md << "Spearman rank correlation between an edge's depth-image weight and the measured "
@@ -71,22 +75,29 @@ void writeWeightVsDriftSection(std::ostringstream& md, const ReportData& data) {
 /// ground truth behind the depth-image weight (rich streets should drift least).
 void writeDriftByStreetKindSection(std::ostringstream& md, const ReportData& data) {
   if (!data.world) return;
-  PooledDrift by_kind;  // street kind -> (sum drift*len, sum len)
-  for (const auto& [edge, dl] : data.drift) {
+  PooledDrift by_kind;  // street kind -> its edges' sums
+  for (const auto& [edge, e] : data.drift) {
     std::string kind;
     try {
       kind = simulate::streetKindName(data.world->streetKind(edge));
     } catch (const std::exception&) {
       continue;  // not a street of this world
     }
-    by_kind[kind].first += dl.first;
-    by_kind[kind].second += dl.second;
+    EdgeDrift& k = by_kind[kind];
+    k.length_m += e.length_m;
+    k.drift_sum += e.drift_sum;
+    k.window_sum += e.window_sum;
   }
   md << "Drift by the kind of street the simulated city lines it with (all drives pooled, "
-        "length-weighted):\n\n| street kind | driven [km] | drift [%] |\n|---|---|---|\n";
-  for (const auto& [kind, dl] : by_kind)
-    md << "| " << kind << " | " << reportNumber(dl.second / 1000.0, 2) << " | "
-       << reportNumber(dl.first / dl.second, 2) << " |\n";
+        "length-weighted; along the street: over windows of half a visit from each pose of its "
+        "first half, averaged; end to end: from a visit's first pose to its last, which the "
+        "heading in the turn onto the street can decide):\n\n"
+        "| street kind | driven [km] | drift along the street [%] | drift end to end [%] |\n"
+        "|---|---|---|---|\n";
+  for (const auto& [kind, k] : by_kind)
+    md << "| " << kind << " | " << reportNumber(k.length_m / 1000.0, 2) << " | "
+       << reportNumber(k.window_sum / k.length_m, 2) << " | "
+       << reportNumber(k.drift_sum / k.length_m, 2) << " |\n";
   md << "\n";
 }
 

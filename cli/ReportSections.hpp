@@ -16,8 +16,14 @@
 
 namespace slamroute::cli {
 
-/// SUMO edge -> (sum of drift [%] x length [m], sum of length [m]) over every planner's drive.
-using PooledDrift = std::map<std::string, std::pair<double, double>>;
+/// A SUMO edge's drift pooled over every planner's drive: length-weighted sums of per_edge.csv's
+/// end-to-end drift_pct and its window_drift_pct (along the street; NaN from older files).
+struct EdgeDrift {
+  double length_m = 0;    ///< driven [m]
+  double drift_sum = 0;   ///< sum of drift_pct [%] x length [m]
+  double window_sum = 0;  ///< sum of window_drift_pct [%] x length [m]
+};
+using PooledDrift = std::map<std::string, EdgeDrift>;
 
 /// What the sections read: the inputs and the run's files every section shares.
 struct ReportData {

@@ -110,6 +110,16 @@ void expectReportTables(const std::filesystem::path& out) {
         "| noise correlation time | 2.0 s | ", "| directed SUMO edges [%] |"})
     EXPECT_NE(report.find(s), std::string::npos) << s;
   EXPECT_TRUE(std::filesystem::exists(out / "report" / "route_qlearning.png"));
+  // Drift per street kind, along the street and end to end, a number in every cell.
+  const std::string kinds =
+      "| street kind | driven [km] | drift along the street [%] | drift end to end [%] |\n"
+      "|---|---|---|---|\n";
+  const std::size_t table = report.find(kinds);
+  ASSERT_NE(table, std::string::npos) << report;
+  const std::string rows =
+      report.substr(table + kinds.size(), report.find("\n\n", table) - table - kinds.size());
+  EXPECT_FALSE(rows.empty());
+  EXPECT_EQ(rows.find("–"), std::string::npos) << rows;
   // Map accuracy: the median distance and the share beyond the 2 m clamp, from metrics.json (a
   // p95 of clamped distances was always the clamp).
   const auto mq = nlohmann::json::parse(readFile(out / "eval" / "qlearning" / "metrics.json"));
