@@ -29,10 +29,7 @@ void addDriftRow(const std::vector<std::string>& c, PooledDrift& acc) {
     const double len = std::stod(c[3]), drift = std::stod(c[6]);
     const double window = c.size() > 8 ? std::stod(c[8]) : std::nan("");
     if (!std::isfinite(drift) || len < 20.0) return;  // short pieces: drift is noise
-    EdgeDrift& e = acc[c[0]];
-    e.length_m += len;
-    e.drift_sum += drift * len;
-    e.window_sum += window * len;
+    acc[c[0]] += {len, drift * len, window * len};
   } catch (const std::exception&) {
   }
 }
@@ -83,10 +80,7 @@ void writeDriftByStreetKindSection(std::ostringstream& md, const ReportData& dat
     } catch (const std::exception&) {
       continue;  // not a street of this world
     }
-    EdgeDrift& k = by_kind[kind];
-    k.length_m += e.length_m;
-    k.drift_sum += e.drift_sum;
-    k.window_sum += e.window_sum;
+    by_kind[kind] += e;
   }
   md << "Drift by the kind of street the simulated city lines it with (all drives pooled, "
         "length-weighted; along the street: over windows of half a visit from each pose of its "

@@ -22,6 +22,12 @@ struct EdgeDrift {
   double length_m = 0;    ///< driven [m]
   double drift_sum = 0;   ///< sum of drift_pct [%] x length [m]
   double window_sum = 0;  ///< sum of window_drift_pct [%] x length [m]
+  EdgeDrift& operator+=(const EdgeDrift& o) {
+    length_m += o.length_m;
+    drift_sum += o.drift_sum;
+    window_sum += o.window_sum;
+    return *this;
+  }
 };
 using PooledDrift = std::map<std::string, EdgeDrift>;
 
