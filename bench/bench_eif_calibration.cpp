@@ -21,9 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -79,18 +77,12 @@ struct Sample {
 
 void addSamples(const DriveFiles& d, const std::map<std::string, double>& weight,
                 std::vector<Sample>& out) {
-  std::ifstream in(d.per_edge);
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    std::vector<std::string> c;
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');) c.push_back(f);
-    if (c.size() < 8 || !weight.count(c[0])) continue;
-    const double visits = std::stod(c[2]), len = std::stod(c[3]) / std::max(visits, 1.0);
-    const double drift = std::stod(c[6]) / 100.0, rot = std::stod(c[7]) * M_PI / 180.0;
+  for (const auto& r : evaluate::readPerEdgeCsv(d.per_edge)) {
+    if (!weight.count(r.edge)) continue;
+    const double len = r.length_m / std::max(r.visits, 1);
+    const double drift = r.drift_pct / 100.0, rot = r.rot_deg_per_m * M_PI / 180.0;
     if (len < 20.0 || !std::isfinite(drift) || !std::isfinite(rot)) continue;
-    out.push_back({1.0 - weight.at(c[0]), drift * drift * len, rot * rot * len});
+    out.push_back({1.0 - weight.at(r.edge), drift * drift * len, rot * rot * len});
   }
 }
 

@@ -2,7 +2,6 @@
 #include "HtmlReport.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -40,25 +39,21 @@ json weightLayer(const RoadGraph& g, const MapFrame& f) {
   return out;
 }
 
-/// per_edge.csv (evaluate): measured drift on each SUMO edge driven.
+/// per_edge.csv (evaluate): measured drift on each SUMO edge driven, along the street ("pct",
+/// which colours the street; end to end from evaluations older than that figure) and end to end
+/// ("end", which the heading in the turn onto the street can decide).
 json driftLayer(const SumoNet& net, const fs::path& csv, const MapFrame& f) {
   json out = json::array();
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);  // header: edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,...
-  while (std::getline(in, line)) {
-    std::vector<std::string> c;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) c.push_back(cell);
-    const SumoEdge* e = c.size() >= 7 ? net.findEdge(c[0]) : nullptr;
-    if (!e) continue;
-    const double drift = std::strtod(c[6].c_str(), nullptr),
-                 len = std::strtod(c[3].c_str(), nullptr);
-    if (!std::isfinite(drift)) continue;
-    out.push_back({{"edge", c[0]},
-                   {"pct", htmlRounded(drift, 1e-3)},
-                   {"len", htmlRounded(len, 0.1)},
-                   {"ate", htmlRounded(std::strtod(c[4].c_str(), nullptr), 1e-3)},
+  if (!fs::exists(csv)) return out;
+  for (const auto& r : evaluate::readPerEdgeCsv(csv)) {
+    const SumoEdge* e = net.findEdge(r.edge);
+    if (!e || !std::isfinite(r.drift_pct)) continue;
+    const double along = std::isfinite(r.window_drift_pct) ? r.window_drift_pct : r.drift_pct;
+    out.push_back({{"edge", r.edge},
+                   {"pct", htmlRounded(along, 1e-3)},
+                   {"end", htmlRounded(r.drift_pct, 1e-3)},
+                   {"len", htmlRounded(r.length_m, 0.1)},
+                   {"ate", htmlRounded(r.ate_mean_m, 1e-3)},
                    {"pts", f.line(e->shape)}});
   }
   return out;

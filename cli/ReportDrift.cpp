@@ -1,48 +1,23 @@
 // The report's test of the paper's premise: does the depth-image edge weight predict the LiDAR
 // drift measured on the edge, and which kinds of simulated street drift least.
 #include <cmath>
-#include <fstream>
 
 #include "ReportSections.hpp"
+#include "slamroute/evaluate/Metrics.hpp"
 #include "slamroute/pipeline/Plot.hpp"
 #include "slamroute/pipeline/Statistics.hpp"
 
 namespace slamroute::cli {
 namespace fs = std::filesystem;
 
-namespace {
-
-/// The comma-separated fields of one CSV line.
-std::vector<std::string> csvFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream ss(line);
-  std::string f;
-  while (std::getline(ss, f, ',')) fields.push_back(f);
-  return fields;
-}
-
-/// Adds one per_edge.csv row (edge, ..., length_m at 3, drift_pct at 6, window_drift_pct at 8)
-/// to `acc`.
-void addDriftRow(const std::vector<std::string>& c, PooledDrift& acc) {
-  if (c.size() < 7) return;
-  try {
-    const double len = std::stod(c[3]), drift = std::stod(c[6]);
-    const double window = c.size() > 8 ? std::stod(c[8]) : std::nan("");
-    if (!std::isfinite(drift) || len < 20.0) return;  // short pieces: drift is noise
-    acc[c[0]] += {len, drift * len, window * len};
-  } catch (const std::exception&) {
-  }
-}
-
-}  // namespace
-
 PooledDrift pooledDrift(const fs::path& out, const std::vector<std::string>& planners) {
   PooledDrift acc;
   for (const auto& p : planners) {
-    std::ifstream in(out / "eval" / p / "per_edge.csv");
-    std::string line;
-    std::getline(in, line);  // header
-    while (std::getline(in, line)) addDriftRow(csvFields(line), acc);
+    const fs::path csv = out / "eval" / p / "per_edge.csv";
+    if (!fs::exists(csv)) continue;
+    for (const auto& r : evaluate::readPerEdgeCsv(csv))
+      if (std::isfinite(r.drift_pct) && r.length_m >= 20.0)  // short pieces: drift is noise
+        acc[r.edge] += {r.length_m, r.drift_pct * r.length_m, r.window_drift_pct * r.length_m};
   }
   return acc;
 }
@@ -55,11 +30,12 @@ void writeWeightVsDriftSection(std::ostringstream& md, const ReportData& data) {
       auto it = data.drift.find(se);
       if (it == data.drift.end() || it->second.length_m <= 0) continue;
       w.push_back(e.weight);
-      d.push_back(it->second.drift_sum / it->second.length_m);
+      d.push_back(it->second.alongPct());
     }
   const double rho = pipeline::spearman(w, d);
   md << "Spearman rank correlation between an edge's depth-image weight and the measured "
-        "translational drift on it (pooled over all drives, pieces >= 20 m): **rho = "
+        "translational drift along it (pooled over all drives, pieces >= 20 m; end to end from "
+        "evaluations older than that figure): **rho = "
      << reportNumber(rho, 3) << "** over n = " << w.size()
      << " SUMO edges. The paper's premise predicts rho < 0 (a higher weight, i.e. more varied "
         "surface normals, should mean less drift).\n\n";

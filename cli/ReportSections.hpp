@@ -2,6 +2,7 @@
 // The sections of report.md. Each writer appends one part of the Markdown (and the pictures it
 // shows) from the run's files, loaded once into ReportData; writeReport lists them in order, so a
 // new section is one writer and one entry in that list.
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -22,6 +23,10 @@ struct EdgeDrift {
   double length_m = 0;    ///< driven [m]
   double drift_sum = 0;   ///< sum of drift_pct [%] x length [m]
   double window_sum = 0;  ///< sum of window_drift_pct [%] x length [m]
+  /// Drift along the street [%]; end to end where the files predate that figure.
+  double alongPct() const {
+    return std::isfinite(window_sum) ? window_sum / length_m : drift_sum / length_m;
+  }
   EdgeDrift& operator+=(const EdgeDrift& o) {
     length_m += o.length_m;
     drift_sum += o.drift_sum;

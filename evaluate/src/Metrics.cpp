@@ -11,8 +11,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "slamroute/core/AtomicFile.hpp"
-
 namespace slamroute::evaluate {
 namespace {
 
@@ -250,18 +248,6 @@ std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vect
     out.push_back(x.e);
   }
   return out;
-}
-
-void writePerEdgeCsv(const std::filesystem::path& path, const std::vector<EdgeError>& rows) {
-  std::ostringstream os;
-  os.precision(6);
-  os << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,rot_deg_per_m,"
-        "window_drift_pct\n";
-  for (const auto& r : rows)
-    os << r.edge << ',' << r.poses << ',' << r.visits << ',' << r.length_m << ',' << r.ate_mean_m
-       << ',' << r.ate_max_m << ',' << r.drift_pct << ',' << r.rot_deg_per_m << ','
-       << r.window_drift_pct << '\n';
-  writeFileAtomic(path, os.str());
 }
 
 }  // namespace slamroute::evaluate

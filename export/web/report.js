@@ -110,8 +110,8 @@ var planners = data.planners.map(function(p) {
   var drift = L.featureGroup(p.drift.map(function(d) {
     return polyline(
         d.pts, {color: ramp((d.pct - dr[0]) / (dr[1] - dr[0])), weight: 5},
-        d.edge + ': drift ' + fmt(d.pct, 2) + ' %, ATE ' + fmt(d.ate, 2) + ' m over ' +
-            fmt(d.len, 0) + ' m');
+        d.edge + ': drift along the street ' + fmt(d.pct, 2) + ' %, end to end ' +
+            fmt(d.end, 2) + ' %, ATE ' + fmt(d.ate, 2) + ' m over ' + fmt(d.len, 0) + ' m');
   }));
   var traj = L.featureGroup();
   if (p.drive) {
@@ -181,7 +181,7 @@ side.appendChild(select);
 var toggles = {};
 side.appendChild(el('h2', {}, 'Layers'));
 [['streets', 'street network'], ['weights', 'streets by weight (depth-normal score)'],
- ['route', 'route: times driven'], ['drift', 'measured drift per street'],
+ ['route', 'route: times driven'], ['drift', 'measured drift along each street'],
  ['traj', 'trajectories: ground truth / estimate']]
     .forEach(function(t) {
       var label = el('label');

@@ -3,6 +3,8 @@
 // metres. The page must load offline without errors and draw one route feature per SUMO edge.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -10,6 +12,7 @@
 #include "CliTestUtil.hpp"
 #include "HtmlReport.hpp"
 #include "slamroute/core/AtomicFile.hpp"
+#include "slamroute/evaluate/Metrics.hpp"
 
 namespace slamroute::test {
 namespace {
@@ -28,6 +31,28 @@ void expectPageDrawn(const Browser& b, const std::string& route_features, std::s
   EXPECT_NE(b.dom.find("leaflet-container"), std::string::npos);
   EXPECT_NE(b.dom.find("<img id=\"map-error\" src=\"data:image/png;base64,iVBORw0KGgo"),
             std::string::npos);
+}
+
+/// The page's drift layer colours each street by its drift along the street and names the end
+/// to end figure beside it, both as the evaluation's per_edge.csv gives them.
+void expectDriftAlongTheStreet(const std::string& html, const fs::path& per_edge_csv) {
+  const std::string open = "id=\"report-data\">";
+  const std::size_t from = html.find(open) + open.size();
+  const auto data = nlohmann::json::parse(html.substr(from, html.find("</script>", from) - from));
+  const auto& drift = data["planners"][0]["drift"];
+  std::size_t checked = 0, differ = 0;
+  for (const auto& row : evaluate::readPerEdgeCsv(per_edge_csv)) {
+    if (!std::isfinite(row.drift_pct)) continue;
+    const auto it = std::find_if(drift.begin(), drift.end(),
+                                 [&](const auto& d) { return d["edge"] == row.edge; });
+    ASSERT_NE(it, drift.end()) << row.edge;
+    EXPECT_NEAR((*it)["pct"].get<double>(), row.window_drift_pct, 6e-4) << row.edge;
+    EXPECT_NEAR((*it)["end"].get<double>(), row.drift_pct, 6e-4) << row.edge;
+    ++checked;
+    differ += std::abs(row.window_drift_pct - row.drift_pct) > 0.01;
+  }
+  EXPECT_EQ(checked, drift.size());
+  EXPECT_GT(differ, 0u);  // else the test could not tell the two figures apart
 }
 
 TEST(HtmlReport, RunWritesAPageThatChromiumDrawsOffline) {
@@ -51,6 +76,7 @@ TEST(HtmlReport, RunWritesAPageThatChromiumDrawsOffline) {
   const std::string features = "postman:" + std::to_string(edges);
   // The plus has 8 passenger edges; the page is on the globe (WGS84).
   EXPECT_NE(html.find("\"geo\":true"), std::string::npos);
+  expectDriftAlongTheStreet(html, dir / "out" / "eval" / "postman" / "per_edge.csv");
   const Browser geo = openInChromium(page, dir, dir / "report.png");
   expectPageDrawn(geo, features, 8);
   ASSERT_TRUE(fs::exists(dir / "report.png"));

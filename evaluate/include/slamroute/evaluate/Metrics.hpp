@@ -85,5 +85,8 @@ struct EdgeError {
 std::vector<EdgeError> perEdgeErrors(const TrajectoryMetrics& m, const std::vector<PoseEdge>& edges,
                                      double max_dt_s);
 void writePerEdgeCsv(const std::filesystem::path& path, const std::vector<EdgeError>& rows);
+/// per_edge.csv back; window_drift_pct is NaN from files written before it. Throws naming the file
+/// and line on anything else.
+std::vector<EdgeError> readPerEdgeCsv(const std::filesystem::path& path);
 
 }  // namespace slamroute::evaluate
