@@ -17,12 +17,24 @@ fs::path tempFile(const std::string& name) {
 }
 
 TEST(PerEdgeCsv, ReadsBackWhatItWrote) {
-  EdgeError a{.edge = "R0C0_R0C1", .poses = 120, .visits = 2, .length_m = 410.5,
-              .ate_mean_m = 0.12, .ate_max_m = 0.31, .drift_pct = 0.52,
-              .window_drift_pct = 0.137, .rot_deg_per_m = 0.004};
-  EdgeError b{.edge = "-R0C1_R1C1", .poses = 3, .visits = 1, .length_m = 4.25,
-              .ate_mean_m = 0.05, .ate_max_m = 0.06, .drift_pct = std::nan(""),
-              .window_drift_pct = std::nan(""), .rot_deg_per_m = 0.0};
+  EdgeError a{.edge = "R0C0_R0C1",
+              .poses = 120,
+              .visits = 2,
+              .length_m = 410.5,
+              .ate_mean_m = 0.12,
+              .ate_max_m = 0.31,
+              .drift_pct = 0.52,
+              .window_drift_pct = 0.137,
+              .rot_deg_per_m = 0.004};
+  EdgeError b{.edge = "-R0C1_R1C1",
+              .poses = 3,
+              .visits = 1,
+              .length_m = 4.25,
+              .ate_mean_m = 0.05,
+              .ate_max_m = 0.06,
+              .drift_pct = std::nan(""),
+              .window_drift_pct = std::nan(""),
+              .rot_deg_per_m = 0.0};
   const fs::path p = tempFile("round_trip.csv");
   writePerEdgeCsv(p, {a, b});
   const auto rows = readPerEdgeCsv(p);
