@@ -219,16 +219,36 @@ TEST(MotionModel, TheOdometryPriorWeighsYawAndAFadingAlongPriorByDefault) {
   slam::MotionModel m(cfg, Pose3::Identity());
   AlignOptions o;
   slam::Prediction p;
-  m.addOdometryPrior(o, p);
-  EXPECT_EQ(o.prior_weight.norm(), 0.0);  // no odometry: no prior
+  m.addMotionPrior(o, p);
+  EXPECT_EQ(o.prior_weight.norm(), 0.0);  // no odometry and no velocity yet: no prior
   m.setOdometry(WheelOdometry({{0.0, 5.0, 0.0}, {10.0, 5.0, 0.0}}));
-  m.addOdometryPrior(o, p);
+  m.addMotionPrior(o, p);
   const double sigma = cfg.odometry.prior_sigma_deg * std::numbers::pi / 180.0;
   EXPECT_NEAR(o.prior_weight(2), std::pow(cfg.odometry.prior_registration_sigma_m / sigma, 2),
               1e-6);
   EXPECT_NEAR(o.prior_weight(3), std::pow(0.05 / 0.005, 2), 1e-9);  // along: 0.005 m per 0.1 s
   EXPECT_EQ(o.prior_fade_info(3), 0.05);  // ... only where the scan says little that way
   EXPECT_EQ(o.prior_weight(4), 0.0);      // sideways: none, a car slips in turns
+}
+
+TEST(MotionModel, WithoutOdometryTheConstantVelocityIsAFadingPriorAlongTheHeadingOnly) {
+  Config cfg;
+  cfg.odometry.velocity_prior_along_sigma_m = 0.01;
+  slam::MotionModel m(cfg, Pose3::Identity());
+  m.setInitialMotion(forward(1.5), 0.1);
+  m.recordFrame(0.0, Pose3::Identity());
+  AlignOptions o;
+  const slam::Prediction p = m.predictStep(0.2);  // stride 2: the sigma doubles
+  m.addMotionPrior(o, p);
+  EXPECT_NEAR(o.prior.translation().x(), 3.0, 1e-12);  // towards the prediction
+  EXPECT_NEAR(o.prior_weight(3), std::pow(cfg.odometry.prior_registration_sigma_m / 0.02, 2), 1e-9);
+  EXPECT_EQ(o.prior_fade_info(3), cfg.odometry.velocity_prior_fade_info);
+  o.prior_weight(3) = 0.0;
+  EXPECT_EQ(o.prior_weight.norm(), 0.0);  // no yaw, sideways or vertical prior
+  cfg.odometry.velocity_prior_along_sigma_m = 0.0;
+  AlignOptions off;
+  m.addMotionPrior(off, p);
+  EXPECT_EQ(off.prior_weight.norm(), 0.0);
 }
 
 TEST(MotionModel, TheAlongPriorWeighsTheHeadingDirectionOnly) {
@@ -239,7 +259,7 @@ TEST(MotionModel, TheAlongPriorWeighsTheHeadingDirectionOnly) {
   AlignOptions o;
   slam::Prediction p;
   p.scale = 2.0;  // 0.2 s since the last frame: the sigma doubles
-  m.addOdometryPrior(o, p);
+  m.addMotionPrior(o, p);
   EXPECT_NEAR(o.prior_weight(3), std::pow(cfg.odometry.prior_registration_sigma_m / 0.01, 2), 1e-9);
   EXPECT_EQ(o.prior_weight(4), 0.0);  // sideways: the wheels do not see a car slip
   EXPECT_EQ(o.prior_weight(5), 0.0);

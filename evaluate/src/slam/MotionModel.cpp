@@ -126,19 +126,24 @@ bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result,
          (odometry_.empty() || plausibleWithOdometry(pred, result, cfg_, slack_s));
 }
 
-void MotionModel::addOdometryPrior(AlignOptions& o, const Prediction& step) const {
-  if (odometry_.empty()) return;
+void MotionModel::addMotionPrior(AlignOptions& o, const Prediction& step) const {
   const OdometryConfig& c = cfg_.odometry;
+  if (odometry_.empty() && !(have_velocity_ && c.velocity_prior_along_sigma_m > 0)) return;
   o.prior = step.T_world;
   // Sigmas grow with the frame interval like the slack; weight = (LiDAR sigma / prior sigma)^2.
   const auto w = [&](double sigma) {
     return sigma > 0 ? std::pow(c.prior_registration_sigma_m / (sigma * step.scale), 2) : 0.0;
   };
   o.prior_weight.setZero();
+  if (odometry_.empty()) {
+    o.prior_weight(3) = w(c.velocity_prior_along_sigma_m);
+    o.prior_fade_info(3) = c.velocity_prior_fade_info;
+    return;
+  }
+  o.prior_fade_info(3) = c.prior_along_fade_info;
   o.prior_weight(2) = w(c.prior_sigma_deg * std::numbers::pi / 180.0);
   o.prior_weight(3) = o.prior_weight(4) = w(c.prior_sigma_m);
   o.prior_weight(3) += w(c.prior_along_sigma_m);  // informations of two priors add up
-  o.prior_fade_info(3) = c.prior_along_fade_info;
 }
 
 Pose3 MotionModel::levelled(const Pose3& T_world, double t) const {

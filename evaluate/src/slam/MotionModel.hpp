@@ -48,8 +48,10 @@ class MotionModel {
   /// its slack, which counts the time since the last registered scan:
   /// OdometryConfig::slack_since_fix_max_s).
   bool plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const;
-  /// Prior of a scan-to-map towards the odometry's prediction (x, y, yaw); no-op without odometry.
-  void addOdometryPrior(AlignOptions& o, const Prediction& step) const;
+  /// Prior of a scan-to-map towards the prediction: the odometry's (along the heading, yaw, x / y),
+  /// or without odometry the constant velocity's along the heading; both fade out where the
+  /// scan holds that direction itself.
+  void addMotionPrior(AlignOptions& o, const Prediction& step) const;
   /// Roll and pitch moved towards the IMU's at time t (OdometryConfig::imu_tilt_weight), its
   /// pitch less the bias measured at loop closures.
   Pose3 levelled(const Pose3& T_world, double t) const;

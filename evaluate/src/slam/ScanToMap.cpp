@@ -68,7 +68,7 @@ AlignOptions ScanToMap::options(const MotionModel& motion, const Prediction& ste
   o.plane_max_dev_m = c.plane_max_dev_m;
   o.edge_weight = motion.hasOdometry() ? c.edge_weight : c.edge_weight_without_odometry;
   if (c.degeneracy_remap) o.degenerate_eig = c.degeneracy_min_eig;
-  motion.addOdometryPrior(o, step);
+  motion.addMotionPrior(o, step);
   return o;
 }
 

@@ -105,6 +105,16 @@ struct OdometryConfig {
   /// rises to this: 0.05 keeps it on a bridge deck (0.015-0.02) and off in a street with posts
   /// and doors (0.1-0.3). It fades the whole prior on x, prior_sigma_m's share too. 0 = always on
   double prior_along_fade_info = 0.05;
+  /// Without wheel odometry the constant-velocity prediction can take the wheels' place along
+  /// the heading, with this sigma per 0.1 s (0.002 holds a bridge deck), fading out as the scan's
+  /// information along the heading rises to velocity_prior_fade_info. On a bridge deck between
+  /// uniform parapets the scan-to-map otherwise holds the car where the local map was built (the
+  /// default city's deck: 230 m lost in 15 s). Off by default: a constant velocity misses the
+  /// speed changes the LiDAR cannot see either, and an open street is as weak along the heading
+  /// as a deck (the test grid's last street, accelerating: 1.9 -> 3.9 m; bench/RESULTS.md "The
+  /// ruler"). 0 = off [m]
+  double velocity_prior_along_sigma_m = 0.0;
+  double velocity_prior_fade_info = 0.03;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
   /// 0.05 deg/s); a drive that states its gyro's figures (odometry.yaml) scales it by
@@ -430,6 +440,12 @@ void visitFields(V& v, OdometryConfig& c) {
   v.field("prior_along_fade_info", c.prior_along_fade_info,
           "the along prior fades out as the scan's own information along the heading per "
           "residual rises to this (0 = always on)");
+  v.field("velocity_prior_along_sigma_m", c.velocity_prior_along_sigma_m,
+          "without wheel odometry: prior towards the constant-velocity prediction along the "
+          "heading, sigma per 0.1 s; 0 = off [m]");
+  v.field("velocity_prior_fade_info", c.velocity_prior_fade_info,
+          "... fading out as the scan's own information along the heading (per residual) rises "
+          "to this; 0 = always on");
   v.field("prior_sigma_deg", c.prior_sigma_deg,
           "scan-to-map prior towards the odometry, yaw sigma per 0.1 s (0 = off) [deg]");
   v.field("prior_ref_noise_deg_s", c.prior_ref_noise_deg_s,
