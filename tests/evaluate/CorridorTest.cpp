@@ -10,13 +10,6 @@
 namespace slamroute::evaluate {
 namespace {
 
-LidarSpec deckSpec() {
-  LidarSpec s;
-  s.channels = 32;
-  s.horizontal_samples = 900;
-  return s;
-}
-
 /// Buildings round the approach (x < 0), then a deck 300 m long between parapets 1 m high.
 test::Scene deckScene() {
   test::Scene s;
@@ -36,9 +29,9 @@ class DeckDrive : public ScanSource {
   std::size_t size() const override { return 150; }
   double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
   Scan scan(std::size_t i) const override {
-    return test::scanScene(scene_, pose(i), deckSpec(), time(i));
+    return test::scanScene(scene_, pose(i), test::coarseLidar(32), time(i));
   }
-  LidarSpec spec() const override { return deckSpec(); }
+  LidarSpec spec() const override { return test::coarseLidar(32); }
   static Pose3 pose(std::size_t i) {
     return test::poseXYZYaw(-60.0 + 1.5 * static_cast<double>(i), 0.0, 1.8, 0.0);
   }

@@ -12,13 +12,6 @@
 namespace slamroute::evaluate {
 namespace {
 
-LidarSpec smallSpec() {
-  LidarSpec s;
-  s.channels = 32;
-  s.horizontal_samples = 900;
-  return s;
-}
-
 /// Scans a moving sensor (1 m per scan along +x); index `missing` throws like a lost file.
 class StreetSource : public ScanSource {
  public:
@@ -28,9 +21,9 @@ class StreetSource : public ScanSource {
   double time(std::size_t i) const override { return 0.1 * static_cast<double>(i); }
   Scan scan(std::size_t i) const override {
     if (static_cast<int>(i) == missing_) throw std::runtime_error("scans/000002.bin: cannot open");
-    return test::scanScene(scene_, pose(i), smallSpec(), time(i));
+    return test::scanScene(scene_, pose(i), test::coarseLidar(32), time(i));
   }
-  LidarSpec spec() const override { return smallSpec(); }
+  LidarSpec spec() const override { return test::coarseLidar(32); }
   static Pose3 pose(std::size_t i) {
     return test::poseXYZYaw(-20.0 + 1.0 * static_cast<double>(i), 0.3, 1.8, 0.0);
   }
@@ -44,7 +37,7 @@ TEST(Degenerate, EmptyAndNaNScansArePredicted) {
   const test::Scene scene = test::cityScene(80.0);
   Config cfg;
   cfg.loop.enabled = false;
-  LidarSlam slam(cfg, smallSpec(), StreetSource::pose(0));
+  LidarSlam slam(cfg, test::coarseLidar(32), StreetSource::pose(0));
   StreetSource src(scene, 6, -1);
   EXPECT_EQ(slam.addScan(src.scan(0)), FrameStatus::Ok);
   EXPECT_EQ(slam.addScan(src.scan(1)), FrameStatus::Ok);
@@ -102,7 +95,7 @@ TEST(Degenerate, FeaturePoorSceneIsFlagged) {
 TEST(Degenerate, FirstScanEmptyStartsAtTheGivenPose) {
   Config cfg;
   const Pose3 T0 = test::poseXYZYaw(5, 6, 1.8, 0.4);
-  LidarSlam slam(cfg, smallSpec(), T0);
+  LidarSlam slam(cfg, test::coarseLidar(32), T0);
   EXPECT_EQ(slam.addScan(Scan{}), FrameStatus::Empty);
   const SlamResult r = slam.finish();
   ASSERT_EQ(r.trajectory.size(), 1u);

@@ -56,9 +56,7 @@ TEST(PclCrossCheck, PclReadsMapPcdPointForPoint) {
 
 TEST(PclCrossCheck, IcpFindsTheMotionPclGeneralizedIcpFinds) {
   // Two scans of a street crossing 1.2 m and 4 degrees apart, both methods started at identity.
-  LidarSpec spec;
-  spec.channels = 16;
-  spec.horizontal_samples = 900;
+  const LidarSpec spec = test::coarseLidar(16);
   const test::Scene scene = test::cityScene(80.0);
   const Pose3 T_world_target = test::poseXYZYaw(0.0, 0.0, 1.8, 0.0);
   const Pose3 T_world_source = test::poseXYZYaw(1.0, 0.6, 1.8, 4.0 * std::numbers::pi / 180.0);

@@ -46,6 +46,15 @@ struct Scene {
   }
 };
 
+/// A spinning LiDAR with `channels` rings (the default vertical field) and 900 columns (0.4 deg):
+/// coarse enough for a test to ray-cast a few hundred scans.
+inline LidarSpec coarseLidar(int channels) {
+  LidarSpec s;
+  s.channels = channels;
+  s.horizontal_samples = 900;
+  return s;
+}
+
 /// Scans the scene from T_world_sensor. noise_m: Gaussian range noise (seeded).
 inline Scan scanScene(const Scene& scene, const Pose3& T_world_sensor, const LidarSpec& spec,
                       double t = 0.0, double noise_m = 0.0, std::uint64_t seed = 1) {
