@@ -111,8 +111,8 @@ struct OdometryConfig {
   /// uniform parapets the scan-to-map otherwise holds the car where the local map was built (the
   /// default city's deck: 230 m lost in 15 s). Off by default: a constant velocity misses the
   /// speed changes the LiDAR cannot see either, and an open street is as weak along the heading
-  /// as a deck (the test grid's last street, accelerating: 1.9 -> 3.9 m; bench/RESULTS.md "The
-  /// ruler"). 0 = off [m]
+  /// as a deck (a test-grid drive speeding up on its last street: 3.9 m with it, 1.9 m without;
+  /// bench/RESULTS.md "The ruler"). 0 = off [m]
   double velocity_prior_along_sigma_m = 0.0;
   double velocity_prior_fade_info = 0.03;
   double prior_sigma_deg = 0.02;
