@@ -34,14 +34,23 @@ double number(const std::string& cell) {
   return v;
 }
 
+/// A count (poses, visits): a whole number of at least 0, so a hand-edited 12.5 is an error, not
+/// 12.
+int count(const std::string& cell) {
+  const double v = number(cell);
+  if (!(v >= 0) || v != std::floor(v) || v > std::numeric_limits<int>::max())
+    throw std::runtime_error("bad count '" + cell + "'");
+  return static_cast<int>(v);
+}
+
 /// One row; files written before window_drift_pct have 8 columns and give NaN there.
 EdgeError parseRow(const std::vector<std::string>& c) {
   if (c.size() != 8 && c.size() != 9)
     throw std::runtime_error(std::to_string(c.size()) + " columns, expected 8 or 9");
   EdgeError r;
   r.edge = c[0];
-  r.poses = static_cast<int>(number(c[1]));
-  r.visits = static_cast<int>(number(c[2]));
+  r.poses = count(c[1]);
+  r.visits = count(c[2]);
   r.length_m = number(c[3]);
   r.ate_mean_m = number(c[4]);
   r.ate_max_m = number(c[5]);

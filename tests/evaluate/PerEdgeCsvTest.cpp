@@ -74,6 +74,14 @@ TEST(PerEdgeCsv, ABadCellNamesTheFileAndLine) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), p.string() + ":3: bad number '2x0'");
   }
+  std::ofstream(p) << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,"
+                      "rot_deg_per_m,window_drift_pct\nE1,12.5,1,200,0.1,0.2,0.75,0.01,0.3\n";
+  try {
+    readPerEdgeCsv(p);
+    FAIL() << "no error for a fractional count";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), p.string() + ":2: bad count '12.5'");
+  }
   std::ofstream(p) << "edge,drift\nE1,0.5\n";
   EXPECT_THROW(readPerEdgeCsv(p), std::runtime_error);
 }
