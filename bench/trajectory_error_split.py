@@ -5,7 +5,10 @@
 # (Umeyama with scale: what a uniform shrink or stretch of the whole map accounts for), and the
 # per-scan relative-pose error summed separately over turns (|yaw rate| > 5 deg/s) and straight
 # stretches: a negative "along, straight" sum is a shortfall on the straights.
-# Usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR.
+# With --windows S: after those lines, where along the drive the rigid ATE is made, per window of
+# S seconds: its RMS, its share of the squared error and where the ground truth starts it, then
+# the window with the largest share (a false closure or a lost stretch shows up there).
+# Usage: bench/trajectory_error_split.py [--windows S] DRIVE_DIR EVAL_DIR.
 # Needs numpy and scipy (Debian python3-numpy, python3-scipy).
 import os
 import sys
@@ -16,10 +19,21 @@ from scipy.spatial.transform import Rotation as R
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from tum import load_tum  # noqa: E402
 
-if len(sys.argv) != 3:
-    sys.exit('usage: bench/trajectory_error_split.py DRIVE_DIR EVAL_DIR')
-gt = load_tum(sys.argv[1] + '/groundtruth.tum', 'trajectory_error_split.py')
-es = load_tum(sys.argv[2] + '/estimate.tum', 'trajectory_error_split.py')
+USAGE = 'usage: bench/trajectory_error_split.py [--windows S] DRIVE_DIR EVAL_DIR'
+args = sys.argv[1:]
+window_s = None
+if args[:1] == ['--windows']:
+    try:
+        window_s = float(args[1])
+    except (IndexError, ValueError):
+        sys.exit(USAGE)
+    if not window_s > 0:
+        sys.exit('trajectory_error_split.py: --windows must be a positive number of seconds')
+    args = args[2:]
+if len(args) != 2:
+    sys.exit(USAGE)
+gt = load_tum(args[0] + '/groundtruth.tum', 'trajectory_error_split.py')
+es = load_tum(args[1] + '/estimate.tum', 'trajectory_error_split.py')
 g = gt[[np.argmin(abs(gt[:, 0] - t)) for t in es[:, 0]]]
 
 # Rigid alignment of the estimate's positions onto the ground truth's.
@@ -61,3 +75,24 @@ rows = np.array(rows)
 turn = rows[:, 2] > 0
 print('relative-pose error sums: along turns %.3f, straight %.3f m; across turns %.3f, straight %.3f m'
       % (rows[turn, 0].sum(), rows[~turn, 0].sum(), rows[turn, 1].sum(), rows[~turn, 1].sum()))
+
+
+def print_windows(t, sq, truth, width):
+    print('where the rigid ATE is made, windows of %g s: start [s], RMS [m], share of the squared '
+          'error, ground truth x y at the start' % width)
+    best = None
+    for start in np.arange(t[0], t[-1] + 1e-9, width):
+        m = (t >= start) & (t < start + width)
+        if not m.any():
+            continue
+        share = sq[m].sum() / max(sq.sum(), 1e-300)
+        first = np.argmax(m)
+        print('  %8.1f  %7.3f  %5.1f %%  %9.1f %9.1f' %
+              (start, np.sqrt(sq[m].mean()), 100 * share, truth[first, 0], truth[first, 1]))
+        if best is None or share > best[1]:
+            best = (start, share)
+    print('largest: the window from %.1f s, %.1f %% of the squared error' % (best[0], 100 * best[1]))
+
+
+if window_s is not None:
+    print_windows(es[:, 0], (d ** 2).sum(1), g[:, 1:3], window_s)

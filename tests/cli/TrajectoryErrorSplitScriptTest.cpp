@@ -1,7 +1,8 @@
 // bench/trajectory_error_split.py on hand-made trajectories: an exact copy of the truth has no
 // error with or without a scale; a copy 0.1 % larger has a rigid ATE but none once the fit may
-// scale it, and the fitted scale is 1 / 1.001. A missing or malformed trajectory ends it with one
-// line naming the file.
+// scale it, and the fitted scale is 1 / 1.001; with --windows, a copy with one stretch pushed
+// aside puts most of the error in that stretch's window. A missing or malformed trajectory ends
+// it with one line naming the file.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,15 +15,17 @@ namespace {
 namespace fs = std::filesystem;
 
 // Debian's interpreter: scripts/setup.sh installs numpy and scipy for it.
-slamroute::test::CliResult runScript(const fs::path& drive, const fs::path& eval) {
+slamroute::test::CliResult runScript(const fs::path& drive, const fs::path& eval,
+                                     const std::string& options = "") {
   return slamroute::test::runCommand("/usr/bin/python3 " + std::string(SLAMROUTE_SOURCE_DIR) +
-                                     "/bench/trajectory_error_split.py " + drive.string() + " " +
-                                     eval.string());
+                                     "/bench/trajectory_error_split.py " + options +
+                                     drive.string() + " " + eval.string());
 }
 
-/// A 120 x 60 m loop driven anticlockwise, one pose per second, heading along the motion, the
-/// positions multiplied by `scale`.
-void writeLoop(const fs::path& file, double scale) {
+/// A 120 x 60 m loop driven anticlockwise, one pose per second (t = 0-35 s), heading along the
+/// motion, the positions multiplied by `scale`; the poses from `bump_from` s on (12 of them:
+/// the second long side, 18-29 s) moved 2 m aside.
+void writeLoop(const fs::path& file, double scale, int bump_from = -1) {
   std::ofstream out(file);
   out << "# t x y z qx qy qz qw\n";
   const double corners[5][2] = {{0, 0}, {120, 0}, {120, 60}, {0, 60}, {0, 0}};
@@ -35,7 +38,8 @@ void writeLoop(const fs::path& file, double scale) {
     for (int k = 0; k < steps; ++k, ++t) {
       const double x = corners[side][0] + dx * k / steps, y = corners[side][1] + dy * k / steps;
       const double z = 0.5 * std::sin(0.3 * t);
-      out << t << ' ' << scale * x << ' ' << scale * y << ' ' << scale * z << " 0 0 "
+      const double aside = bump_from >= 0 && t >= bump_from && t < bump_from + 12 ? 2.0 : 0.0;
+      out << t << ' ' << scale * x << ' ' << scale * (y + aside) << ' ' << scale * z << " 0 0 "
           << std::sin(yaw / 2) << ' ' << std::cos(yaw / 2) << '\n';
     }
   }
@@ -61,6 +65,28 @@ TEST(TrajectoryErrorSplitScript, AFitWithAScaleTakesOutAUniformStretch) {
   EXPECT_EQ(larger.out.find("ATE RMSE 0.000 m;"), std::string::npos) << larger.out;
   EXPECT_NE(larger.out.find("with a scale: ATE RMSE 0.000 m, scale 0.99900"), std::string::npos)
       << larger.out;
+}
+
+TEST(TrajectoryErrorSplitScript, WindowsFindTheStretchThatCarriesTheError) {
+  const fs::path root = slamroute::test::cliTempDir("trajectory_error_split_windows");
+  fs::create_directories(root / "drive");
+  fs::create_directories(root / "bumped");
+  writeLoop(root / "drive/groundtruth.tum", 1.0);
+  writeLoop(root / "bumped/estimate.tum", 1.0, 18);
+
+  const auto r = runScript(root / "drive", root / "bumped", "--windows 6 ");
+  ASSERT_EQ(r.code, 0) << r.out;
+  // Windows start at 0, 6, ..., 30 s; the bump fills those from 18 and 24 s.
+  EXPECT_NE(r.out.find("windows of 6 s"), std::string::npos) << r.out;
+  const auto largest = r.out.find("largest: the window from ");
+  ASSERT_NE(largest, std::string::npos) << r.out;
+  const double from = std::stod(r.out.substr(largest + 25));
+  EXPECT_TRUE(from == 18.0 || from == 24.0) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 3 + 1 + 6 + 1) << r.out;
+
+  const auto bad = runScript(root / "drive", root / "bumped", "--windows 0 ");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_EQ(bad.out, "trajectory_error_split.py: --windows must be a positive number of seconds\n");
 }
 
 TEST(TrajectoryErrorSplitScript, AMissingOrMalformedTrajectoryIsOneLineNamingTheFile) {
