@@ -63,25 +63,26 @@ TEST(PerEdgeCsv, AFileFromBeforeTheAlongStreetColumnHasNoAlongFigure) {
   EXPECT_TRUE(std::isnan(rows[0].window_drift_pct));
 }
 
+/// What reading `rows` (under the header) throws, or "" when it reads.
+std::string readError(const fs::path& p, const std::string& rows) {
+  std::ofstream(p) << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,"
+                      "rot_deg_per_m,window_drift_pct\n"
+                   << rows;
+  try {
+    readPerEdgeCsv(p);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(PerEdgeCsv, ABadCellNamesTheFileAndLine) {
   const fs::path p = tempFile("bad.csv");
-  std::ofstream(p) << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,"
-                      "rot_deg_per_m,window_drift_pct\nE1,50,1,200,0.1,0.2,0.75,0.01,0.3\n"
-                      "E2,50,1,2x0,0.1,0.2,0.75,0.01,0.3\n";
-  try {
-    readPerEdgeCsv(p);
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), p.string() + ":3: bad number '2x0'");
-  }
-  std::ofstream(p) << "sumo_edge,poses,visits,length_m,ate_mean_m,ate_max_m,drift_pct,"
-                      "rot_deg_per_m,window_drift_pct\nE1,12.5,1,200,0.1,0.2,0.75,0.01,0.3\n";
-  try {
-    readPerEdgeCsv(p);
-    FAIL() << "no error for a fractional count";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), p.string() + ":2: bad count '12.5'");
-  }
+  EXPECT_EQ(readError(p, "E1,50,1,200,0.1,0.2,0.75,0.01,0.3\nE2,50,1,2x0,0.1,0.2,0.75,0.01,0.3\n"),
+            p.string() + ":3: bad number '2x0'");
+  EXPECT_EQ(readError(p, "E1,12.5,1,200,0.1,0.2,0.75,0.01,0.3\n"),
+            p.string() + ":2: bad count '12.5'");
+  EXPECT_EQ(readError(p, "E1,50,1,200,0.1,0.2,0.75,0.01,0.3\n"), "");
   std::ofstream(p) << "edge,drift\nE1,0.5\n";
   EXPECT_THROW(readPerEdgeCsv(p), std::runtime_error);
 }
