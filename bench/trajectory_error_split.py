@@ -5,10 +5,13 @@
 # (Umeyama with scale: what a uniform shrink or stretch of the whole map accounts for), and the
 # per-scan relative-pose error summed separately over turns (|yaw rate| > 5 deg/s) and straight
 # stretches: a negative "along, straight" sum is a shortfall on the straights.
+# With --region X0,X1,Y0,Y1 (repeatable): the share of the poses and of the squared error inside
+# those boxes of the ground truth's x / y, the RMS inside and outside, and the ATE of the moving
+# poses alone (a long wait weighs the error where the car stands by the wait's length).
 # With --windows S: after those lines, where along the drive the rigid ATE is made, per window of
 # S seconds: its RMS, its share of the squared error and where the ground truth starts it, then
 # the window with the largest share (a false closure or a lost stretch shows up there).
-# Usage: bench/trajectory_error_split.py [--windows S] DRIVE_DIR EVAL_DIR.
+# Usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] DRIVE EVAL.
 # Needs numpy and scipy (Debian python3-numpy, python3-scipy).
 import os
 import sys
@@ -19,21 +22,29 @@ from scipy.spatial.transform import Rotation as R
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from tum import load_tum  # noqa: E402
 
-USAGE = 'usage: bench/trajectory_error_split.py [--windows S] DRIVE_DIR EVAL_DIR'
+USAGE = ('usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] '
+         'DRIVE_DIR EVAL_DIR')
+NAME = 'trajectory_error_split.py'
 args = sys.argv[1:]
 window_s = None
-if args[:1] == ['--windows']:
+regions = []  # (x0, x1, y0, y1) in the ground truth's frame [m]
+while args[:1] in (['--windows'], ['--region']):
     try:
-        window_s = float(args[1])
+        if args[0] == '--windows':
+            window_s = float(args[1])
+        else:
+            regions.append([float(v) for v in args[1].split(',')])
     except (IndexError, ValueError):
         sys.exit(USAGE)
-    if not window_s > 0:
-        sys.exit('trajectory_error_split.py: --windows must be a positive number of seconds')
+    if window_s is not None and not window_s > 0:
+        sys.exit(NAME + ': --windows must be a positive number of seconds')
+    if regions and len(regions[-1]) != 4:
+        sys.exit(NAME + ': --region takes X0,X1,Y0,Y1 [m]')
     args = args[2:]
 if len(args) != 2:
     sys.exit(USAGE)
-gt = load_tum(args[0] + '/groundtruth.tum', 'trajectory_error_split.py')
-es = load_tum(args[1] + '/estimate.tum', 'trajectory_error_split.py')
+gt = load_tum(args[0] + '/groundtruth.tum', NAME)
+es = load_tum(args[1] + '/estimate.tum', NAME)
 g = gt[[np.argmin(abs(gt[:, 0] - t)) for t in es[:, 0]]]
 
 # Rigid alignment of the estimate's positions onto the ground truth's.
@@ -96,3 +107,19 @@ def print_windows(t, sq, truth, width):
 
 if window_s is not None:
     print_windows(es[:, 0], (d ** 2).sum(1), g[:, 1:3], window_s)
+
+
+def print_regions(sq, truth, boxes):
+    inside = np.zeros(len(sq), dtype=bool)
+    for x0, x1, y0, y1 in boxes:
+        inside |= (truth[:, 0] >= x0) & (truth[:, 0] <= x1) & (truth[:, 1] >= y0) & (truth[:, 1] <= y1)
+    moving = np.r_[np.linalg.norm(np.diff(truth, axis=0), axis=1) > 0.05, True]
+    rms = lambda m: np.sqrt(sq[m].mean()) if m.any() else float('nan')
+    print('regions: %.1f %% of the poses, %.1f %% of the squared error; RMS inside %.3f m, outside '
+          '%.3f m; ATE of the moving poses %.3f m' %
+          (100 * inside.mean(), 100 * sq[inside].sum() / max(sq.sum(), 1e-300), rms(inside),
+           rms(~inside), rms(moving)))
+
+
+if regions:
+    print_regions((d ** 2).sum(1), g[:, 1:3], regions)

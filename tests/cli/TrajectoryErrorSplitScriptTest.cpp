@@ -1,8 +1,8 @@
 // bench/trajectory_error_split.py on hand-made trajectories: an exact copy of the truth has no
 // error with or without a scale; a copy 0.1 % larger has a rigid ATE but none once the fit may
-// scale it, and the fitted scale is 1 / 1.001; with --windows, a copy with one stretch pushed
-// aside puts most of the error in that stretch's window. A missing or malformed trajectory ends
-// it with one line naming the file.
+// scale it, and the fitted scale is 1 / 1.001; with --windows and --region, a copy with one
+// stretch pushed aside puts most of the error in that stretch's window and box. A missing or
+// malformed trajectory ends it with one line naming the file.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,7 +67,7 @@ TEST(TrajectoryErrorSplitScript, AFitWithAScaleTakesOutAUniformStretch) {
       << larger.out;
 }
 
-TEST(TrajectoryErrorSplitScript, WindowsFindTheStretchThatCarriesTheError) {
+TEST(TrajectoryErrorSplitScript, WindowsAndRegionsFindTheStretchThatCarriesTheError) {
   const fs::path root = slamroute::test::cliTempDir("trajectory_error_split_windows");
   fs::create_directories(root / "drive");
   fs::create_directories(root / "bumped");
@@ -83,6 +83,17 @@ TEST(TrajectoryErrorSplitScript, WindowsFindTheStretchThatCarriesTheError) {
   const double from = std::stod(r.out.substr(largest + 25));
   EXPECT_TRUE(from == 18.0 || from == 24.0) << r.out;
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 3 + 1 + 6 + 1) << r.out;
+
+  // The box round the long side at y = 60 m holds the 12 pushed poses and the corner after them.
+  const auto region = runScript(root / "drive", root / "bumped", "--region -1,121,55,65 ");
+  ASSERT_EQ(region.code, 0) << region.out;
+  const auto line = region.out.find("regions: 36.1 % of the poses, ");
+  ASSERT_NE(line, std::string::npos) << region.out;
+  EXPECT_GT(std::stod(region.out.substr(line + 30)), 50.0) << region.out;  // of the squared error
+
+  const auto bad_region = runScript(root / "drive", root / "bumped", "--region 1,2 ");
+  EXPECT_NE(bad_region.code, 0);
+  EXPECT_EQ(bad_region.out, "trajectory_error_split.py: --region takes X0,X1,Y0,Y1 [m]\n");
 
   const auto bad = runScript(root / "drive", root / "bumped", "--windows 0 ");
   EXPECT_NE(bad.code, 0);
