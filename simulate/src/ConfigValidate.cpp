@@ -38,6 +38,7 @@ void DriveConfig::validate() const {
   requireRange("mapper_speed_factor", mapper_speed_factor, 0.01, 10.0);
   requirePositive("time_to_teleport_s", time_to_teleport_s, kDay_s);
   requirePositive("min_avg_speed_mps", min_avg_speed_mps, 100.0);
+  requirePositive("path_smoothing_m", path_smoothing_m, 100.0);
   requireNonNegative("odometry_scale_sigma", odometry_scale_sigma, 1.0);
   requireNonNegative("odometry_speed_noise_mps", odometry_speed_noise_mps, 100.0);
   requireNonNegative("gyro_bias_sigma_deg_s", gyro_bias_sigma_deg_s, 360.0);

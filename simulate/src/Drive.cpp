@@ -18,7 +18,7 @@
 #include "slamroute/core/Route.hpp"
 #include "slamroute/core/StagingDir.hpp"
 #include "slamroute/core/SumoNet.hpp"
-#include "slamroute/core/Yaw.hpp"
+#include "slamroute/simulate/DrivablePath.hpp"
 #include "slamroute/simulate/SumoSession.hpp"
 #include "slamroute/simulate/VehicleBody.hpp"
 #include "slamroute/simulate/World.hpp"
@@ -30,49 +30,6 @@ constexpr const char* kMapper = "mapper";
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
-}
-
-/// SUMO's vehicle angle is the lane direction at the vehicle's position; entering an internal
-/// junction lane (a U-turn at a dead end, a sharp turn) makes it jump by up to ~100 degrees
-/// within one 0.1 s step, which no real car does and which would make the simulated scans jump
-/// with it. The recorded heading is therefore the direction of motion of the reference point,
-/// from the positions 0.5 s before and after (central difference), keeping SUMO's pitch; where
-/// the vehicle moved less than 0.2 m in that window (standing at a light) the previous heading is
-/// kept. The heading then turns at most as fast as a car can (see the limits below).
-void headingsFromMotion(Trajectory& traj) {
-  const std::size_t n = traj.size(), k = 5;
-  if (n < 3) return;
-  std::vector<double> yaw(n);
-  for (std::size_t i = 0; i < n; ++i) yaw[i] = yawOf(traj[i].T_world_body);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t a = i >= k ? i - k : 0, b = std::min(n - 1, i + k);
-    const Vec3 d = traj[b].T_world_body.translation() - traj[a].T_world_body.translation();
-    if (std::hypot(d.x(), d.y()) >= 0.2) {
-      yaw[i] = std::atan2(d.y(), d.x());
-    } else if (i > 0) {
-      yaw[i] = yaw[i - 1];
-    }
-  }
-  // A car turns its heading only while it moves: at most kMaxCurvature per metre driven, plus
-  // kMinTurnRate while (nearly) standing. Without this the heading snapped by ~20 degrees within
-  // 0.1 s when a vehicle waiting at a junction started along a differently directed internal lane.
-  constexpr double kMaxCurvature = 0.5;                             // [rad/m], a 2 m turning radius
-  constexpr double kMinTurnRate = 30.0 * std::numbers::pi / 180.0;  // [rad/s]
-  for (std::size_t i = 1; i < n; ++i) {
-    const Vec3 step = traj[i].T_world_body.translation() - traj[i - 1].T_world_body.translation();
-    const double dt = std::max(0.0, traj[i].t - traj[i - 1].t);
-    const double limit =
-        std::max(kMaxCurvature * std::hypot(step.x(), step.y()), kMinTurnRate * dt);
-    const double diff = std::remainder(yaw[i] - yaw[i - 1], 2.0 * std::numbers::pi);
-    yaw[i] = yaw[i - 1] + std::clamp(diff, -limit, limit);
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x_axis = traj[i].T_world_body.linear().col(0);
-    const double pitch = std::asin(std::clamp(x_axis.z(), -1.0, 1.0));
-    traj[i].T_world_body.linear() =
-        (Eigen::AngleAxisd(yaw[i], Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()))
-            .toRotationMatrix();
-  }
 }
 
 struct TypeDims {
@@ -262,7 +219,7 @@ void stepUntilAllArrived(SumoSession& sim, BackgroundTraffic& traffic,
 }
 
 /// The record of an arrived mapper, checked to have driven its whole route.
-DriveRecord finishedRecord(MapperRecorder& r, const std::string& where) {
+DriveRecord finishedRecord(MapperRecorder& r, const std::string& where, const DriveConfig& dc) {
   r.finish();
   if (!r.reachedRouteEnd())
     throw std::runtime_error(where + ": " + r.name() +
@@ -271,7 +228,7 @@ DriveRecord finishedRecord(MapperRecorder& r, const std::string& where) {
   DriveRecord rec = std::move(r.rec);
   if (rec.groundtruth.size() < 2)
     throw std::runtime_error(where + ": the route is too short to record a trajectory");
-  headingsFromMotion(rec.groundtruth);
+  makeDrivable(rec.groundtruth, dc.path_smoothing_m);
   return rec;
 }
 
@@ -297,7 +254,7 @@ std::vector<DriveRecord> recordMappers(const SumoNet& net,
   stepUntilAllArrived(sim, traffic, recorders, max_time);
   std::vector<DriveRecord> records;
   for (std::size_t k = 0; k < mappers.size(); ++k) {
-    records.push_back(finishedRecord(recorders[k], net.source.string()));
+    records.push_back(finishedRecord(recorders[k], net.source.string(), dc));
     records.back().route_length_m = routeLength(net, mappers[k].edges);
     records.back().background_vehicles = traffic.spawned();
   }

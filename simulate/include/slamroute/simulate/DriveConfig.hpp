@@ -43,6 +43,9 @@ struct DriveConfig {
       300.0;  ///< SUMO teleports a car stuck this long; for the mapper this is an error [s]
   double min_avg_speed_mps =
       1.0;  ///< the drive fails when the route takes longer than length / this + 300 s [m/s]
+  /// SUMO's path averaged over +- this along its length (a triangular kernel 4x as wide), so
+  /// the sideways jumps SUMO's cars make between a junction's lanes become a path a car can drive
+  double path_smoothing_m = 2.5;  ///< [m], > 0
   /// Wheel odometry + gyro recorded with the drive (odometry.csv, from the ground truth):
   double odometry_scale_sigma = 0.01;      ///< wheel-speed scale error, 1 sigma, one per drive
   double odometry_speed_noise_mps = 0.05;  ///< white speed noise per sample, 1 sigma [m/s]
@@ -67,6 +70,8 @@ void visitFields(V& v, DriveConfig& c) {
           "SUMO teleport time; a mapper teleport is an error [s]");
   v.field("min_avg_speed_mps", c.min_avg_speed_mps,
           "give up when slower than this on average (+300 s) [m/s]");
+  v.field("path_smoothing_m", c.path_smoothing_m,
+          "SUMO's path averaged over +- this along its length, so a car can drive it [m]");
   v.field("odometry_scale_sigma", c.odometry_scale_sigma,
           "wheel odometry speed scale error, 1 sigma, one per drive (0.01 = 1 %)");
   v.field("odometry_speed_noise_mps", c.odometry_speed_noise_mps,
