@@ -141,7 +141,8 @@ void makeDrivable(Trajectory& traj, double smoothing_m) {
   if (s_raw.back() < 2.0 * kStep_m) return;  // standing all along: nothing to smooth
   // Position along the path averaged in time, so a sideways step's length is spread over 1 s.
   const double dt = (traj.back().t - traj.front().t) / static_cast<double>(traj.size() - 1);
-  const auto k = static_cast<std::size_t>(std::max(1.0, std::round(kTimeWindow_s / dt)));
+  const auto k =
+      dt > 0.0 ? static_cast<std::size_t>(std::max(1.0, std::round(kTimeWindow_s / dt))) : 1;
   const std::vector<double> s = movingAverage(s_raw, k);
   // The path averaged along its length twice (a triangular kernel): curvature stays bounded.
   const auto h = static_cast<std::size_t>(std::max(1.0, std::round(smoothing_m / kStep_m)));

@@ -1,7 +1,9 @@
 #pragma once
 // The mapping vehicle's recorded path made one a car can drive. SUMO moves its vehicles between a
 // junction's internal lanes (and at the end of lane changes there) by up to ~1 m sideways per
-// 0.1 s step; no car crabs so, and no wheel odometry or gyro would see it if one did.
+// 0.1 s step; no car crabs so, and no wheel odometry or gyro would see it if one did. SUMO's own
+// angle (the lane's direction) is no heading either: it jumps by up to ~100 deg within a step
+// where the car enters a junction's internal lane.
 #include "slamroute/core/Trajectory.hpp"
 
 namespace slamroute::simulate {
