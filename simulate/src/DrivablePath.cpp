@@ -1,24 +1,20 @@
-// makeDrivable: SUMO's recorded path averaged along its own length, headings from its direction.
+// makeDrivable: SUMO's recorded path averaged along its own length, then driven by a car.
 #include "slamroute/simulate/DrivablePath.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <vector>
 
-#include "slamroute/core/Yaw.hpp"
+#include "PathFollower.hpp"
 
 namespace slamroute::simulate {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
 
-constexpr double kStep_m = 0.1;         // spacing of the path resampled along its length
-constexpr double kTimeWindow_s = 0.5;   // +- window of the position-along-path average
-constexpr double kTangentHalf_m = 0.5;  // +- span of the heading's chord on the smooth path
-constexpr double kMaxCurvature = 0.5;   // [rad/m], a 2 m turning radius
-constexpr double kMinTurnRate = 30.0 * std::numbers::pi / 180.0;  // [rad/s] while standing
+constexpr double kStep_m = 0.1;        // spacing of the path resampled along its length
+constexpr double kTimeWindow_s = 0.5;  // +- window of the position-along-path average
 
 Vec2 xyOf(const StampedPose& p) { return p.T_world_body.translation().head<2>(); }
 
@@ -85,38 +81,22 @@ std::vector<Vec2> boxFilter(const std::vector<Vec2>& p, std::size_t h) {
   return out;
 }
 
-/// The resampled path at distance u along it (clamped to its ends).
-Vec2 at(const std::vector<Vec2>& path, double u) {
-  const double x = std::clamp(u / kStep_m, 0.0, static_cast<double>(path.size() - 1));
-  const auto j = std::min(static_cast<std::size_t>(x), path.size() - 2);
-  const double f = x - static_cast<double>(j);
-  return (1.0 - f) * path[j] + f * path[j + 1];
-}
-
-/// The smooth path's direction at each pose; kept while the path has no direction there.
-std::vector<double> tangentHeadings(const Trajectory& traj, const std::vector<Vec2>& path,
-                                    const std::vector<double>& s) {
-  std::vector<double> yaw(traj.size());
-  for (std::size_t i = 0; i < traj.size(); ++i) {
-    const Vec2 d = at(path, s[i] + kTangentHalf_m) - at(path, s[i] - kTangentHalf_m);
-    if (d.norm() > 0.1 * kTangentHalf_m)
-      yaw[i] = std::atan2(d.y(), d.x());
-    else
-      yaw[i] = i > 0 ? yaw[i - 1] : yawOf(traj[0].T_world_body);
-  }
-  return yaw;
-}
-
-/// A car turns its heading only while it moves: at most kMaxCurvature per metre driven, plus
-/// kMinTurnRate while (nearly) standing (a guard where the smooth path still turns tighter, as
-/// at the apex of a U-turn).
-void limitTurnRate(const Trajectory& traj, const std::vector<Vec2>& xy, std::vector<double>& yaw) {
-  for (std::size_t i = 1; i < traj.size(); ++i) {
-    const double step = (xy[i] - xy[i - 1]).norm();
-    const double dt = std::max(0.0, traj[i].t - traj[i - 1].t);
-    const double limit = std::max(kMaxCurvature * step, kMinTurnRate * dt);
-    const double diff = std::remainder(yaw[i] - yaw[i - 1], 2.0 * std::numbers::pi);
-    yaw[i] = yaw[i - 1] + std::clamp(diff, -limit, limit);
+/// A car driving the smooth path, one pose after the other: each step as far as the smooth path
+/// is long between the two poses' positions along it, a little further while the car is behind
+/// (after a turn it took wider than the path) and a little less while ahead, so it keeps pace
+/// without jumps.
+void follow(const std::vector<Vec2>& path, const std::vector<double>& s, std::vector<Vec2>& xy,
+            std::vector<double>& yaw) {
+  constexpr double kCatchUp = 0.2;  // [1/m]: the speed's share added per metre behind
+  PathFollower car(path, kStep_m);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (i > 0) {
+      const double behind = car.lengthAt(s[i - 1]) - car.lengthAt(car.along());
+      const double pace = std::clamp(1.0 + kCatchUp * behind, 0.5, 1.5);
+      car.drive(std::max(0.0, car.lengthAt(s[i]) - car.lengthAt(s[i - 1])) * pace);
+    }
+    xy[i] = car.position();
+    yaw[i] = car.heading();
   }
 }
 
@@ -147,10 +127,10 @@ void makeDrivable(Trajectory& traj, double smoothing_m) {
   // The path averaged along its length twice (a triangular kernel): curvature stays bounded.
   const auto h = static_cast<std::size_t>(std::max(1.0, std::round(smoothing_m / kStep_m)));
   const std::vector<Vec2> path = boxFilter(boxFilter(resample(traj, s_raw), h), h);
+  // A car drives it: no step sideways, turns no tighter than a car can.
   std::vector<Vec2> xy(traj.size());
-  for (std::size_t i = 0; i < traj.size(); ++i) xy[i] = at(path, s[i]);
-  std::vector<double> yaw = tangentHeadings(traj, path, s);
-  limitTurnRate(traj, xy, yaw);
+  std::vector<double> yaw(traj.size());
+  follow(path, s, xy, yaw);
   setPoses(traj, xy, yaw);
 }
 

@@ -10,10 +10,11 @@ namespace slamroute::simulate {
 
 /// Replaces SUMO's positions (x, y) by the path averaged along its own length, twice over a
 /// window of +-`smoothing_m` (a triangular kernel 4 x `smoothing_m` wide), so a sideways jump is
-/// spread over the next metres; the position along the path is averaged over +-0.5 s, so the
-/// speed does not jump where a step was sideways. The heading is the smoothed path's direction
-/// (kept while standing), turning at most 0.5 rad per metre driven or 30 deg/s; SUMO's height and
-/// pitch are kept. Throws std::invalid_argument when smoothing_m is not > 0.
+/// spread over the next metres, and then driven by a car (PathFollower: it moves only along its
+/// heading and turns at most 0.5 rad per metre, so it takes a U-turn tighter than that wider and
+/// steers back). How far it drives from one pose to the next is how far the position along the
+/// path, averaged over +-0.5 s, advanced (so the speed does not jump where a step was sideways).
+/// SUMO's height and pitch are kept. Throws std::invalid_argument when smoothing_m is not > 0.
 void makeDrivable(Trajectory& traj, double smoothing_m);
 
 }  // namespace slamroute::simulate
