@@ -17,8 +17,9 @@ class PathFollower {
   static constexpr double kMaxCurvature = 0.5;  ///< [rad/m], a 2 m turning radius
   static constexpr double kSettle_m = 1.5;      ///< the feedback's distance constant [m]
 
-  /// `path`: points `step_m` apart along it (at least two); the car starts on its first point,
-  /// heading along it.
+  /// `path`: at least two points, at parameter u = 0, step_m, 2 step_m, ... (a path resampled
+  /// every step_m and then smoothed, so its points may lie closer); the car starts on its first
+  /// point, heading along it.
   PathFollower(std::vector<Eigen::Vector2d> path, double step_m);
 
   /// Drives `distance_m` (>= 0) in steps of at most step_m.
