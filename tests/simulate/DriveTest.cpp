@@ -55,11 +55,11 @@ void expectHeadingFollowsTheRoute(const Trajectory& gt, const SumoNet& net,
   EXPECT_GT(gt[5].T_world_body.linear().col(0).dot(dir0), 0.999);
   // The route turns at four junctions: the heading turns smoothly (a car does not rotate by tens
   // of degrees in 0.1 s, as SUMO's lane angle does when it enters an internal lane): at most
-  // 0.5 rad per metre driven, or 3 degrees per 0.1 s step while (nearly) standing.
+  // 0.5 rad per metre driven (of arc: 1 % over the chord), and not at all while standing.
   for (std::size_t i = 1; i < gt.size(); ++i) {
     const Vec3 a = gt[i - 1].T_world_body.linear().col(0), b = gt[i].T_world_body.linear().col(0);
     const Vec3 step = gt[i].T_world_body.translation() - gt[i - 1].T_world_body.translation();
-    const double limit = std::max(0.5 * std::hypot(step.x(), step.y()), 3.0 * M_PI / 180.0 + 1e-9);
+    const double limit = 0.505 * std::hypot(step.x(), step.y());
     const double turn = std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0));
     EXPECT_LE(turn, limit + 1e-6) << "pose " << i;
   }
