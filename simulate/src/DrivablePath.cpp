@@ -89,11 +89,13 @@ void follow(const std::vector<Vec2>& path, const std::vector<double>& s, std::ve
             std::vector<double>& yaw) {
   constexpr double kCatchUp = 0.2;  // [1/m]: the speed's share added per metre behind
   PathFollower car(path, kStep_m);
+  double last = car.lengthAt(s.front());  // the path's length to the previous pose's place on it
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (i > 0) {
-      const double behind = car.lengthAt(s[i - 1]) - car.lengthAt(car.along());
-      const double pace = std::clamp(1.0 + kCatchUp * behind, 0.5, 1.5);
-      car.drive(std::max(0.0, car.lengthAt(s[i]) - car.lengthAt(s[i - 1])) * pace);
+      const double next = car.lengthAt(s[i]);
+      const double pace = std::clamp(1.0 + kCatchUp * (last - car.lengthAt(car.along())), 0.5, 1.5);
+      car.drive(std::max(0.0, next - last) * pace);
+      last = next;
     }
     xy[i] = car.position();
     yaw[i] = car.heading();
