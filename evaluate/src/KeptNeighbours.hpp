@@ -2,7 +2,7 @@
 // The k nearest neighbours of a query point that moves a little between searches (a source point
 // of a registration as the pose settles), found again without a tree search while the last
 // answer must still hold. Exact, not approximate: the same neighbours in the same order as the
-// tree search, up to points at exactly equal distances.
+// tree search (at equal distances the lower index first).
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
@@ -16,8 +16,8 @@
 
 namespace slamroute::evaluate {
 
-/// Squared distance as nanoflann's L2_Simple_Adaptor forms it (float, x + y + z in that order),
-/// so neighbours ordered here are ordered as the tree orders them.
+/// Squared distance as KdTree forms it (float, x + y + z in that order), so neighbours ordered
+/// here are ordered as the tree orders them.
 inline float treeSqDist(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
   float r = 0;
   for (int d = 0; d < 3; ++d) {
@@ -66,8 +66,7 @@ class KeptNeighbours {
       near[j] = {treeSqDist(q, cloud[static_cast<std::size_t>(i)]), i};
       if (!(std::sqrt(static_cast<double>(near[j].first)) < limit)) return false;
     }
-    std::stable_sort(near.begin(), near.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(near.begin(), near.end());  // by distance, then index: as the tree orders them
     idx.resize(near.size());
     sq_dist.resize(near.size());
     for (std::size_t j = 0; j < near.size(); ++j) std::tie(sq_dist[j], idx[j]) = near[j];

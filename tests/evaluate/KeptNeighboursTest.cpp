@@ -1,4 +1,5 @@
-// KeptNeighbours must answer exactly as the tree search does, whether it searched or not.
+// KeptNeighbours must answer exactly as the tree search does, whether it searched or not, ties
+// included.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -53,6 +54,26 @@ TEST(KeptNeighbours, NothingWithinTheBoundIsFoundAndNotKept) {
   EXPECT_FALSE(kept.reused());
   EXPECT_EQ(kept.find(tree, cloud, {2.5f, 0, 0.001f}, 100.0f, idx, d2), 5);
   EXPECT_FALSE(kept.reused());  // 0 and 5 are at the same 2.5 m: the fifth is not certain
+}
+
+TEST(KeptNeighbours, PointsThatBecomeTiedComeInTheTreesOrder) {
+  Cloud grid;  // integer points, x outermost: (-1, 0, 0) has a lower index than (1, 0, 0)
+  for (int x = -3; x <= 3; ++x)
+    for (int y = -3; y <= 3; ++y)
+      for (int z = -3; z <= 3; ++z)
+        grid.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+  KdTree tree;
+  tree.build(grid);
+  KeptNeighbours<5> kept;
+  std::vector<int> idx, want_idx;
+  std::vector<float> d2, want_d2;
+  // Off the symmetry plane x = 0, (1, 0, 0) is the 4th and (-1, 0, 0) the 5th; on it they tie.
+  ASSERT_EQ(kept.find(tree, grid, {0.001f, 0.2f, 0.1f}, 100.0f, idx, d2), 5);
+  ASSERT_EQ(kept.find(tree, grid, {0.0f, 0.2f, 0.1f}, 100.0f, idx, d2), 5);
+  EXPECT_TRUE(kept.reused());
+  tree.knnWithin({0.0f, 0.2f, 0.1f}, 5, 100.0f, want_idx, want_d2);
+  EXPECT_EQ(d2[3], d2[4]);
+  EXPECT_EQ(idx, want_idx);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Feature registration and the k-d tree under it, on synthetic feature clouds with known answers.
+// Feature registration on synthetic feature clouds with known answers.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -13,35 +13,6 @@
 
 namespace slamroute::evaluate {
 namespace {
-
-TEST(KdTree, NearestNeighboursEqualABruteForceSearch) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> u(-20.0f, 20.0f);
-  Cloud pts(2000);
-  for (auto& p : pts) p = Eigen::Vector3f(u(rng), u(rng), 0.1f * u(rng));
-  KdTree tree;
-  tree.build(pts);
-  std::vector<int> idx;
-  std::vector<float> d2;
-  for (int q = 0; q < 50; ++q) {
-    const Eigen::Vector3f query(u(rng), u(rng), 0.0f);
-    ASSERT_EQ(tree.knn(query, 5, idx, d2), 5);
-    std::vector<float> all;
-    for (const auto& p : pts) all.push_back((p - query).squaredNorm());
-    std::sort(all.begin(), all.end());
-    for (int i = 0; i < 5; ++i) {
-      EXPECT_FLOAT_EQ(d2[static_cast<std::size_t>(i)], all[static_cast<std::size_t>(i)]);
-      EXPECT_FLOAT_EQ(
-          (pts[static_cast<std::size_t>(idx[static_cast<std::size_t>(i)])] - query).squaredNorm(),
-          all[static_cast<std::size_t>(i)]);
-    }
-  }
-  KdTree empty;
-  empty.build({});
-  EXPECT_EQ(empty.knn(Eigen::Vector3f::Zero(), 5, idx, d2), 0);
-  EXPECT_EQ(tree.knn(Eigen::Vector3f::Zero(), 5000, idx, d2),
-            2000);  // asks for more than there are
-}
 
 /// A street corner as features: vertical edges (building corners, poles) and planar points on
 /// the ground and two facades at right angles.

@@ -1,6 +1,6 @@
 #pragma once
-// Nearest-neighbour search over a point cloud (nanoflann behind a pimpl, so the header stays
-// light).
+// Exact nearest-neighbour search over a point cloud: a k-d tree of our own (src/KdTree.cpp says
+// why not nanoflann's), behind a pimpl so the header stays light.
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
@@ -15,7 +15,8 @@ class KdTree {
   KdTree& operator=(KdTree&&) noexcept;
   void build(const std::vector<Eigen::Vector3f>& points);
   std::size_t size() const { return n_; }
-  /// k nearest neighbours of q; fills idx / sq_dist (ascending); returns how many were found.
+  /// k nearest neighbours of q; fills idx / sq_dist (ascending; at equal distances the lower
+  /// index first, so the answer does not depend on the tree's shape); returns how many.
   int knn(const Eigen::Vector3f& q, int k, std::vector<int>& idx,
           std::vector<float>& sq_dist) const;
   /// The same, among the points at most sqrt(max_sq_dist) from q: the same neighbours as knn
