@@ -62,6 +62,7 @@ std::vector<std::pair<float, int>> bruteForce(const Points& pts, const Eigen::Ve
 std::vector<std::pair<float, int>> zipped(const std::vector<float>& d2,
                                           const std::vector<int>& idx) {
   std::vector<std::pair<float, int>> out;
+  EXPECT_EQ(d2.size(), idx.size());
   for (std::size_t i = 0; i < idx.size(); ++i) out.emplace_back(d2.at(i), idx[i]);
   return out;
 }
@@ -83,13 +84,14 @@ TEST_P(KdTreeLayout, NearestNeighboursEqualABruteForceSearch) {
                                         : Eigen::Vector3f(u(rng), u(rng), u(rng));
     for (const int k : {1, 5, 12}) {
       const auto want = bruteForce(pts, query, k, 1e30f);
-      tree.knn(query, k, idx, d2);
+      ASSERT_EQ(tree.knn(query, k, idx, d2), static_cast<int>(want.size()));
       EXPECT_EQ(zipped(d2, idx), want);
       // Within a bound: the same neighbours as far as they lie within it, a point at exactly
       // the bound kept.
       const float bound = want[want.size() / 2].first;
-      tree.knnWithin(query, k, bound, idx, d2);
-      EXPECT_EQ(zipped(d2, idx), bruteForce(pts, query, k, bound));
+      const auto within = bruteForce(pts, query, k, bound);
+      ASSERT_EQ(tree.knnWithin(query, k, bound, idx, d2), static_cast<int>(within.size()));
+      EXPECT_EQ(zipped(d2, idx), within);
     }
   }
 }
