@@ -143,7 +143,9 @@ Split KdTree::Impl::split(std::uint32_t first, std::uint32_t last, const Box& ce
   Split s;
   float spread = -1.0f, lo = 0.0f, hi = 0.0f;
   for (int d = 0; d < 3; ++d) {
-    if (!(side[d] > (1.0f - 1e-5f) * widest) && !(d == 0 && widest <= 0.0f)) continue;
+    // All points in one place (no side has length): the first axis, for a split in the middle.
+    const bool among_widest = widest > 0.0f ? side[d] > (1.0f - 1e-5f) * widest : d == 0;
+    if (!among_widest) continue;
     float mn = entries[first].p[d], mx = mn;
     for (std::uint32_t i = first + 1; i < last; ++i) {
       mn = std::min(mn, entries[i].p[d]);
@@ -172,12 +174,8 @@ void KdTree::Impl::search(std::uint32_t node, const Eigen::Vector3f& q, Eigen::V
                           Best& best) const {
   const Node& n = nodes[node];
   if (n.dim < 0) {
-    for (std::uint32_t i = n.a; i < n.b; ++i) {
-      const Eigen::Vector3f& p = entries[i].p;
-      float d2 = 0.0f;
-      for (int d = 0; d < 3; ++d) d2 += squared(q[d] - p[d]);
-      best.add(d2, entries[i].index);
-    }
+    for (std::uint32_t i = n.a; i < n.b; ++i)
+      best.add(treeSqDist(q, entries[i].p), entries[i].index);
     return;
   }
   const float v = q[n.dim];

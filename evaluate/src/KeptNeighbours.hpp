@@ -16,17 +16,6 @@
 
 namespace slamroute::evaluate {
 
-/// Squared distance as KdTree forms it (float, x + y + z in that order), so neighbours ordered
-/// here are ordered as the tree orders them.
-inline float treeSqDist(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-  float r = 0;
-  for (int d = 0; d < 3; ++d) {
-    const float diff = a[d] - b[d];
-    r += diff * diff;
-  }
-  return r;
-}
-
 template <int K>
 class KeptNeighbours {
  public:

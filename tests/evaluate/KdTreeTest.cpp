@@ -38,22 +38,13 @@ Points layout(const std::string& name) {
   return pts;
 }
 
-/// Squared distance summed axis by axis as the tree sums it (Eigen's squaredNorm may sum in
-/// another order and differ in the last bit).
-float squaredDistance(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-  float d2 = 0.0f;
-  for (int d = 0; d < 3; ++d) d2 += (a[d] - b[d]) * (a[d] - b[d]);
-  return d2;
-}
-
 /// The k nearest within the bound (squared distance and index), by sorting all of them: at
 /// equal distances the lower index first.
 std::vector<std::pair<float, int>> bruteForce(const Points& pts, const Eigen::Vector3f& q, int k,
                                               float bound) {
   std::vector<std::pair<float, int>> all;
   for (std::size_t i = 0; i < pts.size(); ++i)
-    if (float d2 = squaredDistance(pts[i], q); d2 <= bound)
-      all.emplace_back(d2, static_cast<int>(i));
+    if (float d2 = treeSqDist(pts[i], q); d2 <= bound) all.emplace_back(d2, static_cast<int>(i));
   std::sort(all.begin(), all.end());
   all.resize(std::min(all.size(), static_cast<std::size_t>(k)));
   return all;

@@ -7,6 +7,17 @@
 
 namespace slamroute::evaluate {
 
+/// The tree's squared distance (float, x + y + z in that order): whatever orders neighbours as
+/// the tree does must form it the same way, to the last bit.
+inline float treeSqDist(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  float r = 0;
+  for (int d = 0; d < 3; ++d) {
+    const float diff = a[d] - b[d];
+    r += diff * diff;
+  }
+  return r;
+}
+
 class KdTree {
  public:
   KdTree();
