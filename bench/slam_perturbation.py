@@ -26,9 +26,10 @@ PARAMS = [
     ("loop", "graph_pitch_bias_sigma_deg"),
 ]
 # Those that act without wheel odometry (the odometry prior and slacks do not), plus the motion
-# model's turn figures that only act then.
+# model's turn figures and the constant velocity's yaw prior that only act then.
 LIDAR_ONLY = [
     ("odometry", "imu_tilt_weight"), ("odometry", "failed_turn_decay"), ("odometry", "max_yaw_accel_deg_s2"),
+    ("odometry", "velocity_prior_yaw_sigma_deg"), ("odometry", "velocity_prior_yaw_fade_info"),
     ("mapping", "huber_m"), ("mapping", "plane_max_dev_m"), ("loop", "graph_odom_sigma_m"),
     ("loop", "graph_loop_sigma_m"), ("loop", "fitness_m2"),
 ]

@@ -62,6 +62,8 @@ void OdometryConfig::validate() const {
   requireNonNegative("prior_along_fade_info", prior_along_fade_info);
   requireNonNegative("velocity_prior_along_sigma_m", velocity_prior_along_sigma_m);
   requireNonNegative("velocity_prior_fade_info", velocity_prior_fade_info);
+  requireNonNegative("velocity_prior_yaw_sigma_deg", velocity_prior_yaw_sigma_deg);
+  requireNonNegative("velocity_prior_yaw_fade_info", velocity_prior_yaw_fade_info);
   requireNonNegative("wheel_scale_stretch_m", wheel_scale_stretch_m);
   requireRange("wheel_scale_max", wheel_scale_max, 0.0, 0.5);
   requireRange("wheel_scale_stretches", wheel_scale_stretches, 1, kMaxCount);

@@ -231,21 +231,30 @@ TEST(MotionModel, TheOdometryPriorWeighsYawAndAFadingAlongPriorByDefault) {
   EXPECT_EQ(o.prior_weight(4), 0.0);      // sideways: none, a car slips in turns
 }
 
-TEST(MotionModel, WithoutOdometryTheConstantVelocityIsAFadingPriorAlongTheHeadingOnly) {
+TEST(MotionModel, WithoutOdometryTheConstantVelocityIsAFadingPriorAlongTheHeadingAndInYaw) {
   Config cfg;
   cfg.odometry.velocity_prior_along_sigma_m = 0.01;
   slam::MotionModel m(cfg, Pose3::Identity());
   m.setInitialMotion(forward(1.5), 0.1);
   m.recordFrame(0.0, Pose3::Identity());
   AlignOptions o;
-  const slam::Prediction p = m.predictStep(0.2);  // stride 2: the sigma doubles
+  const slam::Prediction p = m.predictStep(0.2);  // stride 2: the sigmas double
   m.addMotionPrior(o, p);
   EXPECT_NEAR(o.prior.translation().x(), 3.0, 1e-12);  // towards the prediction
-  EXPECT_NEAR(o.prior_weight(3), std::pow(cfg.odometry.prior_registration_sigma_m / 0.02, 2), 1e-9);
+  const double r = cfg.odometry.prior_registration_sigma_m;
+  EXPECT_NEAR(o.prior_weight(3), std::pow(r / 0.02, 2), 1e-9);
   EXPECT_EQ(o.prior_fade_info(3), cfg.odometry.velocity_prior_fade_info);
-  o.prior_weight(3) = 0.0;
-  EXPECT_EQ(o.prior_weight.norm(), 0.0);  // no yaw, sideways or vertical prior
+  const double yaw_sigma = 2 * cfg.odometry.velocity_prior_yaw_sigma_deg * std::numbers::pi / 180;
+  EXPECT_NEAR(o.prior_weight(2), std::pow(r / yaw_sigma, 2), 1e-6);  // on by default
+  EXPECT_EQ(o.prior_fade_info(2), cfg.odometry.velocity_prior_yaw_fade_info);
+  o.prior_weight(2) = o.prior_weight(3) = 0.0;
+  EXPECT_EQ(o.prior_weight.norm(), 0.0);  // no sideways, vertical, roll or pitch prior
   cfg.odometry.velocity_prior_along_sigma_m = 0.0;
+  AlignOptions yaw_only;
+  m.addMotionPrior(yaw_only, p);
+  EXPECT_EQ(yaw_only.prior_weight(3), 0.0);
+  EXPECT_GT(yaw_only.prior_weight(2), 0.0);
+  cfg.odometry.velocity_prior_yaw_sigma_deg = 0.0;
   AlignOptions off;
   m.addMotionPrior(off, p);
   EXPECT_EQ(off.prior_weight.norm(), 0.0);

@@ -1,6 +1,7 @@
 // Feature registration on synthetic feature clouds with known answers.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <utility>
 
 #include "SyntheticScene.hpp"
+#include "slamroute/evaluate/Config.hpp"
 #include "slamroute/evaluate/Registration.hpp"
 
 namespace slamroute::evaluate {
@@ -146,6 +148,74 @@ TEST(AlignFeaturesPrior, AFadedPriorActsWhereTheFeaturesAreWeakOnly) {
   const AlignResult pulled = alignFeatures(held, moved(edges, T_true.inverse()),
                                            moved(planes, T_true.inverse()), Pose3::Identity(), opt);
   EXPECT_GT(pulled.T_target_source.translation().x() - T_true.translation().x(), 0.05);
+}
+
+/// A round plaza: the ground and a circular wall of radius 12 m around the origin. Turning about
+/// the centre moves every point along its own surface, so nothing fixes the yaw.
+FeatureMap plaza(Cloud& planes) {
+  for (double x = -11; x <= 11; x += 0.4)
+    for (double y = -11; y <= 11; y += 0.4)
+      if (x * x + y * y < 121)
+        planes.emplace_back(static_cast<float>(x), static_cast<float>(y), 0.0f);
+  for (int k = 0; k < 360; ++k)
+    for (double z = 0.2; z < 6; z += 0.4) {
+      const double a = k * std::numbers::pi / 180.0;
+      planes.emplace_back(static_cast<float>(12 * std::cos(a)),
+                          static_cast<float>(12 * std::sin(a)), static_cast<float>(z));
+    }
+  FeatureMap map;
+  map.build({}, planes);
+  return map;
+}
+
+Pose3 turned(double yaw_deg, const Vec3& t) {
+  Pose3 T = Pose3::Identity();
+  T.linear() =
+      Eigen::AngleAxisd(yaw_deg * std::numbers::pi / 180.0, Vec3::UnitZ()).toRotationMatrix();
+  T.translation() = t;
+  return T;
+}
+
+double yawDeg(const Pose3& T) {
+  return std::atan2(T.linear()(1, 0), T.linear()(0, 0)) * 180.0 / std::numbers::pi;
+}
+
+TEST(AlignFeaturesPrior, AFadedYawPriorHoldsTheTurnWhereTheFeaturesLeaveItOpen) {
+  // The LiDAR-only default: the constant velocity's yaw, 0.1 deg per 0.1 s against 0.05 m.
+  const OdometryConfig dflt;
+  AlignOptions opt;
+  opt.iterations = 30;
+  opt.prior_weight(2) = std::pow(dflt.prior_registration_sigma_m /
+                                     (dflt.velocity_prior_yaw_sigma_deg * std::numbers::pi / 180.0),
+                                 2);
+  opt.prior_fade_info(2) = dflt.velocity_prior_yaw_fade_info;
+  // In the plaza the prior decides the yaw (1 deg), the wall still the position.
+  Cloud plaza_planes;
+  const FeatureMap round = plaza(plaza_planes);
+  const Pose3 T_true = turned(3.0, Vec3(0.3, -0.2, 0.0));
+  opt.prior = turned(1.0, T_true.translation());
+  const AlignResult open =
+      alignFeatures(round, {}, moved(plaza_planes, T_true.inverse()), Pose3::Identity(), opt);
+  EXPECT_NEAR(yawDeg(open.T_target_source), 1.0, 0.05);
+  EXPECT_LT((open.T_target_source.translation() - T_true.translation()).norm(), 0.02);
+  // At the corner the facades hold the yaw: the same prior, 2 deg off, fades out (the result of
+  // no prior at all); unfaded it would pull the yaw towards 1 deg.
+  Cloud edges, planes;
+  const FeatureMap held = corner(edges, planes);
+  const Cloud src_edges = moved(edges, T_true.inverse()),
+              src_planes = moved(planes, T_true.inverse());
+  AlignOptions none = opt;
+  none.prior_weight.setZero();
+  const Pose3 free =
+      alignFeatures(held, src_edges, src_planes, Pose3::Identity(), none).T_target_source;
+  const Pose3 faded =
+      alignFeatures(held, src_edges, src_planes, Pose3::Identity(), opt).T_target_source;
+  EXPECT_NEAR(yawDeg(free), 3.0, 0.01);
+  EXPECT_NEAR(yawDeg(faded), yawDeg(free), 1e-6);
+  opt.prior_fade_info.setZero();
+  const Pose3 pulled =
+      alignFeatures(held, src_edges, src_planes, Pose3::Identity(), opt).T_target_source;
+  EXPECT_LT(yawDeg(pulled), yawDeg(free) - 0.002);
 }
 
 /// The corridor with vertical lines (poles) every 7 m on both sides, 1 m in front of the walls.

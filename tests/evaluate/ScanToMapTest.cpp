@@ -27,8 +27,9 @@ TEST(ScanToMap, WithoutOdometryTheRegistrationHasItsOwnIterationsEdgeWeightAndPr
   EXPECT_FALSE((a.prior_weight.array() > 0).any());  // no velocity yet
   lidar_only.setInitialMotion(Pose3::Identity(), 0.1);
   const AlignOptions v = s2m.options(lidar_only, step);
-  EXPECT_GT(v.prior_weight(3), 0.0);  // along the heading only
-  EXPECT_EQ((v.prior_weight.array() > 0).count(), 1);
+  EXPECT_GT(v.prior_weight(3), 0.0);  // along the heading and in yaw only
+  EXPECT_GT(v.prior_weight(2), 0.0);
+  EXPECT_EQ((v.prior_weight.array() > 0).count(), 2);
   const AlignOptions b = s2m.options(wheels, step);
   EXPECT_EQ(b.iterations, 7);
   EXPECT_DOUBLE_EQ(b.edge_weight, 0.2);

@@ -128,7 +128,9 @@ bool MotionModel::plausibleStep(const Pose3& pred, const Pose3& result,
 
 void MotionModel::addMotionPrior(AlignOptions& o, const Prediction& step) const {
   const OdometryConfig& c = cfg_.odometry;
-  if (odometry_.empty() && !(have_velocity_ && c.velocity_prior_along_sigma_m > 0)) return;
+  const bool velocity_prior =
+      c.velocity_prior_along_sigma_m > 0 || c.velocity_prior_yaw_sigma_deg > 0;
+  if (odometry_.empty() && !(have_velocity_ && velocity_prior)) return;
   o.prior = step.T_world;
   // Sigmas grow with the frame interval like the slack; weight = (LiDAR sigma / prior sigma)^2.
   const auto w = [&](double sigma) {
@@ -138,6 +140,8 @@ void MotionModel::addMotionPrior(AlignOptions& o, const Prediction& step) const 
   if (odometry_.empty()) {
     o.prior_weight(3) = w(c.velocity_prior_along_sigma_m);
     o.prior_fade_info(3) = c.velocity_prior_fade_info;
+    o.prior_weight(2) = w(c.velocity_prior_yaw_sigma_deg * std::numbers::pi / 180.0);
+    o.prior_fade_info(2) = c.velocity_prior_yaw_fade_info;
     return;
   }
   o.prior_fade_info(3) = c.prior_along_fade_info;

@@ -49,8 +49,8 @@ class MotionModel {
   /// OdometryConfig::slack_since_fix_max_s).
   bool plausibleStep(const Pose3& pred, const Pose3& result, const Prediction& step) const;
   /// Prior of a scan-to-map towards the prediction: the odometry's (along the heading, yaw, x / y),
-  /// or without odometry the constant velocity's along the heading; both fade out where the
-  /// scan holds that direction itself.
+  /// or without odometry the constant velocity's (along the heading, yaw); the along priors and
+  /// the constant velocity's yaw fade out where the scan holds that direction itself.
   void addMotionPrior(AlignOptions& o, const Prediction& step) const;
   /// Roll and pitch moved towards the IMU's at time t (OdometryConfig::imu_tilt_weight), its
   /// pitch less the bias measured at loop closures.

@@ -39,7 +39,10 @@ std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const Prep
   const RelocaliseConfig& c = cfg.relocalise;
   const int cap = std::max(50, c.max_points);
   const Cloud edges = capped(scan.src_edges, cap / 4), planes = capped(scan.src_planes, cap);
-  AlignOptions coarse = fine;
+  // The search is for where the prediction went wrong: no prior may pull a hypothesis back to it.
+  AlignOptions unpulled = fine;
+  unpulled.prior_weight.setZero();
+  AlignOptions coarse = unpulled;
   coarse.degenerate_eig = 0;
   coarse.iterations = c.iterations;
   const std::vector<Pose3> hyp = hypotheses(pred, have_velocity, c.yaw_step_deg);
@@ -58,7 +61,7 @@ std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const Prep
   // Another hypothesis must clearly beat the prediction; the prediction's own coarse result
   // (wider basin than the failed registration) must beat that registration's inliers.
   if (best != 0 && best_inl < 1.5 * inl_ref + 20) return std::nullopt;
-  const AlignResult m = alignFeatures(local_map, scan.src_edges, scan.src_planes, best_T, fine);
+  const AlignResult m = alignFeatures(local_map, scan.src_edges, scan.src_planes, best_T, unpulled);
   if (!enoughMatches(m, cfg.mapping)) return std::nullopt;
   if (best == 0 && m.inliers < 1.5 * failed_inliers + 20) return std::nullopt;
   logDebug("relocalised: inliers " + std::to_string(best_inl) + " vs " + std::to_string(inl_ref));

@@ -17,7 +17,8 @@ struct Relocalisation {
 };
 
 /// The recovered pose, or nullopt when no hypothesis clearly beats the failed registration
-/// (`failed_inliers`) and the prediction. `fine`: the scan-to-map's options.
+/// (`failed_inliers`) and the prediction. `fine`: the scan-to-map's options, used without their
+/// motion prior.
 std::optional<Relocalisation> relocalise(const FeatureMap& local_map, const PreparedScan& scan,
                                          const Pose3& pred, bool have_velocity,
                                          const AlignOptions& fine, int failed_inliers,

@@ -115,6 +115,15 @@ struct OdometryConfig {
   /// bench/RESULTS.md "The ruler"). 0 = off [m]
   double velocity_prior_along_sigma_m = 0.0;
   double velocity_prior_fade_info = 0.03;
+  /// Without wheel odometry the constant-velocity prediction's yaw is a prior as well, with this
+  /// sigma per 0.1 s, fading out as the scan's own yaw information (per residual) rises to
+  /// velocity_prior_yaw_fade_info. Where a turn ends onto a street that holds little in yaw, one
+  /// registration can otherwise turn the car by degrees where it turns none: route1k's VLP-16
+  /// turned 5 deg at the end of the turn onto its open street, where the information is 1.4-10
+  /// for 1.6 s (below 15 nowhere else; half of all scans above 99); its 64-channel scans never
+  /// fall below 15. bench/RESULTS.md "The ruler". 0 = off [deg]
+  double velocity_prior_yaw_sigma_deg = 0.1;
+  double velocity_prior_yaw_fade_info = 15.0;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
   /// 0.05 deg/s); a drive that states its gyro's figures (odometry.yaml) scales it by
@@ -443,6 +452,12 @@ void visitFields(V& v, OdometryConfig& c) {
   v.field("velocity_prior_along_sigma_m", c.velocity_prior_along_sigma_m,
           "without wheel odometry: prior towards the constant-velocity prediction along the "
           "heading, sigma per 0.1 s; 0 = off [m]");
+  v.field("velocity_prior_yaw_sigma_deg", c.velocity_prior_yaw_sigma_deg,
+          "without wheel odometry: prior towards the constant-velocity prediction's yaw, sigma "
+          "per 0.1 s; 0 = off [deg]");
+  v.field("velocity_prior_yaw_fade_info", c.velocity_prior_yaw_fade_info,
+          "... fading out as the scan's own yaw information (per residual) rises to this; 0 = "
+          "always on");
   v.field("velocity_prior_fade_info", c.velocity_prior_fade_info,
           "... fading out as the scan's own information along the heading (per residual) rises "
           "to this; 0 = always on");
