@@ -120,10 +120,11 @@ struct OdometryConfig {
   /// velocity_prior_yaw_fade_info. Where a turn ends onto a street that holds little in yaw, one
   /// registration can otherwise turn the car by degrees where it turns none: route1k's VLP-16
   /// turned 5 deg at the end of the turn onto its open street, where the information is 1.4-10
-  /// for 1.6 s (below 15 nowhere else; half of all scans above 99); its 64-channel scans never
-  /// fall below 15. bench/RESULTS.md "The ruler". 0 = off [deg]
+  /// for 1.6 s (17-277 on all other scans, half above 99). A fade of 15 held that turn as well;
+  /// 30 also held the test grid's open streets better (bench/RESULTS.md "The ruler"). The
+  /// 64-channel scans of route1k hardly ever come below it. 0 = off [deg]
   double velocity_prior_yaw_sigma_deg = 0.1;
-  double velocity_prior_yaw_fade_info = 15.0;
+  double velocity_prior_yaw_fade_info = 30.0;
   double prior_sigma_deg = 0.02;
   /// prior_sigma_deg is tuned for the simulated default gyro (white noise 0.1 deg/s, bias
   /// 0.05 deg/s); a drive that states its gyro's figures (odometry.yaml) scales it by
