@@ -191,11 +191,11 @@ TEST(AlignFeaturesPrior, AFadedYawPriorHoldsTheTurnWhereTheFeaturesLeaveItOpen) 
   opt.prior_fade_info(2) = dflt.velocity_prior_yaw_fade_info;
   // In the plaza the prior decides the yaw (1 deg), the wall still the position.
   Cloud plaza_planes;
-  const FeatureMap round = plaza(plaza_planes);
+  const FeatureMap plaza_map = plaza(plaza_planes);
   const Pose3 T_true = turned(3.0, Vec3(0.3, -0.2, 0.0));
   opt.prior = turned(1.0, T_true.translation());
   const AlignResult open =
-      alignFeatures(round, {}, moved(plaza_planes, T_true.inverse()), Pose3::Identity(), opt);
+      alignFeatures(plaza_map, {}, moved(plaza_planes, T_true.inverse()), Pose3::Identity(), opt);
   EXPECT_NEAR(yawDeg(open.T_target_source), 1.0, 0.05);
   EXPECT_LT((open.T_target_source.translation() - T_true.translation()).norm(), 0.02);
   // At the corner the facades hold the yaw: the same prior, 2 deg off, fades out (the result of
