@@ -10,9 +10,13 @@ bound. Directed coverage counts the net's part a car can drive round legally (tu
 a last table gives the junction-level part (turns ignored) and how many of its edges no legal
 drive enters and leaves again. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
 import json
+import os
 import statistics
 import sys
 from pathlib import Path
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 
 
 def load(path):
@@ -111,6 +115,9 @@ def junction_part(out, seeds):
 
 
 if __name__ == "__main__":
+    exit_on_help(__doc__)
+    if len(sys.argv) < 3:
+        sys.exit("usage: bench/coverage_ate_table.py OUT_DIR SEED [SEED ...]")
     main()
     diagnostics(Path(sys.argv[1]), sys.argv[2:])
     junction_part(Path(sys.argv[1]), sys.argv[2:])

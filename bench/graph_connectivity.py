@@ -1,7 +1,20 @@
 #!/usr/bin/env python3
-# Largest strongly connected part of a graph.json under its travel directions (which nodes a
-# planner can route between). Usage: bench/graph_connectivity.py GRAPH.json
-import json,collections,sys
+"""Largest strongly connected part of a graph.json under its travel directions (which nodes a
+planner can route between). Usage: bench/graph_connectivity.py GRAPH.json
+"""
+import collections
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
+
+exit_on_help(__doc__)
+if len(sys.argv) != 2:
+    sys.exit("usage: bench/graph_connectivity.py GRAPH.json")
+
+
 def reach(s,adj):
     seen={s};st=[s]
     while st:

@@ -1,14 +1,21 @@
 #!/usr/bin/env python3
-# The gyro bias of a drive, measured against its ground truth, beside what `slamroute evaluate`
-# estimated from the drive's stops (metrics.json gyro_bias_deg_s). True bias = mean of (gyro
-# yaw rate - ground-truth yaw rate over the same 0.1 s interval) over the whole drive. Also the
-# naive standstill mean (wheel speed < 0.15 m/s, no margin), which the ground truth's heading
-# turning in the last 0.5 s of a stop spoils. Usage: bench/gyro_bias_check.py DRIVE_DIR
-# [EVAL_DIR]. Prints Markdown. Python 3 standard library only.
+"""The gyro bias of a drive, measured against its ground truth, beside what `slamroute evaluate`
+estimated from the drive's stops (metrics.json gyro_bias_deg_s). True bias = mean of (gyro
+yaw rate - ground-truth yaw rate over the same 0.1 s interval) over the whole drive. Also the
+naive standstill mean (wheel speed < 0.15 m/s, no margin), which the ground truth's heading
+turning in the last 0.5 s of a stop spoils. Usage: bench/gyro_bias_check.py DRIVE_DIR
+[EVAL_DIR]. Prints Markdown. Python 3 standard library only.
+"""
 import bisect, csv, json, math, os, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 
 
 def main():
+    exit_on_help(__doc__)
+    if len(sys.argv) not in (2, 3):
+        sys.exit('usage: bench/gyro_bias_check.py DRIVE_DIR [EVAL_DIR]')
     drive = sys.argv[1]
     ev = sys.argv[2] if len(sys.argv) > 2 else None
     gt = [list(map(float, l.split())) for l in open(os.path.join(drive, 'groundtruth.tum'))

@@ -15,6 +15,9 @@ import sys
 import xml.etree.ElementTree as ET
 from collections import defaultdict
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
+
 RADIUS_M = 4.0
 
 
@@ -35,6 +38,7 @@ def middle(shape):
 
 
 def main():
+    exit_on_help(__doc__)
     if len(sys.argv) < 4:
         sys.exit(__doc__)
     net, survey, ids = sys.argv[1], sys.argv[2], set(sys.argv[3:])

@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
-# Per drive of an `experiment paper` / `run` folder: ATE, RPE, loop closures and how many of
-# them are false, largest raw error, drift per street kind. A closure is false when the relative
-# pose the ICP measured between the two keyframes is more than 2 m off the ground truth's (for
-# metrics.json files without the measured pose: when the keyframes are > 8 m apart in the ground
-# truth). Usage: bench/loop_closure_check.py OUT_DIR (with drives/ and eval/), or
-# bench/loop_closure_check.py DRIVE_DIR EVAL_DIR. Prints Markdown. Python 3 standard library only.
+"""Per drive of an `experiment paper` / `run` folder: ATE, RPE, loop closures and how many of
+them are false, largest raw error, drift per street kind. A closure is false when the relative
+pose the ICP measured between the two keyframes is more than 2 m off the ground truth's (for
+metrics.json files without the measured pose: when the keyframes are > 8 m apart in the ground
+truth). Usage: bench/loop_closure_check.py OUT_DIR (with drives/ and eval/), or
+bench/loop_closure_check.py DRIVE_DIR EVAL_DIR. Prints Markdown. Python 3 standard library only.
+"""
 import bisect, glob, json, math, os, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 
 
 def tum(p):
@@ -75,6 +79,9 @@ def check(dr, ev, name):
 
 
 def main():
+    exit_on_help(__doc__)
+    if len(sys.argv) not in (2, 3):
+        sys.exit('usage: bench/loop_closure_check.py OUT_DIR | DRIVE_DIR EVAL_DIR')
     rows = []
     if len(sys.argv) == 3:
         rows.append(check(sys.argv[1], sys.argv[2], os.path.basename(sys.argv[2].rstrip('/'))))

@@ -1,14 +1,20 @@
 #!/usr/bin/env python3
-# Offline test of a loop-closure gate (docs/NOTES.md "Loop closures confirmed by a second
-# match"): for every accepted closure of the drives in an `experiment paper` / `run` folder, is it
-# false (its measured relative pose > 2 m off the ground truth's, as bench/loop_closure_check.py
-# counts) and does another closure within 15 s repeat its correction magnitude within 0.3 m?
-# Prints how many true and false closures such a neighbour would keep.
-# Usage: bench/loop_closure_consistency.py OUT_DIR [OUT_DIR ...]. Python 3 standard library only.
+"""Offline test of a loop-closure gate (docs/NOTES.md "Loop closures confirmed by a second
+match"): for every accepted closure of the drives in an `experiment paper` / `run` folder, is it
+false (its measured relative pose > 2 m off the ground truth's, as bench/loop_closure_check.py
+counts) and does another closure within 15 s repeat its correction magnitude within 0.3 m?
+Prints how many true and false closures such a neighbour would keep.
+Usage: bench/loop_closure_consistency.py OUT_DIR [OUT_DIR ...]. Python 3 standard library only.
+"""
 import glob, json, math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from loop_closure_check import ground_truth_at, relative  # noqa: E402
+from script_help import exit_on_help  # noqa: E402
+
+exit_on_help(__doc__)
+if len(sys.argv) < 2:
+    sys.exit('usage: bench/loop_closure_consistency.py OUT_DIR [OUT_DIR ...]')
 
 true_rows, false_rows = [], []
 for root in sys.argv[1:]:

@@ -28,6 +28,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 sys.dont_write_bytecode = True  # keep networks/ free of __pycache__
 from check import largest_scc  # noqa: E402  (iterative Tarjan, shared with the net checks)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
+
 
 def net_parts(path):
     """Passenger edges of the junction-level largest SCC, and of the turn-level one."""
@@ -59,6 +62,7 @@ def planning_edges(g):
 
 
 def main():
+    exit_on_help(__doc__)
     if len(sys.argv) < 4:
         sys.exit(__doc__)
     in_j, in_t, length = net_parts(sys.argv[1])

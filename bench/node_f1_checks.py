@@ -14,9 +14,13 @@ Standard library only. The truth set is read back from the graph (matched + miss
 """
 import json
 import math
+import os
 import sys
 import xml.etree.ElementTree as ET
 from collections import defaultdict
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 
 MATCH_RADIUS_M = 15.0  # roadgraph.sumo.match_radius_m default
 
@@ -79,6 +83,7 @@ def diagnose(graph, val, pos):
 
 
 def main(argv):
+    exit_on_help(__doc__)
     args = [a for a in argv if a != "--diagnose"]
     if len(args) < 2:
         sys.exit(__doc__)

@@ -15,6 +15,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
+
 GRID = {
     "inner_radius_m": [8, 9, 10],
     "outer_radius_m": [20, 22, 25],
@@ -25,6 +28,7 @@ GRID = {
 
 
 def main():
+    exit_on_help(__doc__)
     if len(sys.argv) != 7:
         sys.exit(__doc__)
     build, surveys, name, net, seeds, out_path = sys.argv[1:]

@@ -12,8 +12,12 @@ Needs numpy (/usr/bin/python3 on Debian: python3-numpy).
 """
 import csv
 import math
+import os
 import sys
 from collections import defaultdict
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 
 import numpy as np
 
@@ -124,6 +128,9 @@ def directions(traces):
 
 
 def main():
+    exit_on_help(__doc__)
+    if len(sys.argv) != 2:
+        sys.exit("usage: bench/roundabout_rings.py SURVEY/traces.csv")
     traces = read(sys.argv[1])
     cands = rings(circling_stretches(traces))
     P, D = directions(traces)

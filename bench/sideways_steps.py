@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-# Steps of a drive's ground truth that move across the vehicle's heading (docs/NOTES.md,
-# "Sideways jumps in SUMO's junctions"): no car crabs, and no wheel odometry or gyro would see it
-# if one did, so a recorded path should have none. Per drive folder: how many 0.1 s steps move
-# faster than --speed (m/s, default 3) across the heading halfway between their two poses, the
-# metres they move across in all, and the largest, with its time (and SUMO edge from
-# pose_edges.csv when the folder has one).
-# Usage: bench/sideways_steps.py [--speed V] DRIVE_DIR...
-# Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+"""Steps of a drive's ground truth that move across the vehicle's heading (docs/NOTES.md,
+"Sideways jumps in SUMO's junctions"): no car crabs, and no wheel odometry or gyro would see it
+if one did, so a recorded path should have none. Per drive folder: how many 0.1 s steps move
+faster than --speed (m/s, default 3) across the heading halfway between their two poses, the
+metres they move across in all, and the largest, with its time (and SUMO edge from
+pose_edges.csv when the folder has one).
+Usage: bench/sideways_steps.py [--speed V] DRIVE_DIR...
+Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+"""
 import csv
 import os
 import sys
@@ -15,10 +16,12 @@ import numpy as np
 from scipy.spatial.transform import Rotation as R
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 from tum import load_tum  # noqa: E402
 
 USAGE = 'usage: bench/sideways_steps.py [--speed V] DRIVE_DIR...'
 NAME = 'sideways_steps.py'
+exit_on_help(__doc__)
 args = sys.argv[1:]
 speed = 3.0
 if args[:1] == ['--speed']:

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
-# How long the estimate makes the straight stretches of a drive against the ground truth
-# (docs/NOTES.md "What the whole-city ATE is made of"): over windows of up to 2 s on which the
-# true heading turns less than 1 deg and the car moves more than 8 m, the sum of the estimate's
-# chords over the truth's, for north-south and east-west stretches and per street (stretches
-# grouped by their x (north-south) or y (east-west) rounded to 25 m; streets with >= 150 m shown),
-# and per direction the median of the windows' estimate chord less the true one (one bad
-# registration moves a sum over a few hundred metres; the median stays). A ratio below 1 is a
-# shortfall along the streets. Usage: bench/straight_chords.py DRIVE_DIR EVAL_DIR. Needs numpy and
-# scipy (Debian python3-numpy, python3-scipy).
+"""How long the estimate makes the straight stretches of a drive against the ground truth
+(docs/NOTES.md "What the whole-city ATE is made of"): over windows of up to 2 s on which the
+true heading turns less than 1 deg and the car moves more than 8 m, the sum of the estimate's
+chords over the truth's, for north-south and east-west stretches and per street (stretches
+grouped by their x (north-south) or y (east-west) rounded to 25 m; streets with >= 150 m shown),
+and per direction the median of the windows' estimate chord less the true one (one bad
+registration moves a sum over a few hundred metres; the median stays). A ratio below 1 is a
+shortfall along the streets. Usage: bench/straight_chords.py DRIVE_DIR EVAL_DIR. Needs numpy and
+scipy (Debian python3-numpy, python3-scipy).
+"""
 import os
 import signal
 import sys
@@ -17,6 +18,7 @@ import numpy as np
 from scipy.spatial.transform import Rotation as R
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 from tum import load_tum  # noqa: E402
 
 
@@ -44,6 +46,7 @@ def stretches(drive, ev):
 
 def main():
     signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `| head` ends it quietly
+    exit_on_help(__doc__)
     if len(sys.argv) != 3:
         sys.exit("usage: bench/straight_chords.py DRIVE_DIR EVAL_DIR")
     by_dir, by_street = defaultdict(lambda: [0.0, 0.0]), defaultdict(lambda: [0.0, 0.0])

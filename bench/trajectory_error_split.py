@@ -1,18 +1,19 @@
 #!/usr/bin/env python3
-# Where a drive's trajectory error lies (docs/NOTES.md "Corner features at grazing incidence"):
-# ATE RMSE after a rigid (Umeyama, no scale) alignment split into along-street, across-street and
-# height components (in the ground truth's heading), the ATE left after a fit with a scale
-# (Umeyama with scale: what a uniform shrink or stretch of the whole map accounts for), and the
-# per-scan relative-pose error summed separately over turns (|yaw rate| > 5 deg/s) and straight
-# stretches: a negative "along, straight" sum is a shortfall on the straights.
-# With --region X0,X1,Y0,Y1 (repeatable): the share of the poses and of the squared error inside
-# those boxes of the ground truth's x / y, the RMS inside and outside, and the ATE of the moving
-# poses alone (a long wait weighs the error where the car stands by the wait's length).
-# With --windows S: after those lines, where along the drive the rigid ATE is made, per window of
-# S seconds: its RMS, its share of the squared error and where the ground truth starts it, then
-# the window with the largest share (a false closure or a lost stretch shows up there).
-# Usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] DRIVE EVAL.
-# Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+"""Where a drive's trajectory error lies (docs/NOTES.md "Corner features at grazing incidence"):
+ATE RMSE after a rigid (Umeyama, no scale) alignment split into along-street, across-street and
+height components (in the ground truth's heading), the ATE left after a fit with a scale
+(Umeyama with scale: what a uniform shrink or stretch of the whole map accounts for), and the
+per-scan relative-pose error summed separately over turns (|yaw rate| > 5 deg/s) and straight
+stretches: a negative "along, straight" sum is a shortfall on the straights.
+With --region X0,X1,Y0,Y1 (repeatable): the share of the poses and of the squared error inside
+those boxes of the ground truth's x / y, the RMS inside and outside, and the ATE of the moving
+poses alone (a long wait weighs the error where the car stands by the wait's length).
+With --windows S: after those lines, where along the drive the rigid ATE is made, per window of
+S seconds: its RMS, its share of the squared error and where the ground truth starts it, then
+the window with the largest share (a false closure or a lost stretch shows up there).
+Usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] DRIVE EVAL.
+Needs numpy and scipy (Debian python3-numpy, python3-scipy).
+"""
 import os
 import sys
 
@@ -20,11 +21,13 @@ import numpy as np
 from scipy.spatial.transform import Rotation as R
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from script_help import exit_on_help  # noqa: E402
 from tum import load_tum  # noqa: E402
 
 USAGE = ('usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] '
          'DRIVE_DIR EVAL_DIR')
 NAME = 'trajectory_error_split.py'
+exit_on_help(__doc__)
 args = sys.argv[1:]
 window_s = None
 regions = []  # (x0, x1, y0, y1) in the ground truth's frame [m]

@@ -36,3 +36,23 @@ TEST(Scripts, TestScriptRunsCtestOnTheBuildFolder) {
   EXPECT_NE(ci.find("bash scripts/test.sh"), std::string::npos)
       << ".ci/run must call the README's test command";
 }
+
+// Every script under bench/ (a file with a #! line; the others are its shared modules) answers
+// --help with its description and exit 0, and a call without arguments with a usage line and a
+// non-zero exit, never a Python traceback.
+TEST(Scripts, EveryBenchScriptAnswersHelpAndACallWithoutArguments) {
+  int scripts = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(SLAMROUTE_SOURCE_DIR) / "bench")) {
+    if (entry.path().extension() != ".py" || readFile(entry.path()).rfind("#!", 0) != 0) continue;
+    ++scripts;
+    const std::string run = "/usr/bin/python3 " + entry.path().string();
+    const slamroute::test::CliResult help = slamroute::test::runCommand(run + " --help");
+    EXPECT_EQ(help.code, 0) << entry.path() << ": " << help.out;
+    EXPECT_NE(help.out.find("sage"), std::string::npos) << entry.path() << ": " << help.out;
+    const slamroute::test::CliResult bare = slamroute::test::runCommand(run);
+    EXPECT_NE(bare.code, 0) << entry.path() << ": " << bare.out;
+    EXPECT_NE(bare.out.find("sage"), std::string::npos) << entry.path() << ": " << bare.out;
+    EXPECT_EQ(bare.out.find("Traceback"), std::string::npos) << entry.path() << ": " << bare.out;
+  }
+  EXPECT_GE(scripts, 15);
+}
