@@ -2,6 +2,7 @@
 // scans, then ATE/RPE/per-edge/map metrics against the drive's ground truth.
 // `slamroute evaluate --kitti SEQ_DIR --out DIR2`: the same on a KITTI odometry sequence
 // (core/KittiSequence.hpp), against its poses.txt when it has one.
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -92,6 +93,7 @@ void printSummary(const evaluate::EvaluationResult& r, const std::string& out) {
   }
   const evaluate::TrajectorySummary& t = *r.trajectory;
   std::cout << "ATE rmse " << json(t.ate_rmse_m) << " m, RPE " << json(t.rpe_trans_pct)
+            << " %, end drift " << json(t.end_drift_pct.value_or(std::nan("")))
             << " %, loop closures " << loops << ", " << json(t.evaluated_length_m)
             << " m evaluated -> " << out << "\n";
 }

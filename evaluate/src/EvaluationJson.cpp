@@ -59,6 +59,7 @@ TrajectorySummary trajectoryFromJson(const json& j) {
   t.rpe_segment_count = j.at("rpe_segment_count").get<long long>();
   t.route_length_m = figure(j, "route_length_m");
   t.evaluated_length_m = figure(j, "evaluated_length_m");
+  if (j.contains("end_drift_pct")) t.end_drift_pct = figure(j, "end_drift_pct");
   const json& a = j.at("alignment_T_gt_est");
   const json& tr = a.at("t");
   t.alignment_t = Vec3(tr.at(0).get<double>(), tr.at(1).get<double>(), tr.at(2).get<double>());
@@ -201,6 +202,7 @@ json toJson(const TrajectorySummary& t) {
   j["rpe_segment_count"] = t.rpe_segment_count;
   j["route_length_m"] = t.route_length_m;
   j["evaluated_length_m"] = t.evaluated_length_m;
+  if (t.end_drift_pct) j["end_drift_pct"] = *t.end_drift_pct;
   const Vec3& a = t.alignment_t;
   const auto& q = t.alignment_q_xyzw;
   j["alignment_T_gt_est"] = {{"t", {a.x(), a.y(), a.z()}}, {"q_xyzw", {q[0], q[1], q[2], q[3]}}};

@@ -35,6 +35,7 @@ void addTrajectoryFigures(const TrajectorySummary& t, std::map<std::string, doub
   put(f, "rpe_segment_count", static_cast<double>(t.rpe_segment_count));
   put(f, "route_length_m", t.route_length_m);
   put(f, "evaluated_length_m", t.evaluated_length_m);
+  if (t.end_drift_pct) put(f, "end_drift_pct", *t.end_drift_pct);
 }
 
 void addSlamFigures(const EvaluationResult& r, std::map<std::string, double>& f) {

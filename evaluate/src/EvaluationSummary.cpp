@@ -26,6 +26,7 @@ TrajectorySummary trajectorySummary(const TrajectoryMetrics& m) {
   t.rpe_segment_count = m.rpe_segment.segments;
   t.route_length_m = m.route_length_m;
   t.evaluated_length_m = m.distance_m.empty() ? 0.0 : m.distance_m.back();
+  t.end_drift_pct = m.end_drift_pct;
   const Eigen::Quaterniond q(m.T_gt_est.rotation());
   t.alignment_t = m.T_gt_est.translation();
   t.alignment_q_xyzw = {q.x(), q.y(), q.z(), q.w()};

@@ -160,6 +160,8 @@ TrajectoryMetrics compareTrajectories(const Trajectory& est, const Trajectory& g
   const std::size_t k = sorted.size();
   m.ate.median_m = k % 2 ? sorted[k / 2] : 0.5 * (sorted[k / 2 - 1] + sorted[k / 2]);
   m.rpe_kitti = computeRpe(m.pairs, m.distance_m, opt.rpe_lengths_m, opt.step_frames);
+  m.end_drift_pct = m.distance_m.back() > 0 ? 100.0 * relativeDrift(m, 0, m.pairs.size() - 1)
+                                            : std::numeric_limits<double>::quiet_NaN();
   m.segment_m = opt.segment_m;
   m.rpe_segment = computeRpe(m.pairs, m.distance_m, {opt.segment_m}, opt.step_frames);
   return m;

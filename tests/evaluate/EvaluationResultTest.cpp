@@ -53,6 +53,21 @@ TEST(EvaluationResult, FiguresAreTheFilesNumbersWithoutTimings) {
   EXPECT_EQ(figures.at("reliability.reliable"), 1.0);
 }
 
+// The end drift, absent from that older file, is written when measured and read back.
+TEST(EvaluationResult, TheEndDriftReadsBackWhenMeasured) {
+  EvaluationResult r = readEvaluationJson(kDriveMetrics);
+  ASSERT_TRUE(r.trajectory);
+  EXPECT_FALSE(r.trajectory->end_drift_pct);
+  EXPECT_EQ(evaluationFigures(r).count("end_drift_pct"), 0u);
+  r.trajectory->end_drift_pct = 0.25;
+  const fs::path file = test::testTmp() / "metrics.json";
+  writeEvaluationJson(file, r);
+  const EvaluationResult back = readEvaluationJson(file);
+  ASSERT_TRUE(back.trajectory && back.trajectory->end_drift_pct);
+  EXPECT_EQ(*back.trajectory->end_drift_pct, 0.25);
+  EXPECT_EQ(evaluationFigures(back).at("end_drift_pct"), 0.25);
+}
+
 TEST(EvaluationResult, WithoutGroundTruthTheTrajectoryIsSkippedInTheFile) {
   EvaluationResult r = readEvaluationJson(kDriveMetrics);
   r.trajectory.reset();

@@ -36,6 +36,7 @@ TEST(Metrics, IdenticalTrajectoryHasZeroError) {
   EXPECT_NEAR(m.rpe_kitti.trans_pct, 0.0, 1e-9);
   EXPECT_GT(m.rpe_kitti.segments, 0);
   EXPECT_GT(m.route_length_m, 1199.0);
+  EXPECT_NEAR(m.end_drift_pct, 0.0, 1e-9);
 }
 
 TEST(Metrics, RigidlyMovedCopyHasZeroErrorAfterAlignment) {
@@ -72,6 +73,7 @@ TEST(Metrics, ConstantDriftGivesThatRpe) {
   EXPECT_NEAR(m.rpe_kitti.trans_pct, 1.0, 1e-9);
   EXPECT_NEAR(m.rpe_kitti.rot_deg_per_m, 0.0, 1e-12);
   EXPECT_NEAR(m.rpe_segment.trans_pct, 1.0, 1e-9);
+  EXPECT_NEAR(m.end_drift_pct, 1.0, 1e-9);  // 1010 m estimated for 1000 m driven
   // 100 m segments start every 10 frames: 91 starts for 100 m, ..., 21 for 800 m
   int expected = 0;
   for (int len = 100; len <= 800; len += 100) expected += (1000 - len) / 10 + 1;
@@ -90,6 +92,11 @@ TEST(Metrics, ConstantYawRateDriftGivesThatRotationalRpe) {
   }
   const TrajectoryMetrics m = compareTrajectories(est, gt, {});
   EXPECT_NEAR(m.rpe_kitti.rot_deg_per_m, 0.01, 1e-9);
+  // The estimate's 400 steps of 1 m, the j-th turned by j k, end at the sum of (cos jk, sin jk):
+  // sin(200 k) / sin(k / 2) along the direction 199.5 k; the truth ends at (400, 0).
+  const double chord = std::sin(200.0 * k) / std::sin(0.5 * k);
+  const Eigen::Vector2d end_off(chord * std::cos(199.5 * k) - 400.0, chord * std::sin(199.5 * k));
+  EXPECT_NEAR(m.end_drift_pct, 100.0 * end_off.norm() / 400.0, 1e-9);
 }
 
 TEST(Metrics, AssociationUsesNearestTimestamp) {

@@ -24,6 +24,9 @@ struct TrajectorySummary {
   double rpe_segment_m = 0, rpe_segment_trans_pct = 0, rpe_segment_rot_deg_per_m = 0;
   long long rpe_segment_count = 0;
   double route_length_m = 0, evaluated_length_m = 0;
+  /// The last pose against the first, per metre driven [%] (Metrics.hpp); absent from
+  /// metrics.json files written before it.
+  std::optional<double> end_drift_pct;
   Vec3 alignment_t = Vec3::Zero();                        ///< T_gt_est translation [m]
   std::array<double, 4> alignment_q_xyzw = {0, 0, 0, 1};  ///< T_gt_est rotation
 };

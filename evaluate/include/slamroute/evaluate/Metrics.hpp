@@ -48,6 +48,9 @@ struct TrajectoryMetrics {
   RpeStats rpe_segment;  ///< over segment_m
   double segment_m = 0;
   double route_length_m = 0;
+  /// The last pose against the first: the relative translation error over the distance driven
+  /// between them [%] (a drive's end drift; NaN when nothing was driven).
+  double end_drift_pct = 0;
 };
 
 /// Relative pose error over segments of the given lengths, starting every step frames (KITTI).
