@@ -3,7 +3,8 @@
 # table row per seed and the mean over seeds (bench/coverage_ate_table.py): directed coverage of
 # the SUMO edges as driven, length in SUMO and its ratio to postman's, ATE RMSE and its ratio.
 #   bench/coverage_ate.sh OUT_DIR [NET] [SEEDS]
-# NET defaults to the shipped city, SEEDS to "42 1 2 3 4"; PLANNERS (env) to postman,aco-ga,
+# NET defaults to the shipped city, SEEDS to "42 1 2 3 4"; PLANNERS (env) to postman,aco-ga
+# (other planners, e.g. open-loop,exhaustive-revisit, get a last table against postman),
 # SLAMROUTE (env) to build/cli/slamroute (a copy keeps a long sweep on one build); PLANS_ONLY=1
 # (env) stops each run once its routes are planned (directed coverage and length as planned, no
 # SLAM: `run --plans-only`).

@@ -7,15 +7,23 @@ aco-ga / postman ATE; a seed whose SLAM has not run shows its planned coverage a
 Then where the ATE comes from: the SLAM's loop closures per km driven and the largest error
 per planner, and aco-ga's planned revisits (count, length) and its predicted C_max against the
 bound. Directed coverage counts the net's part a car can drive round legally (turns included);
-a last table gives the junction-level part (turns ignored) and how many of its edges no legal
-drive enters and leaves again. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
+a further table gives the junction-level part (turns ignored) and how many of its edges no legal
+drive enters and leaves again. When the runs also drove other planners (PLANNERS of
+bench/coverage_ate.sh, e.g. open-loop and exhaustive-revisit), a last table sets each against
+postman on the same seeds: length and ATE ratios, revisits, and the ATE on the first passes
+alone (the poses of each SUMO edge's first traversal, under the evaluation's alignment): driving
+mapped streets again adds poses of low error, which lowers a drive's ATE even where the streets
+as first driven are no better. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
+import bisect
 import json
+import math
 import os
 import statistics
 import sys
 from pathlib import Path
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from first_passes import FirstPasses  # noqa: E402
 from script_help import exit_on_help  # noqa: E402
 
 
@@ -95,6 +103,15 @@ def diagnostics(out, seeds):
               f"{unc['c_max_m2']:.0f} / {unc['c_threshold_m2']:.0f} |")
 
 
+def print_table(header, rows):
+    """A markdown table after a blank line; nothing without rows."""
+    if rows:
+        print()
+        print("| " + " | ".join(header) + " |")
+        print("|" + "---|" * len(header))
+        print("\n".join(rows))
+
+
 def junction_part(out, seeds):
     """Per seed: the directed figure over the junction-level part, planned, and its edges."""
     rows = []
@@ -106,12 +123,66 @@ def junction_part(out, seeds):
             rows.append(f"| {s} | {cov[0]['edges_total']} of {j[0]['edges_total']} "
                         f"({j[0]['edges_without_legal_route']} without) | "
                         f"{j[0]['edges_pct']:.1f} | {j[1]['edges_pct']:.1f} |")
-    if rows:
-        print()
-        print("| seed | legal part of the junction-level part, edges (without a legal route) | "
-              "postman junction-level [%] | aco-ga junction-level [%] |")
-        print("|---|---|---|---|")
-        print("\n".join(rows))
+    print_table(["seed", "legal part of the junction-level part, edges (without a legal route)",
+                 "postman junction-level [%]", "aco-ga junction-level [%]"], rows)
+
+
+def rotate(q, v):
+    """v rotated by the unit quaternion q = (x, y, z, w)."""
+    x, y, z, w = q
+    tx, ty, tz = 2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])
+    return (v[0] + w * tx + y * tz - z * ty, v[1] + w * ty + z * tx - x * tz,
+            v[2] + w * tz + x * ty - y * tx)
+
+
+def tum(path):
+    return [[float(v) for v in line.split()[:4]] for line in path.read_text().splitlines()
+            if line.strip() and not line.startswith("#")]
+
+
+def first_pass_ate(run, planner):
+    """RMS position error [m] on the poses of each SUMO edge's first traversal."""
+    drive, ev = run / "drives" / planner, run / "eval" / planner
+    align = load(ev / "metrics.json")["alignment_T_gt_est"]
+    gt, est = tum(drive / "groundtruth.tum"), tum(ev / "estimate.tum")
+    first = FirstPasses(str(drive), "coverage_ate_table.py")
+    gt_t = [g[0] for g in gt]
+    sq, n = 0.0, 0
+    for t, *p in est:
+        if not first.at(t):
+            continue
+        g = gt[min(bisect.bisect_left(gt_t, t - 1e-6), len(gt) - 1)]
+        a = rotate(align["q_xyzw"], p)
+        sq += sum((a[i] + align["t"][i] - g[i + 1]) ** 2 for i in range(3))
+        n += 1
+    return math.sqrt(sq / n) if n else float("nan")
+
+
+def against_postman(out, seeds):
+    """Every other planner with an evaluated drive on at least one seed, against postman."""
+    names = sorted({d.name for s in seeds for d in (out / f"seed_{s}" / "eval").glob("*")
+                    if d.name not in ("postman", "fleet") and (d / "metrics.json").exists()})
+    rows = []
+    for name in names:
+        lr, ar, ate, revisits, fr = [], [], [], [], []
+        for s in seeds:
+            run = out / f"seed_{s}"
+            p, o = figures(run, "postman"), figures(run, name)
+            if p is None or o is None or p[2] is None or o[2] is None:
+                continue
+            lr.append(o[1] / p[1])
+            ar.append(o[2] / p[2])
+            ate.append(o[2])
+            extra = (load(run / "routes" / f"{name}.json") or {}).get("extra", {})
+            revisits.append(extra.get("loop_closure_revisits", 0))
+            fr.append(first_pass_ate(run, name) / first_pass_ate(run, "postman"))
+        if ar:
+            per_seed = ", ".join(f"{r:.2f}" for r in ar)
+            rows.append(f"| {name} | {len(ar)} | {mean_sd(lr, 3)} | {mean_sd(ate, 3)} | "
+                        f"{mean_sd(ar, 2)} ({per_seed}) | {mean_sd(fr, 2)} | "
+                        f"{mean_sd(revisits, 1)} |")
+    print_table(["planner", "seeds", "length / postman", "ATE RMSE [m]",
+                 "ATE / postman (per seed)", "first-pass ATE / postman", "revisits"], rows)
 
 
 if __name__ == "__main__":
@@ -121,3 +192,4 @@ if __name__ == "__main__":
     main()
     diagnostics(Path(sys.argv[1]), sys.argv[2:])
     junction_part(Path(sys.argv[1]), sys.argv[2:])
+    against_postman(Path(sys.argv[1]), sys.argv[2:])

@@ -11,7 +11,11 @@ poses alone (a long wait weighs the error where the car stands by the wait's len
 With --windows S: after those lines, where along the drive the rigid ATE is made, per window of
 S seconds: its RMS, its share of the squared error and where the ground truth starts it, then
 the window with the largest share (a false closure or a lost stretch shows up there).
-Usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] DRIVE EVAL.
+With --passes: the RMS on the poses of each SUMO edge's first traversal (DRIVE/pose_edges.csv)
+and on those of later ones. A route that drives mapped streets again adds poses of low error,
+which lowers the ATE of the whole drive even where the streets as first driven are no better.
+Usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] [--passes]
+DRIVE EVAL.
 Needs numpy and scipy (Debian python3-numpy, python3-scipy).
 """
 import os
@@ -21,16 +25,19 @@ import numpy as np
 from scipy.spatial.transform import Rotation as R
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from first_passes import FirstPasses  # noqa: E402
 from script_help import exit_on_help  # noqa: E402
 from tum import load_tum  # noqa: E402
 
 USAGE = ('usage: bench/trajectory_error_split.py [--windows S] [--region X0,X1,Y0,Y1 ...] '
-         'DRIVE_DIR EVAL_DIR')
+         '[--passes] DRIVE_DIR EVAL_DIR')
 NAME = 'trajectory_error_split.py'
 exit_on_help(__doc__)
 args = sys.argv[1:]
 window_s = None
 regions = []  # (x0, x1, y0, y1) in the ground truth's frame [m]
+passes = '--passes' in args
+args = [a for a in args if a != '--passes']
 while args[:1] in (['--windows'], ['--region']):
     try:
         if args[0] == '--windows':
@@ -48,6 +55,7 @@ if len(args) != 2:
     sys.exit(USAGE)
 gt = load_tum(args[0] + '/groundtruth.tum', NAME)
 es = load_tum(args[1] + '/estimate.tum', NAME)
+first_passes = FirstPasses(args[0], NAME) if passes else None
 g = gt[[np.argmin(abs(gt[:, 0] - t)) for t in es[:, 0]]]
 
 # Rigid alignment of the estimate's positions onto the ground truth's.
@@ -126,3 +134,12 @@ def print_regions(sq, truth, boxes):
 
 if regions:
     print_regions((d ** 2).sum(1), g[:, 1:3], regions)
+
+
+
+if passes:
+    sq = (d ** 2).sum(1)
+    f = np.array([first_passes.at(t) for t in es[:, 0]])
+    rms = lambda m: np.sqrt(sq[m].mean()) if m.any() else float('nan')
+    print('first passes: RMS %.3f m on %.1f %% of the poses; later passes: RMS %.3f m' %
+          (rms(f), 100 * f.mean(), rms(~f)))

@@ -1,7 +1,8 @@
 // bench/trajectory_error_split.py on hand-made trajectories: an exact copy of the truth has no
 // error with or without a scale; a copy 0.1 % larger has a rigid ATE but none once the fit may
 // scale it, and the fitted scale is 1 / 1.001; with --windows and --region, a copy with one
-// stretch pushed aside puts most of the error in that stretch's window and box. A missing or
+// stretch pushed aside puts most of the error in that stretch's window and box, and with
+// --passes, where that stretch is a SUMO edge driven again, in the later passes. A missing or
 // malformed trajectory ends it with one line naming the file.
 #include <gtest/gtest.h>
 
@@ -45,6 +46,17 @@ void writeLoop(const fs::path& file, double scale, int bump_from = -1) {
   }
 }
 
+/// A folder with drive/groundtruth.tum the loop and bumped/estimate.tum the loop with its second
+/// long side (18-29 s) pushed 2 m aside.
+fs::path bumpedLoop(const std::string& name) {
+  const fs::path root = slamroute::test::cliTempDir(name);
+  fs::create_directories(root / "drive");
+  fs::create_directories(root / "bumped");
+  writeLoop(root / "drive/groundtruth.tum", 1.0);
+  writeLoop(root / "bumped/estimate.tum", 1.0, 18);
+  return root;
+}
+
 TEST(TrajectoryErrorSplitScript, AFitWithAScaleTakesOutAUniformStretch) {
   const fs::path root = slamroute::test::cliTempDir("trajectory_error_split");
   fs::create_directories(root / "drive");
@@ -68,11 +80,7 @@ TEST(TrajectoryErrorSplitScript, AFitWithAScaleTakesOutAUniformStretch) {
 }
 
 TEST(TrajectoryErrorSplitScript, WindowsAndRegionsFindTheStretchThatCarriesTheError) {
-  const fs::path root = slamroute::test::cliTempDir("trajectory_error_split_windows");
-  fs::create_directories(root / "drive");
-  fs::create_directories(root / "bumped");
-  writeLoop(root / "drive/groundtruth.tum", 1.0);
-  writeLoop(root / "bumped/estimate.tum", 1.0, 18);
+  const fs::path root = bumpedLoop("trajectory_error_split_windows");
 
   const auto r = runScript(root / "drive", root / "bumped", "--windows 6 ");
   ASSERT_EQ(r.code, 0) << r.out;
@@ -98,6 +106,42 @@ TEST(TrajectoryErrorSplitScript, WindowsAndRegionsFindTheStretchThatCarriesTheEr
   const auto bad = runScript(root / "drive", root / "bumped", "--windows 0 ");
   EXPECT_NE(bad.code, 0);
   EXPECT_EQ(bad.out, "trajectory_error_split.py: --windows must be a positive number of seconds\n");
+}
+
+TEST(TrajectoryErrorSplitScript, PassesTellTheStreetsAsFirstDrivenFromThoseDrivenAgain) {
+  const fs::path root = bumpedLoop("trajectory_error_split_passes");
+  // Edge a (0-11 s), b (12-17 s), a again (18-29 s: the pushed stretch), c (30-35 s).
+  {
+    std::ofstream csv(root / "drive/pose_edges.csv");
+    csv << "index,t,sumo_edge,lane_pos_m\n";
+    for (int t = 0; t < 36; ++t)
+      csv << t << ',' << t << ','
+          << (t < 12 || (t >= 18 && t < 30) ? "a"
+              : t < 18                      ? "b"
+                                            : "c")
+          << ",0\n";
+  }
+  const auto r = runScript(root / "drive", root / "bumped", "--passes ");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto line = r.out.find("first passes: RMS ");
+  ASSERT_NE(line, std::string::npos) << r.out;
+  const double first = std::stod(r.out.substr(line + 18));
+  EXPECT_NE(r.out.find(" m on 66.7 % of the poses; later passes: RMS "), std::string::npos)
+      << r.out;
+  // A third of the poses 2 m aside: the alignment moves the whole estimate 2/3 m towards them,
+  // leaving 2/3 m on the first passes and 4/3 m on the pushed stretch.
+  EXPECT_NEAR(first, 2.0 / 3.0, 0.01) << r.out;
+  const auto later = r.out.find("later passes: RMS ");
+  EXPECT_NEAR(std::stod(r.out.substr(later + 18)), 4.0 / 3.0, 0.01) << r.out;
+
+  fs::remove(root / "drive/pose_edges.csv");
+  const auto missing = runScript(root / "drive", root / "bumped", "--passes ");
+  EXPECT_NE(missing.code, 0);
+  EXPECT_NE(missing.out.find(
+                "trajectory_error_split.py: " + (root / "drive/pose_edges.csv").string() + ": "),
+            std::string::npos)
+      << missing.out;
+  EXPECT_EQ(std::count(missing.out.begin(), missing.out.end(), '\n'), 1) << missing.out;
 }
 
 TEST(TrajectoryErrorSplitScript, AMissingOrMalformedTrajectoryIsOneLineNamingTheFile) {
