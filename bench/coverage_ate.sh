@@ -9,6 +9,10 @@
 # (env) stops each run once its routes are planned (directed coverage and length as planned, no
 # SLAM: `run --plans-only`).
 # A seed whose run finished is kept (`run --resume`), so an interrupted sweep continues.
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:?usage: bench/coverage_ate.sh OUT_DIR [NET] [SEEDS]}"
@@ -27,3 +31,5 @@ for s in $seeds; do
   echo "seed $s: $(( $(date +%s) - start )) s" >>"$out/times.txt"
 done
 python3 bench/coverage_ate_table.py "$out" $seeds
+exit
+}

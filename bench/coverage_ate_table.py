@@ -85,11 +85,7 @@ def closures(run, planner):
 
 
 def diagnostics(out, seeds):
-    print()
-    print("| seed | postman closures (per km) | aco-ga closures (per km) | "
-          "postman / aco-ga ATE max [m] | aco-ga revisits, length [km] | "
-          "aco-ga C_max / bound [m^2] |")
-    print("|---|---|---|---|---|---|")
+    rows = []
     for s in seeds:
         run = out / f"seed_{s}"
         p, a = closures(run, "postman"), closures(run, "aco-ga")
@@ -98,9 +94,13 @@ def diagnostics(out, seeds):
             continue
         extra = route["extra"]
         unc = extra["uncertainty"]
-        print(f"| {s} | {p[0]} ({p[1]:.1f}) | {a[0]} ({a[1]:.1f}) | {p[2]:.2f} / {a[2]:.2f} | "
-              f"{extra['loop_closure_revisits']}, {extra['revisit_length_m'] / 1000.0:.2f} | "
-              f"{unc['c_max_m2']:.0f} / {unc['c_threshold_m2']:.0f} |")
+        rows.append(f"| {s} | {p[0]} ({p[1]:.1f}) | {a[0]} ({a[1]:.1f}) | "
+                    f"{p[2]:.2f} / {a[2]:.2f} | {extra['loop_closure_revisits']}, "
+                    f"{extra['revisit_length_m'] / 1000.0:.2f} | "
+                    f"{unc['c_max_m2']:.0f} / {unc['c_threshold_m2']:.0f} |")
+    print_table(["seed", "postman closures (per km)", "aco-ga closures (per km)",
+                 "postman / aco-ga ATE max [m]", "aco-ga revisits, length [km]",
+                 "aco-ga C_max / bound [m^2]"], rows)
 
 
 def print_table(header, rows):

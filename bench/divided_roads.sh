@@ -9,6 +9,10 @@
 # place level. NETS="name=NET.net.xml ..." replaces the default list.
 # Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
 # networks/README.md); a clone without that folder passes other nets through NETS.
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"
@@ -53,3 +57,5 @@ print("| %s | %s | %s | %s | %s | %s |" % (sys.argv[2], sys.argv[3], j[0], j[1],
 PY
   done
 done
+exit
+}

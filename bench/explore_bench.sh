@@ -8,6 +8,10 @@
 #   KS (environment): the fleet sizes, default "1 2 4"; STRATEGIES likewise.
 # Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
 # networks/README.md); without that folder name the other nets.
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"
@@ -52,3 +56,5 @@ PY
     done
   done
 done
+exit
+}

@@ -12,6 +12,10 @@
 # SWEEP_ONLY=N keeps the first N settings (1: the defaults only).
 # Bologna and Ingolstadt are read from ../shared/networks beside the clone (not shipped: see
 # networks/README.md); a clone without that folder passes other nets through NETS.
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"
@@ -84,3 +88,5 @@ for entry in "${settings[@]}"; do
   done
   echo "$row |"
 done
+exit
+}

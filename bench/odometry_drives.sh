@@ -5,6 +5,10 @@
 #   city: the three 7 km routes of `slamroute run` (out/default_city/routes, if it exists).
 # Drives record wheel odometry + gyro + IMU roll/pitch (odometry.csv); "lidar_only" rows ignore it.
 # Prints one Markdown row per evaluation. Takes ~15 min on 2 cores (~45 min with the city).
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 build="${1:-$here/../build}"
@@ -56,3 +60,5 @@ if [ -d "$city" ] && [ "${SKIP_CITY:-0}" != 1 ]; then
     evaluate "city_$p" "city_${p}_no_loop_closure" --config "$out/nolc.yaml"
   done
 fi
+exit
+}

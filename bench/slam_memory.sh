@@ -5,6 +5,10 @@
 # Usage: bench/slam_memory.sh BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S=5] [CONFIG.yaml]
 # Example: bench/slam_memory.sh build out/default_city/drives/qlearning out/slam_mem
 # (CONFIG with `evaluate: {output: {keyframe_clouds_on_disk: false}}` measures the clouds kept in memory.)
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 if [ $# -lt 3 ]; then
   echo "usage: $0 BUILD_DIR DRIVE_DIR OUT_DIR [INTERVAL_S] [CONFIG.yaml]" >&2
@@ -37,3 +41,5 @@ while kill -0 "$timer" 2>/dev/null; do
 done
 wait "$timer"
 grep -E "Maximum resident set size|Elapsed \(wall clock\)" "$log"
+exit
+}

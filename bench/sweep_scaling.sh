@@ -4,6 +4,10 @@
 # time, tasks per hour, the sum of the task run times (tasks.csv) and, for one rank (tasks back
 # to back), the scheduler's overhead per task: (wall - sum of task times) / tasks.
 #   bash bench/sweep_scaling.sh [OUT_DIR]   (default: build/bench_sweep)
+source "$(dirname "$0")/script_help.sh" && exit_on_help "$0" "$@"
+# Braced and ended by exit: bash parses the whole script before it runs, so an edit or a
+# git pull during a long sweep does not change the sweep that is running.
+{
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export SUMO_HOME="${SUMO_HOME:-/usr/share/sumo}"
@@ -39,3 +43,5 @@ PY
 measure one_rank "$BIN" sweep bench/sweep_bench.yaml --out "$OUT/one_rank" --jobs 1
 measure two_ranks mpirun --oversubscribe -n 2 "$BIN" sweep bench/sweep_bench.yaml --out "$OUT/two_ranks" --jobs 1
 cmp -s "$OUT/one_rank/results.csv" "$OUT/two_ranks/results.csv" && echo "results.csv: the same with 1 and 2 ranks"
+exit
+}

@@ -56,3 +56,21 @@ TEST(Scripts, EveryBenchScriptAnswersHelpAndACallWithoutArguments) {
   }
   EXPECT_GE(scripts, 15);
 }
+
+// The shell scripts under bench/ (with a #! line; script_help.sh is sourced) answer --help with
+// their leading comment block, which names the script in its usage line, and exit 0 without
+// running anything.
+TEST(Scripts, EveryBenchShellScriptAnswersHelp) {
+  int scripts = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(SLAMROUTE_SOURCE_DIR) / "bench")) {
+    if (entry.path().extension() != ".sh" || readFile(entry.path()).rfind("#!", 0) != 0) continue;
+    ++scripts;
+    const slamroute::test::CliResult help =
+        slamroute::test::runCommand("bash " + entry.path().string() + " --help");
+    EXPECT_EQ(help.code, 0) << entry.path() << ": " << help.out;
+    EXPECT_NE(help.out.find("bench/" + entry.path().filename().string()), std::string::npos)
+        << entry.path() << ": " << help.out;
+    EXPECT_EQ(help.out.find("#"), std::string::npos) << entry.path() << ": " << help.out;
+  }
+  EXPECT_GE(scripts, 7);
+}
