@@ -30,6 +30,7 @@ for s in $seeds; do
     --planners "$planners" --status-every 0 --resume $only >"$out/seed_$s.log" 2>&1
   echo "seed $s: $(( $(date +%s) - start )) s" >>"$out/times.txt"
 done
-python3 bench/coverage_ate_table.py "$out" $seeds
+# Debian's interpreter, for which scripts/setup.sh installs numpy and scipy.
+/usr/bin/python3 bench/coverage_ate_table.py "$out" $seeds
 exit
 }

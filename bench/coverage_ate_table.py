@@ -13,18 +13,24 @@ bench/coverage_ate.sh, e.g. open-loop and exhaustive-revisit), a last table sets
 postman on the same seeds: length and ATE ratios, revisits, and the ATE on the first passes
 alone (the poses of each SUMO edge's first traversal, under the evaluation's alignment): driving
 mapped streets again adds poses of low error, which lowers a drive's ATE even where the streets
-as first driven are no better. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]"""
-import bisect
+as first driven are no better. Usage: coverage_ate_table.py OUT_DIR SEED [SEED ...]
+Needs numpy and scipy (Debian python3-numpy, python3-scipy)."""
+import functools
 import json
-import math
 import os
 import statistics
 import sys
 from pathlib import Path
 
+import numpy as np
+from scipy.spatial.transform import Rotation
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from first_passes import FirstPasses  # noqa: E402
 from script_help import exit_on_help  # noqa: E402
+from tum import load_tum  # noqa: E402
+
+NAME = "coverage_ate_table.py"
 
 
 def load(path):
@@ -127,35 +133,20 @@ def junction_part(out, seeds):
                  "postman junction-level [%]", "aco-ga junction-level [%]"], rows)
 
 
-def rotate(q, v):
-    """v rotated by the unit quaternion q = (x, y, z, w)."""
-    x, y, z, w = q
-    tx, ty, tz = 2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])
-    return (v[0] + w * tx + y * tz - z * ty, v[1] + w * ty + z * tx - x * tz,
-            v[2] + w * tz + x * ty - y * tx)
-
-
-def tum(path):
-    return [[float(v) for v in line.split()[:4]] for line in path.read_text().splitlines()
-            if line.strip() and not line.startswith("#")]
-
-
+@functools.lru_cache(maxsize=None)
 def first_pass_ate(run, planner):
-    """RMS position error [m] on the poses of each SUMO edge's first traversal."""
+    """RMS position error [m] on the poses of each SUMO edge's first traversal, under the
+    evaluation's alignment (metrics.json)."""
     drive, ev = run / "drives" / planner, run / "eval" / planner
     align = load(ev / "metrics.json")["alignment_T_gt_est"]
-    gt, est = tum(drive / "groundtruth.tum"), tum(ev / "estimate.tum")
-    first = FirstPasses(str(drive), "coverage_ate_table.py")
-    gt_t = [g[0] for g in gt]
-    sq, n = 0.0, 0
-    for t, *p in est:
-        if not first.at(t):
-            continue
-        g = gt[min(bisect.bisect_left(gt_t, t - 1e-6), len(gt) - 1)]
-        a = rotate(align["q_xyzw"], p)
-        sq += sum((a[i] + align["t"][i] - g[i + 1]) ** 2 for i in range(3))
-        n += 1
-    return math.sqrt(sq / n) if n else float("nan")
+    gt = load_tum(str(drive / "groundtruth.tum"), NAME)
+    est = load_tum(str(ev / "estimate.tum"), NAME)
+    first = FirstPasses(str(drive), NAME).mask(est[:, 0])
+    if not first.any():
+        return float("nan")
+    g = gt[np.minimum(np.searchsorted(gt[:, 0], est[first, 0] - 1e-6), len(gt) - 1)]
+    p = Rotation.from_quat(align["q_xyzw"]).apply(est[first, 1:4]) + np.array(align["t"])
+    return float(np.sqrt(((p - g[:, 1:4]) ** 2).sum(1).mean()))
 
 
 def against_postman(out, seeds):

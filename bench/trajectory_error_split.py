@@ -116,8 +116,9 @@ def print_windows(t, sq, truth, width):
     print('largest: the window from %.1f s, %.1f %% of the squared error' % (best[0], 100 * best[1]))
 
 
-if window_s is not None:
-    print_windows(es[:, 0], (d ** 2).sum(1), g[:, 1:3], window_s)
+def masked_rms(sq, m):
+    """RMS of the squared errors sq where the mask m holds (nan without any)."""
+    return np.sqrt(sq[m].mean()) if m.any() else float('nan')
 
 
 def print_regions(sq, truth, boxes):
@@ -125,21 +126,21 @@ def print_regions(sq, truth, boxes):
     for x0, x1, y0, y1 in boxes:
         inside |= (truth[:, 0] >= x0) & (truth[:, 0] <= x1) & (truth[:, 1] >= y0) & (truth[:, 1] <= y1)
     moving = np.r_[np.linalg.norm(np.diff(truth, axis=0), axis=1) > 0.05, True]
-    rms = lambda m: np.sqrt(sq[m].mean()) if m.any() else float('nan')
     print('regions: %.1f %% of the poses, %.1f %% of the squared error; RMS inside %.3f m, outside '
           '%.3f m; ATE of the moving poses %.3f m' %
-          (100 * inside.mean(), 100 * sq[inside].sum() / max(sq.sum(), 1e-300), rms(inside),
-           rms(~inside), rms(moving)))
+          (100 * inside.mean(), 100 * sq[inside].sum() / max(sq.sum(), 1e-300),
+           masked_rms(sq, inside), masked_rms(sq, ~inside), masked_rms(sq, moving)))
 
 
-if regions:
-    print_regions((d ** 2).sum(1), g[:, 1:3], regions)
-
-
-
-if passes:
-    sq = (d ** 2).sum(1)
-    f = np.array([first_passes.at(t) for t in es[:, 0]])
-    rms = lambda m: np.sqrt(sq[m].mean()) if m.any() else float('nan')
+def print_passes(sq, first):
     print('first passes: RMS %.3f m on %.1f %% of the poses; later passes: RMS %.3f m' %
-          (rms(f), 100 * f.mean(), rms(~f)))
+          (masked_rms(sq, first), 100 * first.mean(), masked_rms(sq, ~first)))
+
+
+sq = (d ** 2).sum(1)
+if window_s is not None:
+    print_windows(es[:, 0], sq, g[:, 1:3], window_s)
+if regions:
+    print_regions(sq, g[:, 1:3], regions)
+if passes:
+    print_passes(sq, first_passes.mask(es[:, 0]))
